@@ -1,0 +1,124 @@
+#include <OpenImageIO/imageio.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "image_io.h"
+#include "input_error.h"
+#include "progress.h"
+#include "render_cpu.h"
+#include "scene_loader.h"
+
+namespace tracer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Fail before rendering when the output could not be written anyway.
+void check_output_path(const std::string& path) {
+  const std::filesystem::path p(path);
+  const std::filesystem::path dir = p.parent_path().empty() ? "." : p.parent_path();
+  if (!std::filesystem::is_directory(dir)) throw InputError(path + ": output directory does not exist");
+  if (p.extension().empty()) throw InputError(path + ": output needs a file extension (.exr, .png, ...)");
+  if (!OIIO::ImageOutput::create(path)) throw InputError(path + ": no image writer for extension " + p.extension().string());
+}
+
+void write_text_atomically(const std::string& path, const std::string& text) {
+  const std::string temp = path + ".tmp";
+  {
+    std::ofstream out(temp);
+    out << text;
+    if (!out) throw InputError(path + ": cannot write");
+  }
+  std::filesystem::rename(temp, path);
+}
+
+}  // namespace
+
+int run_render(const RenderCommand& cmd) {
+  if (cmd.device != "cpu")
+    throw InputError("--device " + cmd.device + ": not supported yet (this build renders on the cpu only)");
+  const std::string output =
+      cmd.output.empty() ? std::filesystem::path(cmd.scene).stem().string() + ".png" : cmd.output;
+  check_output_path(output);
+  if (!cmd.stats.empty() && std::filesystem::path(cmd.stats).has_parent_path() &&
+      !std::filesystem::is_directory(std::filesystem::path(cmd.stats).parent_path()))
+    throw InputError(cmd.stats + ": stats directory does not exist");
+
+  const auto t_load = Clock::now();
+  const Scene scene = load_scene(cmd.scene, cmd.overrides);  // loading includes the BVH build
+  const double load_build_s = seconds_since(t_load);
+  const double build_s = scene.build_seconds;
+
+  const RenderSettings& rs = scene.settings;
+  const uint64_t tiles = ((rs.width + 15) / 16) * static_cast<uint64_t>((rs.height + 15) / 16);
+  ProgressBar bar(tiles, !cmd.quiet);
+  RenderStats stats;
+  const auto t_render = Clock::now();
+  const Image image = render_cpu(scene, cmd.threads, stats, [&](uint64_t done, uint64_t) { bar.update(done); });
+  const double render_s = seconds_since(t_render);
+  bar.finish();
+  write_image(image, output);
+
+  const uint64_t rays = stats.rays.camera + stats.rays.secondary + stats.rays.shadow;
+  const double mrays = render_s > 0.0 ? static_cast<double>(rays) / render_s / 1e6 : 0.0;
+  if (!cmd.stats.empty()) {
+    nlohmann::ordered_json j;
+    j["scene"] = cmd.scene;
+    j["output"] = output;
+    j["width"] = rs.width;
+    j["height"] = rs.height;
+    j["spp"] = rs.spp;
+    j["threads"] = cmd.threads;
+    j["seconds"] = {{"load", load_build_s - build_s}, {"build", build_s}, {"render", render_s}};
+    j["rays"] = {{"camera", stats.rays.camera}, {"shadow", stats.rays.shadow},
+                 {"secondary", stats.rays.secondary}, {"total", rays}};
+    j["mrays_per_second"] = mrays;
+    j["nonfinite_samples"] = stats.nonfinite_samples;
+    j["accel"] = {{"kind", rs.accel == AccelKind::Bvh ? "bvh" : "none"}, {"nodes", scene.bvh_nodes.size()}};
+    j["features"] = feature_names(scene.features);
+    write_text_atomically(cmd.stats, j.dump(2) + "\n");
+  }
+  if (!cmd.quiet)
+    std::fprintf(stderr, "%ux%u, %u spp, %.3f s, %.2fM rays, %.2f Mrays/s, %llu NaN/inf samples\n", rs.width,
+                 rs.height, rs.spp, render_s, static_cast<double>(rays) / 1e6, mrays,
+                 static_cast<unsigned long long>(stats.nonfinite_samples));
+  std::printf("wrote %s\n", std::filesystem::absolute(output).string().c_str());
+  return 0;
+}
+
+int run_info(const std::string& scene_path) {
+  const auto t = Clock::now();
+  const Scene scene = load_scene(scene_path);
+  const double seconds = seconds_since(t);
+  std::printf("scene      %s\n", scene_path.c_str());
+  std::printf("shapes    ");
+  for (const auto& [type, count] : scene.shape_counts) std::printf(" %s: %u", type.c_str(), count);
+  uint32_t by_kind[4] = {};
+  for (const Primitive& p : scene.primitives) ++by_kind[static_cast<int>(p.kind)];
+  std::printf("\nprimitives %zu (spheres %u, planes %u, triangles %u, quads %u)\n", scene.primitives.size(),
+              by_kind[0], by_kind[1], by_kind[2], by_kind[3]);
+  std::printf("materials  %zu, point lights %zu\n", scene.materials.size(), scene.lights.size());
+  std::printf("features  ");
+  for (const std::string& f : feature_names(scene.features)) std::printf(" %s", f.c_str());
+  std::printf("\naccel      %s: %zu nodes over %zu bounded primitives, %zu unbounded; load and build %.3f s\n",
+              scene.settings.accel == AccelKind::Bvh ? "bvh" : "none", scene.bvh_nodes.size(),
+              scene.bounded.size(), scene.unbounded.size(), seconds);
+  return 0;
+}
+
+int run_compare(const CompareCommand& cmd) {
+  const Image a = read_image(cmd.a), b = read_image(cmd.b);
+  const CompareResult r = compare_images(a, b, cmd.options);
+  if (!cmd.diff.empty() && r.same_size) write_image(difference_image(a, b), cmd.diff);
+  const char* verdict = r.verdict == Verdict::Pass ? "PASS" : r.verdict == Verdict::Warn ? "WARNING" : "FAIL";
+  std::printf("%s: %s\n", verdict, describe(r).c_str());
+  return r.verdict == Verdict::Fail ? 1 : 0;
+}
+
+}  // namespace tracer

@@ -1,0 +1,97 @@
+// Portability layer for kernel code: the same header compiles as host C++ and as CUDA
+// device code. Only correctly rounded IEEE operations live here (DESIGN.md rule 1).
+#pragma once
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+#if defined(__CUDACC__)
+#define TRACER_HD __host__ __device__ __forceinline__
+#else
+#define TRACER_HD inline
+#endif
+
+namespace tracer {
+
+TRACER_HD uint32_t bits_of(float x) {
+#if defined(__CUDA_ARCH__)
+  return __float_as_uint(x);
+#else
+  uint32_t u;
+  std::memcpy(&u, &x, sizeof u);
+  return u;
+#endif
+}
+
+TRACER_HD float float_of_bits(uint32_t u) {
+#if defined(__CUDA_ARCH__)
+  return __uint_as_float(u);
+#else
+  float x;
+  std::memcpy(&x, &u, sizeof x);
+  return x;
+#endif
+}
+
+TRACER_HD uint64_t bits_of(double x) {
+#if defined(__CUDA_ARCH__)
+  return static_cast<uint64_t>(__double_as_longlong(x));
+#else
+  uint64_t u;
+  std::memcpy(&u, &x, sizeof u);
+  return u;
+#endif
+}
+
+TRACER_HD double double_of_bits(uint64_t u) {
+#if defined(__CUDA_ARCH__)
+  return __longlong_as_double(static_cast<long long>(u));
+#else
+  double x;
+  std::memcpy(&x, &u, sizeof x);
+  return x;
+#endif
+}
+
+// IEEE square root, correctly rounded on the host and under nvcc -prec-sqrt=true.
+TRACER_HD float det_sqrt(float x) {
+#if defined(__CUDA_ARCH__)
+  return __fsqrt_rn(x);
+#else
+  return std::sqrt(x);
+#endif
+}
+
+TRACER_HD double det_sqrt(double x) {
+#if defined(__CUDA_ARCH__)
+  return __dsqrt_rn(x);
+#else
+  return std::sqrt(x);
+#endif
+}
+
+TRACER_HD bool is_nan(float x) { return x != x; }
+TRACER_HD bool is_nan(double x) { return x != x; }
+TRACER_HD bool is_finite(float x) { return (bits_of(x) & 0x7f800000u) != 0x7f800000u; }
+TRACER_HD bool is_finite(double x) {
+  return (bits_of(x) & 0x7ff0000000000000ull) != 0x7ff0000000000000ull;
+}
+
+// min/max with a fixed NaN rule (the second operand wins when a comparison fails), the
+// same on every compiler; fminf/fmaxf differ in how they treat NaN and signed zero.
+template <class T> TRACER_HD T min_of(T a, T b) { return a < b ? a : b; }
+template <class T> TRACER_HD T max_of(T a, T b) { return a > b ? a : b; }
+TRACER_HD float abs_of(float x) { return float_of_bits(bits_of(x) & 0x7fffffffu); }
+TRACER_HD double abs_of(double x) { return double_of_bits(bits_of(x) & 0x7fffffffffffffffull); }
+TRACER_HD float clamp_of(float x, float lo, float hi) { return min_of(max_of(x, lo), hi); }
+
+// gamma(n) = n u / (1 - n u), u = 2^-24: the relative error bound of n float operations
+// (Higham; pbrt-v4 section 6.8). Intersection tests use it to accept only hits whose t
+// is conservatively positive, the second half of self-intersection avoidance.
+TRACER_HD constexpr float error_gamma(int n) { return (n * 0x1p-24f) / (1.0f - n * 0x1p-24f); }
+
+constexpr float kPi = 3.14159265358979323846f;
+constexpr double kPiD = 3.14159265358979323846;
+constexpr float kInfinity = __builtin_huge_valf();
+
+}  // namespace tracer

@@ -1,0 +1,27 @@
+#include "scene.h"
+
+namespace tracer {
+
+SceneView Scene::view() const {
+  SceneView v{};
+  v.primitives = primitives.data();
+  v.primitive_count = static_cast<uint32_t>(primitives.size());
+  v.triangle_shading = triangle_shading.data();
+  v.bounded = bounded.data();
+  v.bounded_count = static_cast<uint32_t>(bounded.size());
+  v.unbounded = unbounded.data();
+  v.unbounded_count = static_cast<uint32_t>(unbounded.size());
+  v.bvh_nodes = bvh_nodes.data();
+  v.bvh_node_count = static_cast<uint32_t>(bvh_nodes.size());
+  v.materials = materials.data();
+  v.lights = lights.data();
+  v.light_count = static_cast<uint32_t>(lights.size());
+  v.background = background;
+  v.ambient = ambient;
+  v.camera = camera;
+  v.settings = settings;
+  v.features = features;
+  return v;
+}
+
+}  // namespace tracer

@@ -1,0 +1,40 @@
+// The host-side scene: owns the flat arrays that kernel code reads through a SceneView.
+#pragma once
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kernel/scene_view.h"
+
+namespace tracer {
+
+struct Scene {
+  std::string file;
+  std::vector<Primitive> primitives;
+  std::vector<TriangleShading> triangle_shading;
+  std::vector<uint32_t> bounded;    // BVH order after build_acceleration()
+  std::vector<uint32_t> unbounded;
+  std::vector<BvhNode> bvh_nodes;
+  std::vector<Material> materials;
+  std::vector<std::string> material_names;
+  std::vector<PointLight> lights;
+  Background background{};
+  Vec3 ambient{0.0f, 0.0f, 0.0f};
+  Camera camera{};
+  RenderSettings settings{};
+  uint32_t features = 0;
+  std::map<std::string, uint32_t> shape_counts;  // by the scene file's shape type
+  double build_seconds = 0.0;                    // acceleration-structure build time
+
+  SceneView view() const;
+};
+
+// Command-line overrides of the scene's `render` and `film` keys.
+struct RenderOverrides {
+  std::optional<uint32_t> spp, width, height, max_depth;
+  std::optional<uint64_t> seed;
+  std::optional<std::string> integrator, sampler, accel;
+};
+
+}  // namespace tracer

@@ -1,0 +1,496 @@
+#include "scene_loader.h"
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "bvh_builder.h"
+#include "camera_setup.h"
+#include "json_reader.h"
+#include "kernel/whitted.h"
+#include "mesh.h"
+#include "transform.h"
+
+namespace tracer {
+namespace {
+
+constexpr uint32_t kMaxResolution = 16384;
+
+// Later issues own these keys; until then a scene that uses them fails loudly.
+[[noreturn]] void not_supported(JsonObject& obj, const std::string& key, const std::string& what) {
+  obj.fail(key, "not supported yet: " + what);
+}
+
+Material read_material(const Json& value, const std::string& path, const std::string& file) {
+  JsonObject obj(value, path, file);
+  Material m{};
+  m.ior = 1.0f;
+  m.shininess = 1.0f;
+  const std::string type = obj.string("type");
+  if (type == "lambert") {
+    m.kind = MaterialKind::Lambert;
+    m.albedo = obj.color("albedo");
+  } else if (type == "metal") {
+    m.kind = MaterialKind::Metal;
+    m.albedo = obj.color("albedo");
+    m.roughness = obj.number_or("roughness", 0.0f);
+    if (!(m.roughness >= 0.0f && m.roughness <= 1.0f)) obj.fail("roughness", "must be in [0, 1]");
+  } else if (type == "dielectric") {
+    m.kind = MaterialKind::Dielectric;
+    m.ior = obj.number("ior");
+    if (!(m.ior > 0.0f)) obj.fail("ior", "must be > 0");
+    m.tint = obj.color_or("tint", {1.0f, 1.0f, 1.0f});
+    const std::string fresnel = obj.string_or("fresnel", "schlick");
+    if (fresnel == "exact") m.fresnel = FresnelKind::Exact;
+    else if (fresnel != "schlick") obj.fail("fresnel", "expected \"schlick\" or \"exact\", got \"" + fresnel + "\"");
+  } else if (type == "phong") {
+    m.kind = MaterialKind::Phong;
+    m.albedo = obj.color("diffuse");
+    m.ambient = obj.color_or("ambient", m.albedo);
+    m.specular = obj.color_or("specular", {0.0f, 0.0f, 0.0f});
+    m.shininess = obj.number_or("shininess", 1.0f);
+    if (!(m.shininess >= 0.0f)) obj.fail("shininess", "must be >= 0");
+    m.reflectivity = obj.number_or("reflectivity", 0.0f);
+    if (!(m.reflectivity >= 0.0f && m.reflectivity <= 1.0f)) obj.fail("reflectivity", "must be in [0, 1]");
+    m.transparency = obj.number_or("transparency", 0.0f);
+    if (!(m.transparency >= 0.0f && m.transparency <= 1.0f)) obj.fail("transparency", "must be in [0, 1]");
+    m.ior = obj.number_or("ior", 1.0f);
+    if (!(m.ior > 0.0f)) obj.fail("ior", "must be > 0");
+    for (const char* map : {"specular_map", "normal_map", "bump_map"})
+      if (obj.find(map)) not_supported(obj, map, "texture maps");
+  } else if (type == "emissive") {
+    m.kind = MaterialKind::Emissive;
+    m.radiance = obj.color("radiance");
+    m.two_sided = obj.boolean_or("two_sided", false) ? 1u : 0u;
+  } else {
+    obj.fail("type", "unknown material type \"" + type +
+                         "\" (expected lambert, metal, dielectric, phong or emissive)");
+  }
+  obj.finish();
+  return m;
+}
+
+uint32_t material_feature(MaterialKind kind) {
+  switch (kind) {
+    case MaterialKind::Lambert: return kFeatureLambert;
+    case MaterialKind::Metal: return kFeatureMetal;
+    case MaterialKind::Dielectric: return kFeatureDielectric;
+    case MaterialKind::Phong: return kFeaturePhong;
+    case MaterialKind::Emissive: return kFeatureEmissive;
+  }
+  return 0;
+}
+
+Transform read_transform(const Json& value, const std::string& path, const std::string& file) {
+  if (!value.is_array()) fail_at(file, path, "expected an array of transform steps, got " + describe(value));
+  Transform total;
+  for (size_t i = 0; i < value.size(); ++i) {
+    const std::string item_path = path + "[" + std::to_string(i) + "]";
+    JsonObject step(value[i], item_path, file);
+    if (value[i].size() != 1) step.fail("", "each step has exactly one of translate, scale, rotate, rotate_xyz");
+    Transform t;
+    if (step.find("translate")) {
+      t = Transform::translation(step.vec3("translate"));
+    } else if (const Json* s = step.find("scale")) {
+      const Vec3 f = s->is_number() ? Vec3{1, 1, 1} * read_number(*s, step.child("scale"), file)
+                                    : step.vec3("scale");
+      if (f.x == 0.0f || f.y == 0.0f || f.z == 0.0f) step.fail("scale", "a scale factor of 0 collapses the shape");
+      t = Transform::scaling(f);
+    } else if (step.find("rotate")) {
+      JsonObject rot(step.get("rotate"), step.child("rotate"), file);
+      const Vec3 axis = rot.vec3("axis");
+      if (length(axis) == 0.0f) rot.fail("axis", "the rotation axis must not be zero");
+      t = Transform::rotation(axis, rot.number("degrees"));
+      rot.finish();
+    } else if (step.find("rotate_xyz")) {
+      const Vec3 deg = step.vec3("rotate_xyz");
+      t = Transform::rotation({1, 0, 0}, deg.x)
+              .then(Transform::rotation({0, 1, 0}, deg.y))
+              .then(Transform::rotation({0, 0, 1}, deg.z));
+    }
+    step.finish();
+    total = total.then(t);
+  }
+  return total;
+}
+
+class SceneBuilder {
+ public:
+  SceneBuilder(Scene& scene, const std::string& dir) : scene_(scene), dir_(dir) {}
+
+  void add_shape(const Json& value, const std::string& path,
+                 const std::map<std::string, uint32_t>& material_ids) {
+    JsonObject obj(value, path, scene_.file);
+    const std::string type = obj.string("type");
+    const Json* mat = obj.find("material");
+    if (!mat) {
+      if (type == "mesh") not_supported(obj, "material", "materials from the OBJ's MTL file; give the mesh a \"material\"");
+      obj.fail("material", "missing required key");
+    }
+    if (!mat->is_string()) obj.fail("material", "expected a material name, got " + describe(*mat));
+    const auto it = material_ids.find(mat->get<std::string>());
+    if (it == material_ids.end()) obj.fail("material", "unknown material \"" + mat->get<std::string>() + "\"");
+    const uint32_t material = it->second;
+    const Json* tv = obj.find("transform");
+    const Transform xf = tv ? read_transform(*tv, obj.child("transform"), scene_.file) : Transform{};
+
+    if (type == "sphere") {
+      const float radius = obj.number("radius");
+      if (!(radius > 0.0f)) obj.fail("radius", "must be > 0");
+      if (!xf.uniform_scale) obj.fail("transform", "a sphere takes only uniform scales");
+      add({ShapeKind::Sphere, material, -1, radius * xf.scale, xf.point(obj.vec3("center")), {}, {}});
+    } else if (type == "plane") {
+      const Vec3 n = obj.vec3("normal");
+      if (length(n) == 0.0f) obj.fail("normal", "must not be zero");
+      add({ShapeKind::Plane, material, -1, 0.0f, xf.point(obj.vec3("point")), xf.normal(normalize(n)), {}});
+    } else if (type == "quad") {
+      add_quad(obj, xf.point(obj.vec3("corner")), xf.vector(obj.vec3("u")), xf.vector(obj.vec3("v")), material);
+    } else if (type == "box") {
+      const Vec3 lo = obj.vec3("min"), hi = obj.vec3("max");
+      if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) obj.fail("max", "must exceed min on every axis");
+      add_box(obj, lo, hi, xf, material);
+    } else if (type == "triangle") {
+      add_triangles(obj, {inline_triangle(obj)}, xf, material);
+    } else if (type == "mesh") {
+      if (obj.find("file")) {
+        const std::string rel = obj.string("file");
+        for (const char* k : {"positions", "indices", "normals", "uvs"})
+          if (obj.find(k)) obj.fail(k, "a mesh has either \"file\" or inline data, not both");
+        add_triangles(obj, load_obj((std::filesystem::path(dir_) / rel).string(), scene_.file, obj.child("file")), xf, material);
+      } else {
+        add_triangles(obj, inline_mesh(obj), xf, material);
+      }
+    } else {
+      obj.fail("type", "unknown shape type \"" + type + "\" (expected sphere, plane, triangle, quad, box or mesh)");
+    }
+    obj.finish();
+    ++scene_.shape_counts[type];
+  }
+
+ private:
+  void add(const Primitive& p) {
+    if (!is_finite(p.a) || !is_finite(p.b) || !is_finite(p.c) || !is_finite(p.radius))
+      throw InputError(scene_.file + ": a transformed shape has non-finite coordinates");
+    scene_.primitives.push_back(p);
+  }
+
+  void add_quad(JsonObject& obj, Vec3 corner, Vec3 u, Vec3 v, uint32_t material) {
+    if (!(length(cross(u, v)) > 0.0f)) obj.fail("", "zero-area quad (u and v are parallel or zero)");
+    add({ShapeKind::Quad, material, -1, 0.0f, corner, u, v});
+  }
+
+  void add_box(JsonObject& obj, Vec3 lo, Vec3 hi, const Transform& xf, uint32_t material) {
+    const Vec3 dx = {hi.x - lo.x, 0, 0}, dy = {0, hi.y - lo.y, 0}, dz = {0, 0, hi.z - lo.z};
+    // Six faces with outward normals cross(u, v).
+    const Vec3 faces[6][3] = {{lo, dz, dx},      {lo, dx, dy},      {lo, dy, dz},
+                              {hi, -dx, -dz},    {hi, -dy, -dx},    {hi, -dz, -dy}};
+    for (const auto& f : faces) add_quad(obj, xf.point(f[0]), xf.vector(f[1]), xf.vector(f[2]), material);
+  }
+
+  MeshTriangle inline_triangle(JsonObject& obj) {
+    const Json& vs = obj.get("vertices");
+    if (!vs.is_array() || vs.size() != 3) obj.fail("vertices", "expected 3 vertices, got " + describe(vs));
+    MeshTriangle t;
+    for (int i = 0; i < 3; ++i) t.p[i] = read_vec3(vs[i], obj.child("vertices") + "[" + std::to_string(i) + "]", scene_.file);
+    if (const Json* ns = obj.find("normals")) {
+      if (!ns->is_array() || ns->size() != 3) obj.fail("normals", "expected 3 normals, got " + describe(*ns));
+      for (int i = 0; i < 3; ++i) t.n[i] = read_vec3((*ns)[i], obj.child("normals") + "[" + std::to_string(i) + "]", scene_.file);
+      t.has_normals = true;
+    }
+    if (const Json* uvs = obj.find("uvs")) {
+      if (!uvs->is_array() || uvs->size() != 3) obj.fail("uvs", "expected 3 uv pairs, got " + describe(*uvs));
+      read_uvs(*uvs, obj.child("uvs"), [&](size_t i, float u, float v) { t.uv[i][0] = u; t.uv[i][1] = v; });
+      t.has_uvs = true;
+    }
+    return t;
+  }
+
+  template <class F>
+  void read_uvs(const Json& uvs, const std::string& path, F store) {
+    for (size_t i = 0; i < uvs.size(); ++i) {
+      const std::string p = path + "[" + std::to_string(i) + "]";
+      if (!uvs[i].is_array() || uvs[i].size() != 2) fail_at(scene_.file, p, "expected [u, v], got " + describe(uvs[i]));
+      store(i, read_number(uvs[i][0], p + "[0]", scene_.file), read_number(uvs[i][1], p + "[1]", scene_.file));
+    }
+  }
+
+  std::vector<MeshTriangle> inline_mesh(JsonObject& obj) {
+    const Json& ps = obj.get("positions");
+    if (!ps.is_array() || ps.size() < 3) obj.fail("positions", "expected an array of at least 3 points");
+    std::vector<Vec3> positions, normals;
+    std::vector<std::array<float, 2>> uvs;
+    for (size_t i = 0; i < ps.size(); ++i)
+      positions.push_back(read_vec3(ps[i], obj.child("positions") + "[" + std::to_string(i) + "]", scene_.file));
+    if (const Json* ns = obj.find("normals")) {
+      if (!ns->is_array() || ns->size() != ps.size()) obj.fail("normals", "expected one normal per position");
+      for (size_t i = 0; i < ns->size(); ++i)
+        normals.push_back(read_vec3((*ns)[i], obj.child("normals") + "[" + std::to_string(i) + "]", scene_.file));
+    }
+    if (const Json* us = obj.find("uvs")) {
+      if (!us->is_array() || us->size() != ps.size()) obj.fail("uvs", "expected one uv pair per position");
+      uvs.resize(us->size());
+      read_uvs(*us, obj.child("uvs"), [&](size_t i, float u, float v) { uvs[i] = {u, v}; });
+    }
+    const Json& is = obj.get("indices");
+    if (!is.is_array() || is.empty()) obj.fail("indices", "expected an array of [i, j, k] triangles");
+    std::vector<MeshTriangle> tris;
+    for (size_t t = 0; t < is.size(); ++t) {
+      const std::string p = obj.child("indices") + "[" + std::to_string(t) + "]";
+      if (!is[t].is_array() || is[t].size() != 3) fail_at(scene_.file, p, "expected [i, j, k], got " + describe(is[t]));
+      MeshTriangle tri;
+      for (int c = 0; c < 3; ++c) {
+        const Json& iv = is[t][c];
+        if (!iv.is_number_unsigned() || iv.get<uint64_t>() >= positions.size())
+          fail_at(scene_.file, p + "[" + std::to_string(c) + "]", "expected an index below " + std::to_string(positions.size()) + ", got " + describe(iv));
+        const size_t k = iv.get<size_t>();
+        tri.p[c] = positions[k];
+        if (!normals.empty()) tri.n[c] = normals[k];
+        if (!uvs.empty()) tri.uv[c][0] = uvs[k][0], tri.uv[c][1] = uvs[k][1];
+      }
+      tri.has_normals = !normals.empty();
+      tri.has_uvs = !uvs.empty();
+      tris.push_back(tri);
+    }
+    return tris;
+  }
+
+  void add_triangles(JsonObject& obj, const std::vector<MeshTriangle>& tris, const Transform& xf, uint32_t material) {
+    for (const MeshTriangle& t : tris) {
+      int32_t shading = -1;
+      if (t.has_normals || t.has_uvs) {
+        TriangleShading sh{};
+        if (t.has_normals) {
+          for (int c = 0; c < 3; ++c)
+            if (!(length(t.n[c]) > 0.0f)) obj.fail("normals", "a vertex normal is zero");
+          sh.n0 = xf.normal(t.n[0]);
+          sh.n1 = xf.normal(t.n[1]);
+          sh.n2 = xf.normal(t.n[2]);
+          sh.has_normals = 1;
+        }
+        if (t.has_uvs) {
+          sh.u0 = t.uv[0][0], sh.v0 = t.uv[0][1], sh.u1 = t.uv[1][0], sh.v1 = t.uv[1][1];
+          sh.u2 = t.uv[2][0], sh.v2 = t.uv[2][1];
+          sh.has_uvs = 1;
+        }
+        shading = static_cast<int32_t>(scene_.triangle_shading.size());
+        scene_.triangle_shading.push_back(sh);
+      }
+      add({ShapeKind::Triangle, material, shading, 0.0f, xf.point(t.p[0]), xf.point(t.p[1]), xf.point(t.p[2])});
+    }
+  }
+
+  Scene& scene_;
+  std::string dir_;
+};
+
+SamplerKind parse_sampler(const std::string& name, const std::string& where) {
+  if (name == "center") return SamplerKind::Center;
+  if (name == "grid") return SamplerKind::Grid;
+  if (name == "stochastic") return SamplerKind::Stochastic;
+  if (name == "stratified") return SamplerKind::Stratified;
+  throw InputError(where + ": unknown sampler \"" + name + "\" (expected center, grid, stochastic or stratified)");
+}
+
+IntegratorKind parse_integrator(const std::string& name, const std::string& where) {
+  if (name == "whitted") return IntegratorKind::Whitted;
+  if (name == "normals") return IntegratorKind::Normals;
+  if (name == "albedo") return IntegratorKind::Albedo;
+  if (name == "depth") return IntegratorKind::Depth;
+  if (name == "path") throw InputError(where + ": not supported yet: integrator \"path\"");
+  throw InputError(where + ": unknown integrator \"" + name + "\" (expected whitted, normals, albedo or depth)");
+}
+
+AccelKind parse_accel(const std::string& name, const std::string& where) {
+  if (name == "bvh") return AccelKind::Bvh;
+  if (name == "none") return AccelKind::None;
+  if (name == "kdtree" || name == "kdtree-median" || name == "grid" || name == "lbvh")
+    throw InputError(where + ": not supported yet: accel \"" + name + "\"");
+  throw InputError(where + ": unknown accel \"" + name + "\" (expected bvh or none)");
+}
+
+uint32_t read_count(JsonObject& obj, const std::string& key, uint64_t fallback) {
+  return obj.find(key) ? static_cast<uint32_t>(std::min<uint64_t>(obj.unsigned_integer(key), 0xffffffffu)) : static_cast<uint32_t>(fallback);
+}
+
+void read_render(const Json* value, const std::string& file, const RenderOverrides& ov, Scene& scene,
+                 JsonObject& film) {
+  RenderSettings& rs = scene.settings;
+  const Json empty = Json::object();
+  JsonObject obj(value ? *value : empty, "render", file);
+  const std::string cli = file + ": command line";
+  rs.spp = read_count(obj, "spp", 1);
+  std::string sampler = obj.string_or("sampler", "stochastic");
+  std::string integrator = obj.string_or("integrator", "whitted");
+  std::string accel = obj.string_or("accel", "bvh");
+  rs.max_depth = read_count(obj, "max_depth", 5);
+  rs.seed = obj.find("seed") ? obj.unsigned_integer("seed") : 0;
+  if (obj.find("grid_resolution")) not_supported(obj, "grid_resolution", "the uniform grid accelerator");
+  obj.finish();
+  rs.width = read_count(film, "width", 0);
+  rs.height = read_count(film, "height", 0);
+  film.finish();
+  // Command-line overrides; their errors name the option.
+  const bool cli_spp = ov.spp.has_value(), cli_sampler = ov.sampler.has_value();
+  if (ov.spp) rs.spp = *ov.spp;
+  if (ov.width) rs.width = *ov.width;
+  if (ov.height) rs.height = *ov.height;
+  if (ov.max_depth) rs.max_depth = *ov.max_depth;
+  if (ov.seed) rs.seed = *ov.seed;
+  if (ov.sampler) sampler = *ov.sampler;
+  if (ov.integrator) integrator = *ov.integrator;
+  if (ov.accel) accel = *ov.accel;
+  const std::string spp_at = cli_spp ? cli + " --spp" : file + ": render.spp";
+  const std::string sampler_at = cli_sampler ? cli + " --sampler" : file + ": render.sampler";
+  rs.sampler = parse_sampler(sampler, sampler_at);
+  rs.integrator = parse_integrator(integrator, ov.integrator ? cli + " --integrator" : file + ": render.integrator");
+  rs.accel = parse_accel(accel, ov.accel ? cli + " --accel" : file + ": render.accel");
+  if (rs.spp == 0) throw InputError(spp_at + ": spp must be at least 1");
+  if (rs.max_depth > kMaxDepth)
+    throw InputError((ov.max_depth ? cli + " --max-depth" : file + ": render.max_depth") + ": must be at most " + std::to_string(kMaxDepth));
+  for (const auto& [size, name, set] : {std::tuple{rs.width, "width", ov.width.has_value()}, std::tuple{rs.height, "height", ov.height.has_value()}})
+    if (size < 1 || size > kMaxResolution)
+      throw InputError((set ? cli + " --" + name : file + ": film." + name) + ": must be in [1, " + std::to_string(kMaxResolution) + "], got " + std::to_string(size));
+  rs.grid_n = 1;
+  while (rs.grid_n * rs.grid_n < rs.spp) ++rs.grid_n;
+  if (rs.sampler == SamplerKind::Center && rs.spp != 1)
+    throw InputError(sampler_at + ": the center sampler takes exactly 1 spp, got " + std::to_string(rs.spp));
+  if ((rs.sampler == SamplerKind::Grid || rs.sampler == SamplerKind::Stratified) && rs.grid_n * rs.grid_n != rs.spp)
+    throw InputError(spp_at + ": the " + sampler + " sampler needs a square spp (1, 4, 9, 16, ...), got " + std::to_string(rs.spp));
+}
+
+void read_camera(const Json& value, const std::string& file, Scene& scene) {
+  JsonObject obj(value, "camera", file);
+  CameraSpec spec;
+  spec.from = obj.vec3("from");
+  spec.to = obj.vec3("to");
+  spec.up = obj.vec3_or("up", {0, 1, 0});
+  spec.vfov_degrees = obj.number("vfov");
+  spec.aperture = obj.number_or("aperture", 0.0f);
+  const float dist = length(spec.to - spec.from);
+  spec.focus_distance = obj.number_or("focus_distance", dist);
+  if (!(dist > 0.0f)) obj.fail("to", "must differ from camera.from");
+  if (!(spec.vfov_degrees > 0.0f && spec.vfov_degrees < 180.0f)) obj.fail("vfov", "must be in (0, 180) degrees");
+  if (!(spec.aperture >= 0.0f)) obj.fail("aperture", "must be >= 0");
+  if (!(spec.focus_distance > 0.0f)) obj.fail("focus_distance", "must be > 0");
+  if (!(length(cross(spec.up, spec.to - spec.from)) > 0.0f)) obj.fail("up", "must not be parallel to the view direction");
+  obj.finish();
+  scene.camera = make_camera(spec, scene.settings.width, scene.settings.height);
+  if (spec.aperture > 0.0f) scene.features |= kFeatureThinLens;
+}
+
+Background read_background(const Json* value, const std::string& file) {
+  Background bg{BackgroundKind::Constant, {0, 0, 0}, {0, 0, 0}};
+  if (!value) return bg;
+  JsonObject obj(*value, "background", file);
+  const std::string type = obj.string("type");
+  if (type == "constant") {
+    bg.radiance = obj.color("radiance");
+  } else if (type == "gradient") {
+    bg.kind = BackgroundKind::Gradient;
+    bg.radiance = obj.color("zenith");
+    bg.horizon = obj.color("horizon");
+  } else if (type == "cubemap") {
+    not_supported(obj, "type", "cubemap backgrounds");
+  } else {
+    obj.fail("type", "unknown background type \"" + type + "\" (expected constant or gradient)");
+  }
+  obj.finish();
+  return bg;
+}
+
+PointLight read_light(const Json& value, const std::string& path, const std::string& file) {
+  JsonObject obj(value, path, file);
+  const std::string type = obj.string("type");
+  if (type != "point") obj.fail("type", "unknown light type \"" + type + "\" (expected point; emissive shapes are area lights)");
+  PointLight l{};
+  l.position = obj.vec3("position");
+  l.intensity = obj.color("intensity");
+  if (obj.find("attenuation")) {
+    const Vec3 k = obj.vec3("attenuation");
+    if (k.x < 0 || k.y < 0 || k.z < 0 || (k.x == 0 && k.y == 0 && k.z == 0))
+      obj.fail("attenuation", "expected [kc, kl, kq] >= 0, not all zero");
+    l.kc = k.x, l.kl = k.y, l.kq = k.z;
+    l.has_attenuation = 1;
+  }
+  obj.finish();
+  return l;
+}
+
+uint32_t shape_feature(ShapeKind kind) {
+  switch (kind) {
+    case ShapeKind::Sphere: return kFeatureSphere;
+    case ShapeKind::Plane: return kFeaturePlane;
+    case ShapeKind::Triangle: return kFeatureTriangle;
+    case ShapeKind::Quad: return kFeatureQuad;
+  }
+  return 0;
+}
+
+}  // namespace
+
+Scene load_scene_text(const std::string& text, const std::string& path, const RenderOverrides& overrides) {
+  Scene scene;
+  scene.file = path;
+  const Json root = parse_json_text(text, path);
+  JsonObject top(root, "", path);
+  const std::string format = top.string("format");
+  if (format != "tracer-scene/1") top.fail("format", "expected \"tracer-scene/1\", got \"" + format + "\"");
+
+  JsonObject film(top.get("film"), "film", path);
+  read_render(top.find("render"), path, overrides, scene, film);
+  read_camera(top.get("camera"), path, scene);
+  scene.background = read_background(top.find("background"), path);
+  scene.ambient = top.find("ambient") ? top.color("ambient") : Vec3{0, 0, 0};
+
+  std::map<std::string, uint32_t> material_ids;
+  JsonObject materials(top.get("materials"), "materials", path);
+  for (const auto& item : top.get("materials").items()) {
+    materials.find(item.key());
+    material_ids[item.key()] = static_cast<uint32_t>(scene.materials.size());
+    scene.materials.push_back(read_material(item.value(), materials.child(item.key()), path));
+    scene.material_names.push_back(item.key());
+  }
+
+  if (const Json* lights = top.find("lights")) {
+    if (!lights->is_array()) top.fail("lights", "expected an array, got " + describe(*lights));
+    for (size_t i = 0; i < lights->size(); ++i)
+      scene.lights.push_back(read_light((*lights)[i], "lights[" + std::to_string(i) + "]", path));
+  }
+
+  const Json& shapes = top.get("shapes");
+  if (!shapes.is_array()) top.fail("shapes", "expected an array, got " + describe(shapes));
+  SceneBuilder builder(scene, std::filesystem::path(path).parent_path().string());
+  for (size_t i = 0; i < shapes.size(); ++i)
+    builder.add_shape(shapes[i], "shapes[" + std::to_string(i) + "]", material_ids);
+  top.finish();
+
+  for (const Primitive& p : scene.primitives) {
+    scene.features |= shape_feature(p.kind) | material_feature(scene.materials[p.material].kind);
+    if (p.shading >= 0 && scene.triangle_shading[p.shading].has_normals) scene.features |= kFeatureShadingNormals;
+  }
+  if (!scene.lights.empty()) scene.features |= kFeaturePointLight;
+  const auto build_start = std::chrono::steady_clock::now();
+  build_acceleration(scene);
+  scene.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
+  return scene;
+}
+
+Scene load_scene(const std::string& path, const RenderOverrides& overrides) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in || std::filesystem::is_directory(path)) throw InputError(path + ": cannot open scene file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return load_scene_text(text.str(), path, overrides);
+}
+
+std::vector<std::string> feature_names(uint32_t features) {
+  static const char* names[] = {"sphere",     "plane",   "triangle", "quad",        "lambert",   "metal",
+                                "dielectric", "phong",   "emissive", "point-light", "thin-lens", "shading-normals"};
+  std::vector<std::string> out;
+  for (uint32_t i = 0; i < sizeof names / sizeof names[0]; ++i)
+    if (features & (1u << i)) out.push_back(names[i]);
+  return out;
+}
+
+}  // namespace tracer
