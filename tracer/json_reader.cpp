@@ -24,6 +24,8 @@ Json parse_json_text(const std::string& text, const std::string& file) {
     if (colon != std::string::npos) what = what.substr(colon);
     throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(column) +
                      ": malformed JSON: " + what);
+  } catch (const Json::out_of_range& e) {  // e.g. 1e999: no position is reported
+    throw InputError(file + ": malformed JSON: " + e.what());
   }
 }
 

@@ -183,8 +183,8 @@ class SceneBuilder {
   void add_box(JsonObject& obj, Vec3 lo, Vec3 hi, const Transform& xf, uint32_t material) {
     const Vec3 dx = {hi.x - lo.x, 0, 0}, dy = {0, hi.y - lo.y, 0}, dz = {0, 0, hi.z - lo.z};
     // Six faces with outward normals cross(u, v).
-    const Vec3 faces[6][3] = {{lo, dz, dx},      {lo, dx, dy},      {lo, dy, dz},
-                              {hi, -dx, -dz},    {hi, -dy, -dx},    {hi, -dz, -dy}};
+    const Vec3 faces[6][3] = {{lo, dx, dz},      {lo, dy, dx},      {lo, dz, dy},
+                              {hi, -dz, -dx},    {hi, -dx, -dy},    {hi, -dy, -dz}};
     for (const auto& f : faces) add_quad(obj, xf.point(f[0]), xf.vector(f[1]), xf.vector(f[2]), material);
   }
 

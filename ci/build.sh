@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# Configures and builds the default preset (Release, into build/). The binary is build/tracer.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cmake --preset default >/dev/null
+cmake --build --preset default -j "$(nproc)"

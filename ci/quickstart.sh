@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# README command 1: install the dependencies, build, and render the default scene.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash ci/install-deps.sh
+bash ci/build.sh
+./build/tracer render scenes/cornell-box.json -o build/cornell-box.png

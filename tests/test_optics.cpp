@@ -1,0 +1,84 @@
+// Closed-form optics: Snell's law, the critical angle of total internal reflection,
+// Schlick's and the exact Fresnel reflectance at their limits.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "kernel/optics.h"
+
+using namespace tracer;
+
+namespace {
+// A unit direction hitting the surface z = 0 (normal +z) at angle theta from the normal.
+Vec3 incident(double theta) {
+  return {static_cast<float>(std::sin(theta)), 0.0f, static_cast<float>(-std::cos(theta))};
+}
+double sin_to_normal(Vec3 d, Vec3 n) { return length(cross(d, n)); }
+}  // namespace
+
+TEST(Optics, RefractionSatisfiesSnellsLaw) {
+  const Vec3 n = {0, 0, 1};
+  for (const auto [n1, n2] : {std::pair{1.0f, 1.5f}, {1.5f, 1.0f}, {1.0f, 2.42f}, {1.33f, 1.0f}, {1.0f, 1.000001f}}) {
+    for (double theta = 0.0; theta < 1.5707; theta += 0.001) {
+      const Vec3 d = incident(theta);
+      Vec3 t;
+      float cos_t;
+      if (!refract(d, n, n1 / n2, t, cos_t)) {
+        EXPECT_GT(n1 * std::sin(theta), n2 * (1.0 - 1e-6)) << "TIR below the critical angle";
+        continue;
+      }
+      EXPECT_NEAR(length(t), 1.0, 1e-6);
+      EXPECT_NEAR(n1 * sin_to_normal(d, n), n2 * sin_to_normal(t, n), 1e-6) << n1 << " -> " << n2 << " at " << theta;
+      EXPECT_LT(t.z, 0.0f);  // continues into the second medium
+    }
+  }
+}
+
+// Total internal reflection begins at theta_c = asin(n2 / n1), to 1e-5 radians.
+TEST(Optics, TotalInternalReflectionStartsAtCriticalAngle) {
+  const Vec3 n = {0, 0, 1};
+  for (const auto [n1, n2] : {std::pair{1.5f, 1.0f}, {2.42f, 1.0f}, {1.33f, 1.0f}, {4.0f, 1.0f}}) {
+    const double critical = std::asin(static_cast<double>(n2) / n1);
+    Vec3 t;
+    float cos_t;
+    EXPECT_TRUE(refract(incident(critical - 1e-5), n, n1 / n2, t, cos_t)) << n1;
+    EXPECT_FALSE(refract(incident(critical + 1e-5), n, n1 / n2, t, cos_t)) << n1;
+    // Just below the critical angle the transmitted ray grazes the surface.
+    refract(incident(critical - 1e-5), n, n1 / n2, t, cos_t);
+    EXPECT_LT(cos_t, 0.01f);
+  }
+}
+
+TEST(Optics, ReflectionMirrorsTheAngle) {
+  const Vec3 d = incident(0.7), n = {0, 0, 1};
+  const Vec3 r = reflect(d, n);
+  EXPECT_FLOAT_EQ(r.x, d.x);
+  EXPECT_FLOAT_EQ(r.z, -d.z);
+}
+
+TEST(Optics, SchlickEqualsR0AtNormalIncidenceAndOneAtGrazing) {
+  for (const float ior : {1.0f, 1.33f, 1.5f, 2.42f, 4.0f}) {
+    const float r0 = ((1.0f - ior) / (1.0f + ior)) * ((1.0f - ior) / (1.0f + ior));
+    EXPECT_EQ(fresnel_schlick(1.0f, 1.0f, ior), r0);
+    EXPECT_NEAR(fresnel_schlick(0.0f, 1.0f, ior), 1.0f, 1e-7f);
+    float previous = r0;
+    for (float c = 1.0f; c >= 0.0f; c -= 0.01f) {  // rises monotonically towards grazing
+      const float f = fresnel_schlick(c, 1.0f, ior);
+      EXPECT_GE(f, previous);
+      EXPECT_LE(f, 1.0f);
+      previous = f;
+    }
+  }
+}
+
+TEST(Optics, ExactFresnelLimits) {
+  for (const float ior : {1.33f, 1.5f, 2.42f}) {
+    const float r0 = ((1.0f - ior) / (1.0f + ior)) * ((1.0f - ior) / (1.0f + ior));
+    EXPECT_NEAR(fresnel_exact(1.0f, 1.0f, 1.0f, ior), r0, 1e-7f);
+    // Grazing incidence from air: cos_i -> 0 reflects everything.
+    const float cos_t = std::sqrt(1.0f - 1.0f / (ior * ior));
+    EXPECT_NEAR(fresnel_exact(0.0f, cos_t, 1.0f, ior), 1.0f, 1e-6f);
+  }
+  // IOR 1: no interface, no reflection at any angle.
+  for (float c = 0.05f; c <= 1.0f; c += 0.05f) EXPECT_EQ(fresnel_exact(c, c, 1.0f, 1.0f), 0.0f);
+}

@@ -1,0 +1,191 @@
+// Ray/shape intersections at known t, normal and uv; watertight shared edges; the BVH
+// returns the same hit as brute force.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "bvh_builder.h"
+#include "kernel/optics.h"
+#include "kernel/ray_offset.h"
+#include "kernel/surface.h"
+#include "test_util.h"
+
+using namespace tracer;
+
+TEST(Sphere, HitAtKnownDistanceAndNormal) {
+  float t;
+  const Ray r = {{0, 0, 5}, {0, 0, -1}};
+  ASSERT_TRUE(intersect_sphere({0, 0, 0}, 1.0f, r, 0.0f, kInfinity, t));
+  EXPECT_EQ(t, 4.0f);
+  const Ray inside = {{0, 0, 0}, {1, 0, 0}};
+  ASSERT_TRUE(intersect_sphere({0, 0, 0}, 2.0f, inside, 0.0f, kInfinity, t));
+  EXPECT_EQ(t, 2.0f);
+  EXPECT_FALSE(intersect_sphere({0, 0, 0}, 1.0f, {{0, 2, 5}, {0, 0, -1}}, 0.0f, kInfinity, t));
+  EXPECT_FALSE(intersect_sphere({0, 0, 0}, 1.0f, r, 0.0f, 3.9f, t));  // beyond tmax
+}
+
+TEST(Triangle, HitAtKnownDistanceAndBarycentrics) {
+  const Vec3 v0 = {0, 0, 0}, v1 = {1, 0, 0}, v2 = {0, 1, 0};
+  const Ray r = {{0.25f, 0.5f, 2.0f}, {0, 0, -1}};
+  float t, b0, b1, b2;
+  ASSERT_TRUE(intersect_triangle(v0, v1, v2, r, make_ray_shear(r.dir), 0.0f, kInfinity, t, b0, b1, b2));
+  EXPECT_EQ(t, 2.0f);
+  EXPECT_FLOAT_EQ(b1, 0.25f);
+  EXPECT_FLOAT_EQ(b2, 0.5f);
+  EXPECT_FLOAT_EQ(b0, 0.25f);
+  const Ray miss = {{0.75f, 0.5f, 2.0f}, {0, 0, -1}};
+  EXPECT_FALSE(intersect_triangle(v0, v1, v2, miss, make_ray_shear(miss.dir), 0.0f, kInfinity, t, b0, b1, b2));
+}
+
+TEST(Triangle, DegenerateTrianglesNeverHit) {
+  const Ray r = {{0.5f, 0.0f, 2.0f}, {0, 0, -1}};
+  float t, b0, b1, b2;
+  const RayShear s = make_ray_shear(r.dir);
+  EXPECT_FALSE(intersect_triangle({0, 0, 0}, {1, 0, 0}, {2, 0, 0}, r, s, 0.0f, kInfinity, t, b0, b1, b2));
+  EXPECT_FALSE(intersect_triangle({0, 0, 0}, {0, 0, 0}, {1, 1, 0}, r, s, 0.0f, kInfinity, t, b0, b1, b2));
+  EXPECT_FALSE(intersect_triangle({0.5f, 0, 0}, {0.5f, 0, 0}, {0.5f, 0, 0}, r, s, 0.0f, kInfinity, t, b0, b1, b2));
+}
+
+// Rays through the shared edge and vertices of two triangles always hit at least one of
+// them: the watertight test has no cracks.
+TEST(Triangle, SharedEdgeIsWatertight) {
+  const Vec3 a = {-1, -1, 0}, b = {1, -1, 0}, c = {1, 1, 0}, d = {-1, 1, 0};
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f), o(-3.0f, 3.0f);
+  for (int i = 0; i < 200000; ++i) {
+    const float s = u(rng);
+    const Vec3 on_edge = a + (c - a) * (0.5f * (s + 1.0f));  // the diagonal a-c
+    const Vec3 origin = {o(rng), o(rng), 1.0f + std::abs(o(rng))};
+    const Ray r = {origin, normalize(on_edge - origin)};
+    const RayShear sh = make_ray_shear(r.dir);
+    float t, b0, b1, b2;
+    const bool h1 = intersect_triangle(a, b, c, r, sh, 0.0f, kInfinity, t, b0, b1, b2);
+    const bool h2 = intersect_triangle(a, c, d, r, sh, 0.0f, kInfinity, t, b0, b1, b2);
+    ASSERT_TRUE(h1 || h2) << "ray " << i << " escaped through the shared edge";
+  }
+}
+
+TEST(Quad, HitGivesPlanarCoordinates) {
+  float t, alpha, beta;
+  const Ray r = {{0.5f, 0.25f, 1.0f}, {0, 0, -1}};
+  ASSERT_TRUE(intersect_quad({0, 0, 0}, {2, 0, 0}, {0, 1, 0}, r, 0.0f, kInfinity, t, alpha, beta));
+  EXPECT_EQ(t, 1.0f);
+  EXPECT_EQ(alpha, 0.25f);
+  EXPECT_EQ(beta, 0.25f);
+  EXPECT_FALSE(intersect_quad({0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {{0.5f, 1.5f, 1.0f}, {0, 0, -1}}, 0.0f, kInfinity, t, alpha, beta));
+}
+
+TEST(Plane, HitFromEitherSide) {
+  float t;
+  EXPECT_TRUE(intersect_plane({0, 0, 0}, {0, 1, 0}, {{0, 2, 0}, {0, -1, 0}}, 0.0f, kInfinity, t));
+  EXPECT_EQ(t, 2.0f);
+  EXPECT_TRUE(intersect_plane({0, 0, 0}, {0, 1, 0}, {{0, -3, 0}, {0, 1, 0}}, 0.0f, kInfinity, t));
+  EXPECT_EQ(t, 3.0f);
+  EXPECT_FALSE(intersect_plane({0, 0, 0}, {0, 1, 0}, {{0, 1, 0}, {1, 0, 0}}, 0.0f, kInfinity, t));
+}
+
+namespace {
+
+std::string one_shape_scene(const std::string& shape) {
+  return R"({"format": "tracer-scene/1",
+    "camera": {"from": [0, 0, 10], "to": [0, 0, 0], "vfov": 40},
+    "film": {"width": 8, "height": 8},
+    "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
+    "shapes": [)" + shape + "]}";
+}
+
+// Fires rays at a scene holding one convex or flat shape, reflects them off the hit
+// (origin offset as the integrator does) and counts reflected rays that hit anything:
+// each of them is a self-intersection.
+int self_hits(const Scene& scene, Vec3 aim_center, float aim_radius) {
+  const SceneView view = scene.view();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  int bad = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 target = aim_center + Vec3{u(rng), u(rng), u(rng)} * aim_radius;
+    const Vec3 origin = aim_center + normalize(Vec3{u(rng), u(rng), 1.5f}) * (aim_radius * 40.0f);
+    const Ray ray = {origin, normalize(target - origin)};
+    const Hit hit = trace_closest(view, ray, kInfinity);
+    if (hit.prim == kNoHit) continue;
+    const Surface s = surface_at(view, ray, hit);
+    const Vec3 n = dot(ray.dir, s.ng) < 0.0f ? s.ng : -s.ng;
+    const Vec3 d = reflect(ray.dir, n);
+    const Ray out = {offset_ray_origin(s.p, s.ng, d), d};
+    const Hit again = trace_closest(view, out, kInfinity);
+    if (again.prim != kNoHit) ++bad;
+  }
+  return bad;
+}
+
+}  // namespace
+
+TEST(Shapes, NoSelfIntersectionAtLargeCoordinates) {
+  const Scene sphere = test::scene_from(one_shape_scene(R"({"type": "sphere", "center": [300, 200, 500], "radius": 90, "material": "m"})"));
+  EXPECT_EQ(self_hits(sphere, {300, 200, 500}, 90.0f), 0);
+  const Scene quad = test::scene_from(one_shape_scene(R"({"type": "quad", "corner": [0, 0, 559.2], "u": [556, 0, 0], "v": [0, 548.8, 0], "material": "m"})"));
+  EXPECT_EQ(self_hits(quad, {278, 274, 559.2f}, 270.0f), 0);
+  const Scene plane = test::scene_from(one_shape_scene(R"({"type": "plane", "point": [0, 0, 0], "normal": [1, 0, 0], "material": "m"})"));
+  EXPECT_EQ(self_hits(plane, {0, 274, 300}, 270.0f), 0);
+  const Scene tris = test::scene_from(one_shape_scene(R"({"type": "mesh", "material": "m",
+      "positions": [[0, 0, 559.2], [0, 0, 0], [0, 548.8, 0], [0, 548.8, 559.2]], "indices": [[0, 1, 2], [0, 2, 3]]})"));
+  EXPECT_EQ(self_hits(tris, {0, 274, 280}, 270.0f), 0);
+}
+
+// DESIGN.md rule 4: the BVH returns exactly the hit of brute force, ties included.
+TEST(Bvh, ClosestAndAnyHitEqualBruteForce) {
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<float> p(-5.0f, 5.0f), r(0.05f, 0.6f), e(-0.8f, 0.8f);
+  std::string shapes;
+  for (int i = 0; i < 300; ++i) {
+    if (!shapes.empty()) shapes += ",";
+    char buf[512];
+    if (i % 3 == 0) {
+      std::snprintf(buf, sizeof buf, R"({"type": "sphere", "center": [%g, %g, %g], "radius": %g, "material": "m"})",
+                    p(rng), p(rng), p(rng), r(rng));
+    } else {
+      const float x = p(rng), y = p(rng), z = p(rng);
+      std::snprintf(buf, sizeof buf, R"({"type": "triangle", "vertices": [[%g, %g, %g], [%g, %g, %g], [%g, %g, %g]], "material": "m"})",
+                    x, y, z, x + e(rng), y + e(rng), z + e(rng), x + e(rng), y + e(rng), z + e(rng));
+    }
+    shapes += buf;
+  }
+  RenderOverrides bvh, none;
+  bvh.accel = "bvh";
+  none.accel = "none";
+  const Scene a = test::scene_from(one_shape_scene(shapes), bvh), b = test::scene_from(one_shape_scene(shapes), none);
+  ASSERT_GT(a.bvh_nodes.size(), 1u);
+  const SceneView va = a.view(), vb = b.view();
+  std::uniform_real_distribution<float> o(-8.0f, 8.0f);
+  int hits = 0;
+  for (int i = 0; i < 100000; ++i) {
+    const Vec3 origin = {o(rng), o(rng), o(rng)};
+    const Vec3 target = i % 10 == 0 ? Vec3{0, 0, 0} : Vec3{p(rng), p(rng), p(rng)};
+    const Ray ray = {origin, normalize(target - origin)};
+    const Hit ha = trace_closest(va, ray, kInfinity), hb = trace_closest(vb, ray, kInfinity);
+    ASSERT_EQ(ha.prim, hb.prim) << "ray " << i;
+    ASSERT_EQ(bits_of(ha.t), bits_of(hb.t)) << "ray " << i;
+    hits += ha.prim != kNoHit;
+    const float tmax = length(target - origin);
+    ASSERT_EQ(trace_any(va, ray, tmax), trace_any(vb, ray, tmax)) << "ray " << i;
+  }
+  EXPECT_GT(hits, 10000);
+}
+
+// Coincident triangles tie in t; the smaller primitive id wins whatever the structure.
+TEST(Bvh, TieOnEqualTGoesToSmallerId) {
+  std::string shapes;
+  for (int i = 0; i < 12; ++i)
+    shapes += std::string(i ? "," : "") + R"({"type": "triangle", "vertices": [[-1, -1, 0], [1, -1, 0], [0, 1, 0]], "material": "m"})";
+  for (const char* accel : {"bvh", "none"}) {
+    RenderOverrides ov;
+    ov.accel = accel;
+    const Scene scene = test::scene_from(one_shape_scene(shapes), ov);
+    const SceneView v = scene.view();
+    for (float x : {-0.5f, 0.0f, 0.3f}) {
+      const Hit h = trace_closest(v, {{x, 0.0f, 7.0f}, {0, 0, -1}}, kInfinity);
+      EXPECT_EQ(h.prim, 0u) << accel;
+      EXPECT_FLOAT_EQ(h.t, 7.0f) << accel;
+    }
+  }
+}

@@ -1,0 +1,47 @@
+// Helpers shared by the tests: scenes from inline JSON, temporary directories, running
+// the CLI.
+#pragma once
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "scene_loader.h"
+
+namespace tracer::test {
+
+inline std::filesystem::path temp_dir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("tracer-test-" + name + "-" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline Scene scene_from(const std::string& json, const RenderOverrides& ov = {}) {
+  return load_scene_text(json, "inline.json", ov);
+}
+
+inline std::string source_path(const std::string& rel) { return std::string(TRACER_SOURCE_DIR) + "/" + rel; }
+
+// Runs the tracer binary with `args`; returns the exit code and captures stderr+stdout.
+inline int run_tracer(const std::string& args, std::string* output = nullptr) {
+  const auto log = std::filesystem::temp_directory_path() / ("tracer-cli-" + std::to_string(::getpid()) + ".log");
+  const std::string cmd = std::string(TRACER_BINARY) + " " + args + " >" + log.string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  if (output) {
+    FILE* f = std::fopen(log.c_str(), "rb");
+    output->clear();
+    if (f) {
+      char buf[4096];
+      size_t n;
+      while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) output->append(buf, n);
+      std::fclose(f);
+    }
+  }
+  std::filesystem::remove(log);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace tracer::test
