@@ -1,4 +1,5 @@
 #include <OpenImageIO/imageio.h>
+#include <omp.h>
 
 #include <chrono>
 #include <cstdio>
@@ -74,7 +75,7 @@ int run_render(const RenderCommand& cmd) {
     j["width"] = rs.width;
     j["height"] = rs.height;
     j["spp"] = rs.spp;
-    j["threads"] = cmd.threads;
+    j["threads"] = cmd.threads > 0 ? cmd.threads : omp_get_max_threads();
     j["seconds"] = {{"load", load_build_s - build_s}, {"build", build_s}, {"render", render_s}};
     j["rays"] = {{"camera", stats.rays.camera}, {"shadow", stats.rays.shadow},
                  {"secondary", stats.rays.secondary}, {"total", rays}};
