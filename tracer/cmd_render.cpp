@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
@@ -13,6 +12,7 @@
 #include "progress.h"
 #include "render_cpu.h"
 #include "scene_loader.h"
+#include "text_file.h"
 
 namespace tracer {
 namespace {
@@ -27,16 +27,6 @@ void check_output_path(const std::string& path) {
   if (!std::filesystem::is_directory(dir)) throw InputError(path + ": output directory does not exist");
   if (p.extension().empty()) throw InputError(path + ": output needs a file extension (.exr, .png, ...)");
   if (!OIIO::ImageOutput::create(path)) throw InputError(path + ": no image writer for extension " + p.extension().string());
-}
-
-void write_text_atomically(const std::string& path, const std::string& text) {
-  const std::string temp = path + ".tmp";
-  {
-    std::ofstream out(temp);
-    out << text;
-    if (!out) throw InputError(path + ": cannot write");
-  }
-  std::filesystem::rename(temp, path);
 }
 
 }  // namespace

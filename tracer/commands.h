@@ -4,6 +4,7 @@
 #include <string>
 
 #include "compare.h"
+#include "golden_update.h"
 #include "scene.h"
 
 namespace tracer {
@@ -21,8 +22,22 @@ struct CompareCommand {
   CompareOptions options;
 };
 
+struct GoldenCheckCommand {
+  std::string name, root = ".", report;
+  int threads = 0;
+};
+
+struct GoldenReportCommand {
+  std::string report;
+  bool reset = false;
+};
+
 int run_render(const RenderCommand& cmd);
 int run_info(const std::string& scene_path);
 int run_compare(const CompareCommand& cmd);
+int run_golden_check(const GoldenCheckCommand& cmd);
+int run_golden_update(const UpdateRequest& request);
+int run_golden_report(const GoldenReportCommand& cmd);
+int run_golden_list(const std::string& root);
 
 }  // namespace tracer

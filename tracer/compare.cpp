@@ -1,21 +1,12 @@
 #include "compare.h"
 
-#include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <cstring>
 #include <sstream>
 
+#include "image_buf.h"
+
 namespace tracer {
-namespace {
-
-OIIO::ImageBuf wrap(const Image& img) {
-  OIIO::ImageSpec spec(static_cast<int>(img.width), static_cast<int>(img.height), 3, OIIO::TypeDesc::FLOAT);
-  OIIO::ImageBuf buf(spec);
-  buf.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, img.rgb.data());
-  return buf;
-}
-
-}  // namespace
 
 CompareResult compare_images(const Image& a, const Image& b, const CompareOptions& options) {
   CompareResult r;
@@ -25,8 +16,10 @@ CompareResult compare_images(const Image& a, const Image& b, const CompareOption
     r.verdict = Verdict::Fail;
     return r;
   }
-  r.bit_identical = std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
-  const OIIO::ImageBuf ba = wrap(a), bb = wrap(b);
+  for (size_t i = 0; i < a.rgb.size(); i += 3)
+    r.pixels_not_identical += std::memcmp(&a.rgb[i], &b.rgb[i], 3 * sizeof(float)) != 0;
+  r.bit_identical = r.pixels_not_identical == 0;
+  const OIIO::ImageBuf ba = to_image_buf(a), bb = to_image_buf(b);
   const auto cr = OIIO::ImageBufAlgo::compare(ba, bb, options.fail, options.warn);
   r.mean_error = cr.meanerror;
   r.rms_error = cr.rms_error;
@@ -56,10 +49,14 @@ Image difference_image(const Image& a, const Image& b) {
 std::string describe(const CompareResult& r) {
   std::ostringstream s;
   if (!r.same_size) return "images differ in size";
-  s << "max error " << r.max_error << " at (" << r.max_x << ", " << r.max_y << "), mean " << r.mean_error
-    << ", RMS " << r.rms_error << ", PSNR " << r.psnr << " dB, " << r.pixels_over_fail << " of " << r.pixels
-    << " pixels over the fail threshold, " << r.pixels_over_warn << " over warn"
-    << (r.bit_identical ? ", bit-identical" : "");
+  if (r.bit_identical) {
+    s << "bit-identical, " << r.pixels << " pixels";
+    return s.str();
+  }
+  s << r.pixels_not_identical << " of " << r.pixels << " pixels not bit-identical, " << r.pixels_over_fail
+    << " over the fail threshold, " << r.pixels_over_warn << " over warn; max error " << r.max_error << " at ("
+    << r.max_x << ", " << r.max_y << "), mean " << r.mean_error << ", RMS " << r.rms_error << ", PSNR " << r.psnr
+    << " dB";
   return s.str();
 }
 

@@ -23,6 +23,7 @@ struct CompareResult {
   double mean_error = 0, rms_error = 0, psnr = 0, max_error = 0;
   int max_x = 0, max_y = 0;
   uint64_t pixels = 0, pixels_over_warn = 0, pixels_over_fail = 0;
+  uint64_t pixels_not_identical = 0;  // pixels whose floats differ in any bit
   bool same_size = true;
   bool bit_identical = false;
   Verdict verdict = Verdict::Fail;

@@ -1,4 +1,4 @@
-// tracer: render, inspect and compare. Exit codes: 0 success, 1 comparison failed,
+// tracer: render, inspect, compare and check goldens. Exit codes: 0 success, 1 comparison failed,
 // 2 bad input (the message names the file and key) or any other error.
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -43,6 +43,28 @@ int main(int argc, char** argv) {
   c->add_option("--warnpercent", compare.options.warnpercent, "percentage of pixels allowed to warn");
   c->add_option("--diff", compare.diff, "write |a - b| to this image");
 
+  CLI::App* g = app.add_subcommand("golden", "golden-image regression checks (docs/golden.md)");
+  g->require_subcommand(1);
+  GoldenCheckCommand check;
+  CLI::App* gc = g->add_subcommand("check", "render one golden and compare it bit for bit with its reference");
+  gc->add_option("name", check.name, "golden name (golden/manifest.json)")->required();
+  gc->add_option("--root", check.root, "source root holding golden/ and scenes/ (default .)");
+  gc->add_option("--report", check.report, "report directory: writes a row, and images on a difference");
+  gc->add_option("--threads", check.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
+  UpdateRequest update;
+  CLI::App* gu = g->add_subcommand("update", "rewrite the goldens that are new or differ, print what changed");
+  gu->add_option("--root", update.root, "source root holding golden/ and scenes/ (default .)");
+  gu->add_option("--filter", update.filter, "only goldens whose name matches this regular expression");
+  gu->add_flag("--force", update.force, "run even when golden/ has uncommitted edits");
+  gu->add_option("--threads", update.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
+  GoldenReportCommand report;
+  CLI::App* gr = g->add_subcommand("report", "assemble the HTML report from the rows the checks wrote");
+  gr->add_option("--report", report.report, "report directory")->required();
+  gr->add_flag("--reset", report.reset, "remove all rows and images instead");
+  std::string list_root = ".";
+  CLI::App* gl = g->add_subcommand("list", "print the golden names, one per line");
+  gl->add_option("--root", list_root, "source root holding golden/ (default .)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -52,6 +74,10 @@ int main(int argc, char** argv) {
   try {
     if (*r) return run_render(render);
     if (*i) return run_info(info_scene);
+    if (*gc) return run_golden_check(check);
+    if (*gu) return run_golden_update(update);
+    if (*gr) return run_golden_report(report);
+    if (*gl) return run_golden_list(list_root);
     return run_compare(compare);
   } catch (const InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -2,6 +2,7 @@
 #pragma once
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct Scene {
   RenderSettings settings{};
   uint32_t features = 0;
   std::map<std::string, uint32_t> shape_counts;  // by the scene file's shape type
+  std::set<std::string> used_types;              // "shape:box", "sampler:grid": scene_types.h
   double build_seconds = 0.0;                    // acceleration-structure build time
 
   SceneView view() const;

@@ -2,14 +2,14 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "bvh_builder.h"
 #include "camera_setup.h"
 #include "json_reader.h"
 #include "kernel/whitted.h"
 #include "mesh.h"
+#include "scene_types.h"
+#include "text_file.h"
 #include "transform.h"
 
 namespace tracer {
@@ -22,12 +22,20 @@ constexpr uint32_t kMaxResolution = 16384;
   obj.fail(key, "not supported yet: " + what);
 }
 
-Material read_material(const Json& value, const std::string& path, const std::string& file) {
+// Reads the `type` key of a section and checks it against the loader's table.
+std::string read_type(JsonObject& obj, const std::string& category) {
+  const std::string type = obj.string("type");
+  if (!is_accepted_type(category, type))
+    obj.fail("type", "unknown " + category + " type \"" + type + "\" (expected " + expected_types(category) + ")");
+  return type;
+}
+
+Material read_material(const Json& value, const std::string& path, const std::string& file, std::string& type) {
   JsonObject obj(value, path, file);
   Material m{};
   m.ior = 1.0f;
   m.shininess = 1.0f;
-  const std::string type = obj.string("type");
+  type = read_type(obj, "material");
   if (type == "lambert") {
     m.kind = MaterialKind::Lambert;
     m.albedo = obj.color("albedo");
@@ -63,9 +71,6 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.kind = MaterialKind::Emissive;
     m.radiance = obj.color("radiance");
     m.two_sided = obj.boolean_or("two_sided", false) ? 1u : 0u;
-  } else {
-    obj.fail("type", "unknown material type \"" + type +
-                         "\" (expected lambert, metal, dielectric, phong or emissive)");
   }
   obj.finish();
   return m;
@@ -120,9 +125,12 @@ class SceneBuilder {
   SceneBuilder(Scene& scene, const std::string& dir) : scene_(scene), dir_(dir) {}
 
   void add_shape(const Json& value, const std::string& path,
-                 const std::map<std::string, uint32_t>& material_ids) {
+                 const std::map<std::string, uint32_t>& material_ids,
+                 const std::vector<std::string>& material_types) {
     JsonObject obj(value, path, scene_.file);
     const std::string type = obj.string("type");
+    if (!is_accepted_type("shape", type))
+      obj.fail("type", "unknown shape type \"" + type + "\" (expected " + expected_types("shape") + ")");
     const Json* mat = obj.find("material");
     if (!mat) {
       if (type == "mesh") not_supported(obj, "material", "materials from the OBJ's MTL file; give the mesh a \"material\"");
@@ -161,11 +169,11 @@ class SceneBuilder {
       } else {
         add_triangles(obj, inline_mesh(obj), xf, material);
       }
-    } else {
-      obj.fail("type", "unknown shape type \"" + type + "\" (expected sphere, plane, triangle, quad, box or mesh)");
     }
     obj.finish();
     ++scene_.shape_counts[type];
+    scene_.used_types.insert("shape:" + type);
+    scene_.used_types.insert("material:" + material_types[material]);
   }
 
  private:
@@ -284,29 +292,29 @@ class SceneBuilder {
   std::string dir_;
 };
 
+// The enum value of a name is its index in the loader's table (scene_types.cpp), which
+// lists the names in the enum's order.
+template <class Kind>
+Kind parse_kind(const std::string& category, const std::string& name, const std::string& where) {
+  const auto& names = accepted_scene_types().at(category);
+  for (size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return static_cast<Kind>(i);
+  throw InputError(where + ": unknown " + category + " \"" + name + "\" (expected " + expected_types(category) + ")");
+}
+
 SamplerKind parse_sampler(const std::string& name, const std::string& where) {
-  if (name == "center") return SamplerKind::Center;
-  if (name == "grid") return SamplerKind::Grid;
-  if (name == "stochastic") return SamplerKind::Stochastic;
-  if (name == "stratified") return SamplerKind::Stratified;
-  throw InputError(where + ": unknown sampler \"" + name + "\" (expected center, grid, stochastic or stratified)");
+  return parse_kind<SamplerKind>("sampler", name, where);
 }
 
 IntegratorKind parse_integrator(const std::string& name, const std::string& where) {
-  if (name == "whitted") return IntegratorKind::Whitted;
-  if (name == "normals") return IntegratorKind::Normals;
-  if (name == "albedo") return IntegratorKind::Albedo;
-  if (name == "depth") return IntegratorKind::Depth;
   if (name == "path") throw InputError(where + ": not supported yet: integrator \"path\"");
-  throw InputError(where + ": unknown integrator \"" + name + "\" (expected whitted, normals, albedo or depth)");
+  return parse_kind<IntegratorKind>("integrator", name, where);
 }
 
 AccelKind parse_accel(const std::string& name, const std::string& where) {
-  if (name == "bvh") return AccelKind::Bvh;
-  if (name == "none") return AccelKind::None;
   if (name == "kdtree" || name == "kdtree-median" || name == "grid" || name == "lbvh")
     throw InputError(where + ": not supported yet: accel \"" + name + "\"");
-  throw InputError(where + ": unknown accel \"" + name + "\" (expected bvh or none)");
+  return parse_kind<AccelKind>("accel", name, where);
 }
 
 uint32_t read_count(JsonObject& obj, const std::string& key, uint64_t fallback) {
@@ -345,6 +353,9 @@ void read_render(const Json* value, const std::string& file, const RenderOverrid
   rs.sampler = parse_sampler(sampler, sampler_at);
   rs.integrator = parse_integrator(integrator, ov.integrator ? cli + " --integrator" : file + ": render.integrator");
   rs.accel = parse_accel(accel, ov.accel ? cli + " --accel" : file + ": render.accel");
+  scene.used_types.insert("sampler:" + sampler);
+  scene.used_types.insert("integrator:" + integrator);
+  scene.used_types.insert("accel:" + accel);
   if (rs.spp == 0) throw InputError(spp_at + ": spp must be at least 1");
   if (rs.max_depth > kMaxDepth)
     throw InputError((ov.max_depth ? cli + " --max-depth" : file + ": render.max_depth") + ": must be at most " + std::to_string(kMaxDepth));
@@ -379,30 +390,33 @@ void read_camera(const Json& value, const std::string& file, Scene& scene) {
   if (spec.aperture > 0.0f) scene.features |= kFeatureThinLens;
 }
 
-Background read_background(const Json* value, const std::string& file) {
+Background read_background(const Json* value, const std::string& file, std::string& type) {
   Background bg{BackgroundKind::Constant, {0, 0, 0}, {0, 0, 0}};
+  type = "constant";
   if (!value) return bg;
   JsonObject obj(*value, "background", file);
-  const std::string type = obj.string("type");
+  type = obj.string("type");
+  if (type == "cubemap") not_supported(obj, "type", "cubemap backgrounds");
+  read_type(obj, "background");
   if (type == "constant") {
     bg.radiance = obj.color("radiance");
   } else if (type == "gradient") {
     bg.kind = BackgroundKind::Gradient;
     bg.radiance = obj.color("zenith");
     bg.horizon = obj.color("horizon");
-  } else if (type == "cubemap") {
-    not_supported(obj, "type", "cubemap backgrounds");
-  } else {
-    obj.fail("type", "unknown background type \"" + type + "\" (expected constant or gradient)");
   }
   obj.finish();
   return bg;
 }
 
-PointLight read_light(const Json& value, const std::string& path, const std::string& file) {
+PointLight read_light(const Json& value, const std::string& path, const std::string& file,
+                      std::set<std::string>& used_types) {
   JsonObject obj(value, path, file);
   const std::string type = obj.string("type");
-  if (type != "point") obj.fail("type", "unknown light type \"" + type + "\" (expected point; emissive shapes are area lights)");
+  if (!is_accepted_type("light", type))
+    obj.fail("type", "unknown light type \"" + type + "\" (expected " + expected_types("light") +
+                         "; emissive shapes are area lights)");
+  used_types.insert("light:" + type);
   PointLight l{};
   l.position = obj.vec3("position");
   l.intensity = obj.color("intensity");
@@ -440,29 +454,33 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
   JsonObject film(top.get("film"), "film", path);
   read_render(top.find("render"), path, overrides, scene, film);
   read_camera(top.get("camera"), path, scene);
-  scene.background = read_background(top.find("background"), path);
+  std::string background_type;
+  scene.background = read_background(top.find("background"), path, background_type);
+  scene.used_types.insert("background:" + background_type);
   scene.ambient = top.find("ambient") ? top.color("ambient") : Vec3{0, 0, 0};
 
   std::map<std::string, uint32_t> material_ids;
+  std::vector<std::string> material_types;
   JsonObject materials(top.get("materials"), "materials", path);
   for (const auto& item : top.get("materials").items()) {
     materials.find(item.key());
     material_ids[item.key()] = static_cast<uint32_t>(scene.materials.size());
-    scene.materials.push_back(read_material(item.value(), materials.child(item.key()), path));
+    material_types.emplace_back();
+    scene.materials.push_back(read_material(item.value(), materials.child(item.key()), path, material_types.back()));
     scene.material_names.push_back(item.key());
   }
 
   if (const Json* lights = top.find("lights")) {
     if (!lights->is_array()) top.fail("lights", "expected an array, got " + describe(*lights));
     for (size_t i = 0; i < lights->size(); ++i)
-      scene.lights.push_back(read_light((*lights)[i], "lights[" + std::to_string(i) + "]", path));
+      scene.lights.push_back(read_light((*lights)[i], "lights[" + std::to_string(i) + "]", path, scene.used_types));
   }
 
   const Json& shapes = top.get("shapes");
   if (!shapes.is_array()) top.fail("shapes", "expected an array, got " + describe(shapes));
   SceneBuilder builder(scene, std::filesystem::path(path).parent_path().string());
   for (size_t i = 0; i < shapes.size(); ++i)
-    builder.add_shape(shapes[i], "shapes[" + std::to_string(i) + "]", material_ids);
+    builder.add_shape(shapes[i], "shapes[" + std::to_string(i) + "]", material_ids, material_types);
   top.finish();
 
   for (const Primitive& p : scene.primitives) {
@@ -477,11 +495,7 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
 }
 
 Scene load_scene(const std::string& path, const RenderOverrides& overrides) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in || std::filesystem::is_directory(path)) throw InputError(path + ": cannot open scene file");
-  std::stringstream text;
-  text << in.rdbuf();
-  return load_scene_text(text.str(), path, overrides);
+  return load_scene_text(read_text_file(path, "scene file"), path, overrides);
 }
 
 std::vector<std::string> feature_names(uint32_t features) {

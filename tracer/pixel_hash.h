@@ -1,0 +1,14 @@
+// A hash of an image's pixel data (not of its file): "sha1:" and 40 hex digits, from
+// OpenImageIO's computePixelHashSHA1 over the float32 RGB values and the image size.
+// Two images have the same hash exactly when their floats are identical bit for bit
+// (barring a SHA-1 collision), whatever file format or compression carried them.
+#pragma once
+#include <string>
+
+#include "image.h"
+
+namespace tracer {
+
+std::string pixel_hash(const Image& image);
+
+}  // namespace tracer

@@ -1,0 +1,20 @@
+// The type names the scene loader accepts, by category (SCENE_FORMAT.md). The loader
+// rejects any name missing from these tables, and records which names a scene uses, so the
+// golden coverage test can check that every accepted type is drawn by some golden.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+namespace tracer {
+
+// Category ("shape", "material", "light", "background", "integrator", "sampler", "accel")
+// to the names the loader accepts in it, in the order SCENE_FORMAT.md lists them.
+const std::map<std::string, std::vector<std::string>>& accepted_scene_types();
+
+bool is_accepted_type(const std::string& category, const std::string& name);
+
+// "sphere, plane, triangle, quad, box or mesh": for "expected ..." messages.
+std::string expected_types(const std::string& category);
+
+}  // namespace tracer
