@@ -10,6 +10,8 @@ packages=(
   nlohmann-json3-dev                      # scene files
   libcli11-dev                            # the command line
   libgtest-dev                            # the test suite
+  chromium                                # opens the golden report headless in a test
+  git                                     # golden update's check for uncommitted edits
 )
 missing=()
 for p in "${packages[@]}"; do

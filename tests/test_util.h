@@ -25,10 +25,10 @@ inline Scene scene_from(const std::string& json, const RenderOverrides& ov = {})
 
 inline std::string source_path(const std::string& rel) { return std::string(TRACER_SOURCE_DIR) + "/" + rel; }
 
-// Runs the tracer binary with `args`; returns the exit code and captures stderr+stdout.
-inline int run_tracer(const std::string& args, std::string* output = nullptr) {
-  const auto log = std::filesystem::temp_directory_path() / ("tracer-cli-" + std::to_string(::getpid()) + ".log");
-  const std::string cmd = std::string(TRACER_BINARY) + " " + args + " >" + log.string() + " 2>&1";
+// Runs a shell command; returns its exit code and captures stderr+stdout.
+inline int run_command(const std::string& command, std::string* output = nullptr) {
+  const auto log = std::filesystem::temp_directory_path() / ("tracer-cmd-" + std::to_string(::getpid()) + ".log");
+  const std::string cmd = "(" + command + ") >" + log.string() + " 2>&1";
   const int status = std::system(cmd.c_str());
   if (output) {
     FILE* f = std::fopen(log.c_str(), "rb");
@@ -42,6 +42,11 @@ inline int run_tracer(const std::string& args, std::string* output = nullptr) {
   }
   std::filesystem::remove(log);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Runs the tracer binary with `args`.
+inline int run_tracer(const std::string& args, std::string* output = nullptr) {
+  return run_command(std::string(TRACER_BINARY) + " " + args, output);
 }
 
 }  // namespace tracer::test

@@ -47,7 +47,8 @@ int run_golden_check(const GoldenCheckCommand& cmd) {
   if (outcome.status != GoldenStatus::Pass) {
     if (!cmd.report.empty())
       std::printf("report: %s\n", (std::filesystem::absolute(cmd.report) / "index.html").string().c_str());
-    std::printf("to accept the new image: %s\n", update_command(manifest, cmd.name).c_str());
+    if (outcome.status == GoldenStatus::Fail)
+      std::printf("to accept the new image: %s\n", update_command(manifest, cmd.name).c_str());
   }
   return outcome.status == GoldenStatus::Pass ? 0 : outcome.status == GoldenStatus::Fail ? 1 : 2;
 }

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -91,8 +92,11 @@ GoldenOutcome judge_golden(const GoldenManifest& manifest, const GoldenEntry& en
   } else {
     o.status = GoldenStatus::Fail;
     const uint64_t differing = entry.tolerance ? o.metrics->pixels_over_fail : o.metrics->pixels_not_identical;
+    char detail[128];
+    std::snprintf(detail, sizeof detail, " (max error %.4g at (%d, %d), PSNR %.1f dB)", o.metrics->max_error,
+                  o.metrics->max_x, o.metrics->max_y, o.metrics->psnr);
     o.message = std::to_string(differing) + " of " + std::to_string(o.metrics->pixels) + " pixels differ" +
-                (entry.tolerance ? " beyond the tolerance" : "") + "; " + describe(*o.metrics);
+                (entry.tolerance ? " beyond the tolerance" : "") + detail;
   }
   return o;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -47,6 +48,12 @@ std::string options_summary(const GoldenOptions& o) {
   return s.str();
 }
 
+std::string format_scale(double scale) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", scale);
+  return buf;
+}
+
 std::string metric_cell(const Json& row) {
   const Json& m = row["metrics"];
   if (m.is_null()) return "";
@@ -84,10 +91,12 @@ std::string row_html(const Json& row) {
   } else {
     const double scale = row["amplification"].get<double>();
     s << image_cell(row, "new", "new") << image_cell(row, "reference", "reference")
-      << image_cell(row, "difference", scale > 0 ? "difference &times; " + html_escape(Json(scale).dump()) : "difference")
-      << "<td class=\"message\"><p>" << html_escape(row["message"].get<std::string>()) << "</p>" << metric_cell(row)
-      << "<p>To accept the new image as the golden:</p><pre><code>" << html_escape(row["update"].get<std::string>())
-      << "</code></pre></td>";
+      << image_cell(row, "difference", scale > 0 ? "difference &times; " + format_scale(scale) : "difference")
+      << "<td class=\"message\"><p>" << html_escape(row["message"].get<std::string>()) << "</p>" << metric_cell(row);
+    if (status == "fail")
+      s << "<p>To accept the new image as the golden:</p><pre><code>" << html_escape(row["update"].get<std::string>())
+        << "</code></pre>";
+    s << "</td>";
   }
   s << "</tr>\n";
   return s.str();
@@ -136,7 +145,7 @@ float amplified_difference(const Image& fresh, const Image& reference, Image& ou
 std::string update_command(const GoldenManifest& manifest, const std::string& name) {
   std::error_code ec;
   const fs::path binary = fs::read_symlink("/proc/self/exe", ec);
-  return "cd " + shell_quote(fs::absolute(manifest.root).lexically_normal().string()) + " && " +
+  return "cd " + shell_quote(fs::weakly_canonical(fs::absolute(manifest.root)).string()) + " && " +
          shell_quote(ec ? "tracer" : binary.string()) + " golden update --filter " + shell_quote("^" + name + "$");
 }
 

@@ -1,0 +1,60 @@
+// The HTML report opens as a page in a real browser: headless Chromium (Debian's
+// `chromium`, installed by ci/install-deps.sh) loads a report with one failing and one
+// passing golden, every image in it loads, the failing row comes first with its update
+// command, and a screenshot of the page is a picture rather than a blank canvas.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "golden_sandbox.h"
+#include "image_io.h"
+
+namespace tracer {
+namespace {
+
+std::string chromium(const std::filesystem::path& profile) {
+  return "timeout 120 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --user-data-dir=" +
+         profile.string() + " --virtual-time-budget=10000 ";
+}
+
+TEST(GoldenReport, OpensInHeadlessChromiumWithEveryImage) {
+  if (test::run_command("command -v chromium") != 0)
+    GTEST_SKIP() << "chromium is not installed; ci/install-deps.sh installs it";
+  const test::GoldenSandbox box("report");
+  box.move_ball();
+  const auto report = box.root / "report";
+  std::string output;
+  ASSERT_EQ(test::run_tracer(box.check_args("box", report.string()), &output), 0) << output;
+  ASSERT_EQ(test::run_tracer(box.check_args("ball", report.string()), &output), 1) << output;
+  ASSERT_EQ(test::run_tracer("golden report --report " + report.string(), &output), 0) << output;
+  EXPECT_NE(output.find("1 differ, 0 could not be checked, 1 identical"), std::string::npos) << output;
+  const std::string page = "file://" + (report / "index.html").string();
+
+  std::string dom;
+  ASSERT_EQ(test::run_command(chromium(box.root / "profile-dom") + "--dump-dom " + page + " 2>/dev/null", &dom), 0) << dom;
+  EXPECT_NE(dom.find("data-broken-images=\"0\""), std::string::npos) << "images failed to load, or the page script did not run:\n" << dom;
+  const size_t ball = dom.find("<tr class=\"fail\" id=\"ball\">"), box_row = dom.find("<tr class=\"pass\" id=\"box\">");
+  ASSERT_NE(ball, std::string::npos) << dom;
+  ASSERT_NE(box_row, std::string::npos) << dom;
+  EXPECT_LT(ball, box_row) << "failing rows come first";
+  const std::string ball_html = dom.substr(ball, box_row - ball);
+  for (const char* img : {"ball/new.png", "ball/reference.png", "ball/difference.png"})
+    EXPECT_NE(ball_html.find(std::string("<img src=\"") + img), std::string::npos) << img;
+  EXPECT_NE(ball_html.find("golden update --filter '^ball$'"), std::string::npos) << ball_html;
+  EXPECT_NE(ball_html.find("PSNR"), std::string::npos);
+
+  const auto shot = box.root / "screenshot.png";
+  ASSERT_EQ(test::run_command(chromium(box.root / "profile-shot") + "--window-size=1000,700 --screenshot=" +
+                                  shot.string() + " " + page + " 2>/dev/null", &output), 0) << output;
+  const Image image = read_image(shot.string());
+  EXPECT_EQ(image.width, 1000u);
+  EXPECT_EQ(image.height, 700u);
+  std::set<uint32_t> colours;
+  for (size_t i = 0; i < image.rgb.size(); i += 3)
+    colours.insert(static_cast<uint32_t>(image.rgb[i] * 255) << 16 | static_cast<uint32_t>(image.rgb[i + 1] * 255) << 8 |
+                   static_cast<uint32_t>(image.rgb[i + 2] * 255));
+  EXPECT_GT(colours.size(), 50u) << "the screenshot looks blank";
+}
+
+}  // namespace
+}  // namespace tracer
