@@ -18,7 +18,7 @@ double sin_to_normal(Vec3 d, Vec3 n) { return length(cross(d, n)); }
 
 TEST(Optics, RefractionSatisfiesSnellsLaw) {
   const Vec3 n = {0, 0, 1};
-  for (const auto [n1, n2] : {std::pair{1.0f, 1.5f}, {1.5f, 1.0f}, {1.0f, 2.42f}, {1.33f, 1.0f}, {1.0f, 1.000001f}}) {
+  for (const auto& [n1, n2] : {std::pair{1.0f, 1.5f}, {1.5f, 1.0f}, {1.0f, 2.42f}, {1.33f, 1.0f}, {1.0f, 1.000001f}}) {
     for (double theta = 0.0; theta < 1.5707; theta += 0.001) {
       const Vec3 d = incident(theta);
       Vec3 t;
@@ -37,7 +37,7 @@ TEST(Optics, RefractionSatisfiesSnellsLaw) {
 // Total internal reflection begins at theta_c = asin(n2 / n1), to 1e-5 radians.
 TEST(Optics, TotalInternalReflectionStartsAtCriticalAngle) {
   const Vec3 n = {0, 0, 1};
-  for (const auto [n1, n2] : {std::pair{1.5f, 1.0f}, {2.42f, 1.0f}, {1.33f, 1.0f}, {4.0f, 1.0f}}) {
+  for (const auto& [n1, n2] : {std::pair{1.5f, 1.0f}, {2.42f, 1.0f}, {1.33f, 1.0f}, {4.0f, 1.0f}}) {
     const double critical = std::asin(static_cast<double>(n2) / n1);
     Vec3 t;
     float cos_t;

@@ -4,6 +4,7 @@
 
 #include "commands.h"
 #include "golden_check.h"
+#include "device_error.h"
 #include "golden_report.h"
 #include "input_error.h"
 
@@ -36,14 +37,20 @@ int run_golden_check(const GoldenCheckCommand& cmd) {
   try {
     manifest = read_manifest(cmd.root);
     entry = manifest.find(cmd.name);
-    render = render_golden(manifest, entry, cmd.threads);
+    if (cmd.device != "cpu" && cmd.device != "cuda") throw InputError("--device " + cmd.device + ": expected cpu or cuda");
+    const GoldenDevice device = cmd.device == "cuda" ? GoldenDevice::Cuda : GoldenDevice::Cpu;
+    render = render_golden(manifest, entry, cmd.threads, device);
     outcome = judge_golden(manifest, entry, *render);
+  } catch (const DeviceUnavailable& e) {
+    outcome = golden_error(entry, std::string("skipped: ") + e.what(), GoldenStatus::Skipped);
   } catch (const InputError& e) {
     outcome = golden_error(entry, e.what());
   }
   if (!cmd.report.empty()) write_report_row(cmd.report, manifest, entry, render ? &*render : nullptr, outcome);
-  const char* verdict = outcome.status == GoldenStatus::Pass ? "PASS" : outcome.status == GoldenStatus::Fail ? "FAIL" : "ERROR";
+  const char* verdicts[] = {"PASS", "FAIL", "ERROR", "SKIPPED"};
+  const char* verdict = verdicts[static_cast<int>(outcome.status)];
   std::printf("golden %s: %s: %s\n", cmd.name.c_str(), verdict, outcome.message.c_str());
+  if (outcome.status == GoldenStatus::Skipped) return kExitSkipped;
   if (outcome.status != GoldenStatus::Pass) {
     if (!cmd.report.empty())
       std::printf("report: %s\n", (std::filesystem::absolute(cmd.report) / "index.html").string().c_str());
@@ -78,9 +85,9 @@ int run_golden_report(const GoldenReportCommand& cmd) {
     return 0;
   }
   const ReportCounts counts = assemble_report(cmd.report);
-  std::printf("golden report: %s (%d differ, %d could not be checked, %d identical)\n",
+  std::printf("golden report: %s (%d differ, %d could not be checked, %d skipped, %d identical)\n",
               (std::filesystem::absolute(cmd.report) / "index.html").string().c_str(), counts.failed, counts.errors,
-              counts.passed);
+              counts.skipped, counts.passed);
   return 0;
 }
 

@@ -11,6 +11,7 @@
 #include "input_error.h"
 #include "progress.h"
 #include "render_cpu.h"
+#include "render_cuda.h"
 #include "scene_loader.h"
 #include "text_file.h"
 
@@ -32,8 +33,8 @@ void check_output_path(const std::string& path) {
 }  // namespace
 
 int run_render(const RenderCommand& cmd) {
-  if (cmd.device != "cpu")
-    throw InputError("--device " + cmd.device + ": not supported yet (this build renders on the cpu only)");
+  if (cmd.device != "cpu" && cmd.device != "cuda")
+    throw InputError("--device " + cmd.device + ": expected cpu or cuda");
   const std::string output =
       cmd.output.empty() ? std::filesystem::path(cmd.scene).stem().string() + ".png" : cmd.output;
   check_output_path(output);
@@ -41,19 +42,26 @@ int run_render(const RenderCommand& cmd) {
       !std::filesystem::is_directory(std::filesystem::path(cmd.stats).parent_path()))
     throw InputError(cmd.stats + ": stats directory does not exist");
 
+  if (cmd.device == "cuda") cuda_device_description();  // fail before loading when there is no GPU
   const auto t_load = Clock::now();
   const Scene scene = load_scene(cmd.scene, cmd.overrides);  // loading includes the BVH build
   const double load_build_s = seconds_since(t_load);
   const double build_s = scene.build_seconds;
 
   const RenderSettings& rs = scene.settings;
-  const uint64_t tiles = ((rs.width + 15) / 16) * static_cast<uint64_t>((rs.height + 15) / 16);
-  ProgressBar bar(tiles, !cmd.quiet);
   RenderStats stats;
+  CudaRunInfo cuda;
+  Image image;
   const auto t_render = Clock::now();
-  const Image image = render_cpu(scene, cmd.threads, stats, [&](uint64_t done, uint64_t) { bar.update(done); });
+  if (cmd.device == "cuda") {
+    image = render_cuda(scene, stats, cuda);  // one launch: no progress to draw
+  } else {
+    const uint64_t tiles = ((rs.width + 15) / 16) * static_cast<uint64_t>((rs.height + 15) / 16);
+    ProgressBar bar(tiles, !cmd.quiet);
+    image = render_cpu(scene, cmd.threads, stats, [&](uint64_t done, uint64_t) { bar.update(done); });
+    bar.finish();
+  }
   const double render_s = seconds_since(t_render);
-  bar.finish();
   write_image(image, output);
 
   const uint64_t rays = stats.rays.camera + stats.rays.secondary + stats.rays.shadow;
@@ -65,7 +73,13 @@ int run_render(const RenderCommand& cmd) {
     j["width"] = rs.width;
     j["height"] = rs.height;
     j["spp"] = rs.spp;
-    j["threads"] = cmd.threads > 0 ? cmd.threads : omp_get_max_threads();
+    j["device"] = cmd.device == "cuda" ? cuda.device : "cpu";
+    if (cmd.device == "cuda") {
+      j["device_bytes"] = cuda.device_bytes;
+      j["cuda_seconds"] = {{"upload", cuda.upload_seconds}, {"kernel", cuda.kernel_seconds}, {"download", cuda.download_seconds}};
+    } else {
+      j["threads"] = cmd.threads > 0 ? cmd.threads : omp_get_max_threads();
+    }
     j["seconds"] = {{"load", load_build_s - build_s}, {"build", build_s}, {"render", render_s}};
     j["rays"] = {{"camera", stats.rays.camera}, {"shadow", stats.rays.shadow},
                  {"secondary", stats.rays.secondary}, {"total", rays}};
@@ -75,6 +89,9 @@ int run_render(const RenderCommand& cmd) {
     j["features"] = feature_names(scene.features);
     write_text_atomically(cmd.stats, j.dump(2) + "\n");
   }
+  if (!cmd.quiet && cmd.device == "cuda")
+    std::fprintf(stderr, "%s: kernel %.6f s, upload %.3f s, download %.3f s\n", cuda.device.c_str(),
+                 cuda.kernel_seconds, cuda.upload_seconds, cuda.download_seconds);
   if (!cmd.quiet)
     std::fprintf(stderr, "%ux%u, %u spp, %.3f s, %.2fM rays, %.2f Mrays/s, %llu NaN/inf samples\n", rs.width,
                  rs.height, rs.spp, render_s, static_cast<double>(rays) / 1e6, mrays,

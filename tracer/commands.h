@@ -23,7 +23,7 @@ struct CompareCommand {
 };
 
 struct GoldenCheckCommand {
-  std::string name, root = ".", report;
+  std::string name, root = ".", report, device = "cpu";
   int threads = 0;
 };
 
@@ -35,6 +35,9 @@ struct GoldenReportCommand {
 int run_render(const RenderCommand& cmd);
 int run_info(const std::string& scene_path);
 int run_compare(const CompareCommand& cmd);
+// 0 identical, 1 differs, 2 cannot check, kExitSkipped when the device is not on this
+// machine (CTest's SKIP_RETURN_CODE).
+constexpr int kExitSkipped = 77;
 int run_golden_check(const GoldenCheckCommand& cmd);
 int run_golden_update(const UpdateRequest& request);
 int run_golden_report(const GoldenReportCommand& cmd);

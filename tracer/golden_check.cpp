@@ -10,6 +10,7 @@
 #include "image_io.h"
 #include "pixel_hash.h"
 #include "render_cpu.h"
+#include "render_cuda.h"
 #include "scene_loader.h"
 
 namespace tracer {
@@ -23,7 +24,8 @@ uint64_t count_nonfinite(const Image& image) {
 
 }  // namespace
 
-GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& entry, int threads) {
+GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& entry, int threads,
+                           GoldenDevice device) {
   const std::string scene_path = manifest.scene_path(entry);
   if (!std::filesystem::is_regular_file(scene_path))
     throw InputError(manifest.path + ": goldens." + entry.name + ".scene: scene file " + scene_path + " does not exist");
@@ -31,7 +33,12 @@ GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& en
   const Scene scene = load_scene(scene_path, entry.options.overrides());
   GoldenRender r;
   RenderStats stats;
-  r.image = render_cpu(scene, threads, stats);
+  if (device == GoldenDevice::Cuda) {
+    CudaRunInfo info;
+    r.image = render_cuda(scene, stats, info);
+  } else {
+    r.image = render_cpu(scene, threads, stats);
+  }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.nonfinite_samples = stats.nonfinite_samples;
   r.hash = pixel_hash(r.image);
@@ -39,10 +46,10 @@ GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& en
   return r;
 }
 
-GoldenOutcome golden_error(const GoldenEntry& entry, const std::string& message) {
+GoldenOutcome golden_error(const GoldenEntry& entry, const std::string& message, GoldenStatus status) {
   GoldenOutcome o;
   o.name = entry.name;
-  o.status = GoldenStatus::Error;
+  o.status = status;
   o.message = message;
   return o;
 }

@@ -20,7 +20,8 @@ struct GoldenRender {
   double seconds = 0.0;
 };
 
-enum class GoldenStatus { Pass, Fail, Error };  // Error: the check itself could not run
+// Error: the check could not run; Skipped: the device it asks for is not on this machine.
+enum class GoldenStatus { Pass, Fail, Error, Skipped };
 
 struct GoldenOutcome {
   std::string name;
@@ -31,13 +32,18 @@ struct GoldenOutcome {
   uint64_t nonfinite_values = 0;          // NaN/inf samples and pixel values of the new image
 };
 
-// Renders the entry's scene; InputError when the scene is missing or invalid.
-GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& entry, int threads);
+enum class GoldenDevice { Cpu, Cuda };
+
+// Renders the entry's scene; InputError when the scene is missing or invalid,
+// DeviceUnavailable when the device is not there.
+GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& entry, int threads,
+                           GoldenDevice device = GoldenDevice::Cpu);
 
 // Judges a new image against the entry's reference image file.
 GoldenOutcome judge_golden(const GoldenManifest& manifest, const GoldenEntry& entry, const GoldenRender& render);
 
-// The outcome when render_golden failed (missing scene, bad input).
-GoldenOutcome golden_error(const GoldenEntry& entry, const std::string& message);
+// The outcome when render_golden failed (missing scene, bad input, no device).
+GoldenOutcome golden_error(const GoldenEntry& entry, const std::string& message,
+                           GoldenStatus status = GoldenStatus::Error);
 
 }  // namespace tracer

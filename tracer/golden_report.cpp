@@ -22,6 +22,7 @@ std::string status_name(GoldenStatus s) {
     case GoldenStatus::Pass: return "pass";
     case GoldenStatus::Fail: return "fail";
     case GoldenStatus::Error: return "error";
+    case GoldenStatus::Skipped: return "skipped";
   }
   return "error";
 }
@@ -85,9 +86,10 @@ std::string row_html(const Json& row) {
     << "<td class=\"name\"><b>" << html_escape(row["name"].get<std::string>()) << "</b><br><span class=\"badge\">"
     << status << "</span><br><small>" << html_escape(row["scene"].get<std::string>()) << "<br>"
     << html_escape(row["options"].get<std::string>()) << "</small></td>";
-  if (status == "pass") {
-    s << "<td colspan=\"4\" class=\"message\">" << html_escape(row["message"].get<std::string>()) << " in "
-      << row["seconds"].get<double>() << " s</td>";
+  if (status == "pass" || status == "skipped") {
+    s << "<td colspan=\"4\" class=\"message\">" << html_escape(row["message"].get<std::string>());
+    if (status == "pass") s << " in " << row["seconds"].get<double>() << " s";
+    s << "</td>";
   } else {
     const double scale = row["amplification"].get<double>();
     s << image_cell(row, "new", "new") << image_cell(row, "reference", "reference")
@@ -106,6 +108,7 @@ constexpr const char* kStyle = R"(body{font-family:sans-serif;margin:1.5em;backg
 table.report{border-collapse:collapse;width:100%}
 table.report>tbody>tr>td{border-top:1px solid #ccc;padding:.5em;vertical-align:top}
 tr.fail .badge,tr.error .badge{background:#c62828;color:#fff}tr.pass .badge{background:#2e7d32;color:#fff}
+tr.skipped .badge{background:#757575;color:#fff}
 .badge{padding:0 .4em;border-radius:.3em;text-transform:uppercase;font-size:.8em}
 td.image img{width:256px;image-rendering:pixelated;border:1px solid #999;background:#000}
 td.image div{font-size:.8em;color:#555}td.message{font-size:.9em}
@@ -172,7 +175,7 @@ void write_report_row(const std::string& report_dir, const GoldenManifest& manif
                       {"max_y", m.max_y},         {"mean_error", m.mean_error},
                       {"rms_error", m.rms_error}, {"psnr", m.psnr}};
   }
-  if (outcome.status != GoldenStatus::Pass) {
+  if (outcome.status == GoldenStatus::Fail || outcome.status == GoldenStatus::Error) {
     const fs::path images = dir / entry.name;
     fs::create_directories(images);
     if (render) {
@@ -210,10 +213,10 @@ ReportCounts assemble_report(const std::string& report_dir) {
       if (file.path().extension() != ".json") continue;
       rows.push_back(parse_json_text(read_text_file(file.path().string(), "report row"), file.path().string()));
     }
-  // Failing rows first (errors, then differences), then passes; by name within each.
+  // Failing rows first (errors, then differences), then skipped, then passes; by name within each.
   const auto rank = [](const Json& r) {
     const std::string s = r["status"].get<std::string>();
-    return s == "error" ? 0 : s == "fail" ? 1 : 2;
+    return s == "error" ? 0 : s == "fail" ? 1 : s == "skipped" ? 2 : 3;
   };
   std::sort(rows.begin(), rows.end(), [&](const Json& a, const Json& b) {
     return std::pair(rank(a), a["name"].get<std::string>()) < std::pair(rank(b), b["name"].get<std::string>());
@@ -222,13 +225,14 @@ ReportCounts assemble_report(const std::string& report_dir) {
   std::string body;
   for (const Json& r : rows) {
     const int k = rank(r);
-    (k == 0 ? counts.errors : k == 1 ? counts.failed : counts.passed) += 1;
+    (k == 0 ? counts.errors : k == 1 ? counts.failed : k == 2 ? counts.skipped : counts.passed) += 1;
     body += row_html(r);
   }
   std::ostringstream html;
   html << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>tracer golden report</title><style>"
        << kStyle << "</style></head>\n<body data-broken-images=\"unknown\">\n<h1>Golden images: " << counts.failed
-       << " differ, " << counts.errors << " could not be checked, " << counts.passed << " identical</h1>\n"
+       << " differ, " << counts.errors << " could not be checked, " << counts.skipped << " skipped, " << counts.passed
+       << " identical</h1>\n"
        << "<p id=\"broken\" hidden></p>\n"
        << (rows.empty() ? "<p>No golden was checked in this run.</p>\n" : "")
        << "<table class=\"report\"><tbody>\n" << body << "</tbody></table>\n" << kScript << "\n</body></html>\n";

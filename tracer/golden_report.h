@@ -11,7 +11,7 @@
 namespace tracer {
 
 struct ReportCounts {
-  int passed = 0, failed = 0, errors = 0;
+  int passed = 0, failed = 0, errors = 0, skipped = 0;
 };
 
 // Writes the row (and, unless the golden passed, its images). `render` is null when the

@@ -5,7 +5,6 @@
 #include <exception>
 
 #include "commands.h"
-#include "input_error.h"
 
 int main(int argc, char** argv) {
   using namespace tracer;
@@ -51,6 +50,7 @@ int main(int argc, char** argv) {
   gc->add_option("--root", check.root, "source root holding golden/ and scenes/ (default .)");
   gc->add_option("--report", check.report, "report directory: writes a row, and images on a difference");
   gc->add_option("--threads", check.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
+  gc->add_option("--device", check.device, "cpu or cuda; exit 77 (skipped) when the device is missing");
   UpdateRequest update;
   CLI::App* gu = g->add_subcommand("update", "rewrite the goldens that are new or differ, print what changed");
   gu->add_option("--root", update.root, "source root holding golden/ and scenes/ (default .)");
@@ -79,9 +79,7 @@ int main(int argc, char** argv) {
     if (*gr) return run_golden_report(report);
     if (*gl) return run_golden_list(list_root);
     return run_compare(compare);
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-  } catch (const std::exception& e) {
+  } catch (const std::exception& e) {  // InputError, DeviceUnavailable, CUDA errors, I/O
     std::fprintf(stderr, "error: %s\n", e.what());
   }
   return 2;

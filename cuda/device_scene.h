@@ -1,0 +1,48 @@
+// The scene's flat arrays copied to plain device buffers, and a SceneView whose pointers
+// point at them: what a kernel receives by value.
+#pragma once
+#include "device_buffer.h"
+#include "scene.h"
+
+namespace tracer {
+
+class DeviceScene {
+ public:
+  explicit DeviceScene(const Scene& scene)
+      : primitives_(scene.primitives),
+        triangle_shading_(scene.triangle_shading),
+        bounded_(scene.bounded),
+        unbounded_(scene.unbounded),
+        bvh_nodes_(scene.bvh_nodes),
+        materials_(scene.materials),
+        lights_(scene.lights) {
+    view_ = scene.view();
+    view_.primitives = primitives_.get();
+    view_.triangle_shading = triangle_shading_.get();
+    view_.bounded = bounded_.get();
+    view_.unbounded = unbounded_.get();
+    view_.bvh_nodes = bvh_nodes_.get();
+    view_.materials = materials_.get();
+    view_.lights = lights_.get();
+  }
+
+  const SceneView& view() const { return view_; }
+
+  // Device bytes the arrays take, known before anything is allocated.
+  static size_t bytes(const Scene& s) {
+    return s.primitives.size() * sizeof(Primitive) + s.triangle_shading.size() * sizeof(TriangleShading) +
+           (s.bounded.size() + s.unbounded.size()) * sizeof(uint32_t) + s.bvh_nodes.size() * sizeof(BvhNode) +
+           s.materials.size() * sizeof(Material) + s.lights.size() * sizeof(PointLight);
+  }
+
+ private:
+  DeviceBuffer<Primitive> primitives_;
+  DeviceBuffer<TriangleShading> triangle_shading_;
+  DeviceBuffer<uint32_t> bounded_, unbounded_;
+  DeviceBuffer<BvhNode> bvh_nodes_;
+  DeviceBuffer<Material> materials_;
+  DeviceBuffer<PointLight> lights_;
+  SceneView view_{};
+};
+
+}  // namespace tracer

@@ -1,0 +1,86 @@
+// The kernel entry points the CUDA parity tests compare, as plain functions of plain
+// inputs. The CPU side of a test calls them directly; the GPU side calls the same
+// functions from kernels (parity_kernels.cu). Outputs are compared as bits.
+#pragma once
+#include "kernel/detmath.h"
+#include "kernel/philox.h"
+#include "kernel/render_pixel.h"
+
+namespace tracer::parity {
+
+enum class MathFunction : uint32_t { Sin, Cos, Tan, Asin, Acos, Atan2, Exp, Log, Pow };
+constexpr uint32_t kMathFunctionCount = 9;
+
+TRACER_HD float eval_math(MathFunction f, float a, float b) {
+  switch (f) {
+    case MathFunction::Sin: return det_sin(a);
+    case MathFunction::Cos: return det_cos(a);
+    case MathFunction::Tan: return det_tan(a);
+    case MathFunction::Asin: return det_asin(a);
+    case MathFunction::Acos: return det_acos(a);
+    case MathFunction::Atan2: return det_atan2(a, b);
+    case MathFunction::Exp: return det_exp(a);
+    case MathFunction::Log: return det_log(a);
+    case MathFunction::Pow: return det_pow(a, b);
+  }
+  return 0.0f;
+}
+
+struct PhiloxQuery {
+  Philox4 counter;
+  uint32_t key0, key1;
+};
+
+TRACER_HD Philox4 eval_philox(const PhiloxQuery& q) { return philox4x32_10(q.counter, q.key0, q.key1); }
+
+struct ShapeQuery {
+  Primitive prim;
+  Ray ray;
+};
+
+struct ShapeAnswer {
+  uint32_t hit;
+  float t, b0, b1, b2;
+};
+
+// One primitive against one ray over (0, inf), by the same switch the traversal uses.
+TRACER_HD ShapeAnswer eval_shape(const ShapeQuery& q) {
+  ShapeAnswer r = {0u, 0.0f, 0.0f, 0.0f, 0.0f};
+  const Primitive& p = q.prim;
+  bool hit = false;
+  switch (p.kind) {
+    case ShapeKind::Sphere: hit = intersect_sphere(p.a, p.radius, q.ray, 0.0f, kInfinity, r.t); break;
+    case ShapeKind::Plane: hit = intersect_plane(p.a, p.b, q.ray, 0.0f, kInfinity, r.t); break;
+    case ShapeKind::Triangle:
+      hit = intersect_triangle(p.a, p.b, p.c, q.ray, make_ray_shear(q.ray.dir), 0.0f, kInfinity, r.t, r.b0, r.b1, r.b2);
+      break;
+    case ShapeKind::Quad: hit = intersect_quad(p.a, p.b, p.c, q.ray, 0.0f, kInfinity, r.t, r.b1, r.b2); break;
+  }
+  r.hit = hit ? 1u : 0u;
+  if (!hit) r = {0u, 0.0f, 0.0f, 0.0f, 0.0f};
+  return r;
+}
+
+struct TraceAnswer {
+  Hit closest;
+  uint32_t any;
+};
+
+// The acceleration structure's closest-hit and any-hit queries for one ray.
+TRACER_HD TraceAnswer eval_trace(const SceneView& scene, const Ray& ray) {
+  return {trace_closest(scene, ray, kInfinity), trace_any(scene, ray, kInfinity) ? 1u : 0u};
+}
+
+struct SampleAnswer {
+  PixelResult pixel;
+  RayCounts counts;
+};
+
+// Every sample of one pixel: the whole integrator, camera to film.
+TRACER_HD SampleAnswer eval_sample(const SceneView& scene, uint32_t pixel_index) {
+  SampleAnswer a = {{{0.0f, 0.0f, 0.0f}, 0u}, {0u, 0u, 0u}};
+  a.pixel = render_pixel(scene, pixel_index % scene.settings.width, pixel_index / scene.settings.width, a.counts);
+  return a;
+}
+
+}  // namespace tracer::parity

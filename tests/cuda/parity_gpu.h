@@ -1,0 +1,20 @@
+// The GPU side of the CUDA parity tests (parity_kernels.cu): each call copies the inputs to
+// the device, runs one kernel that applies a parity_cases.h function to every input, and
+// copies the answers back. DeviceUnavailable when there is no usable GPU.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "parity_cases.h"
+#include "scene.h"
+
+namespace tracer::parity {
+
+std::string gpu_device();  // the device the calls run on
+std::vector<float> gpu_math(MathFunction f, const std::vector<float>& a, const std::vector<float>& b);
+std::vector<Philox4> gpu_philox(const std::vector<PhiloxQuery>& queries);
+std::vector<ShapeAnswer> gpu_shapes(const std::vector<ShapeQuery>& queries);
+std::vector<TraceAnswer> gpu_trace(const Scene& scene, const std::vector<Ray>& rays);
+std::vector<SampleAnswer> gpu_samples(const Scene& scene);  // every pixel, in index order
+
+}  // namespace tracer::parity

@@ -1,0 +1,244 @@
+// CPU/GPU parity of the kernel entry points, compared as bits over large sweeps: the
+// deterministic math functions, Philox, the ray/shape tests, BVH traversal and whole
+// pixels. Each test computes the CPU side first (and checks it where it can); without a
+// usable GPU it then reports SKIPPED with the reason, never PASSED.
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "device_error.h"
+#include "golden_manifest.h"
+#include "parity_gpu.h"
+#include "render_cpu.h"
+#include "scene_loader.h"
+#include "test_util.h"
+
+namespace tracer::parity {
+namespace {
+
+// Skips the rest of a test, with the reason, when no GPU can run it.
+#define SKIP_WITHOUT_GPU()                                                   \
+  do {                                                                       \
+    try {                                                                    \
+      std::printf("GPU: %s\n", gpu_device().c_str());                        \
+    } catch (const DeviceUnavailable& e) {                                   \
+      GTEST_SKIP() << "CPU side computed; no GPU to compare with: " << e.what(); \
+    }                                                                        \
+  } while (0)
+
+// splitmix64: a fixed stream of test inputs.
+struct Inputs {
+  uint64_t state;
+  uint64_t next() {
+    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  float bits() { return float_of_bits(static_cast<uint32_t>(next())); }
+  float uniform(float lo, float hi) { return lo + (hi - lo) * static_cast<float>(next() >> 40) * 0x1p-24f; }
+  Vec3 in_box(float lo, float hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
+  Vec3 direction() {  // uniform on the sphere, by rejection
+    for (;;) {
+      const Vec3 v = in_box(-1.0f, 1.0f);
+      const float l2 = dot(v, v);
+      if (l2 > 1e-4f && l2 <= 1.0f) return v / det_sqrt(l2);
+    }
+  }
+};
+
+// Counts elements whose bytes differ and reports the first few with their index.
+template <class T, class Describe>
+void expect_same_bits(const std::vector<T>& cpu, const std::vector<T>& gpu, Describe describe) {
+  ASSERT_EQ(cpu.size(), gpu.size());
+  size_t mismatches = 0;
+  for (size_t i = 0; i < cpu.size(); ++i) {
+    if (std::memcmp(&cpu[i], &gpu[i], sizeof(T)) == 0) continue;
+    if (++mismatches <= 5) ADD_FAILURE() << "CPU and GPU differ at input " << i << ": " << describe(i);
+  }
+  EXPECT_EQ(mismatches, 0u) << "of " << cpu.size() << " inputs";
+}
+
+std::string hex(float f) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%a (0x%08x)", static_cast<double>(f), bits_of(f));
+  return buf;
+}
+
+const float kEdges[] = {0.0f, -0.0f, FLT_TRUE_MIN, -FLT_TRUE_MIN, FLT_MIN, -FLT_MIN, 0.5f, -0.5f, 1.0f, -1.0f,
+                        2.0f, -2.0f, 1.5707964f, -1.5707964f, 3.1415927f, -3.1415927f, 1e-30f, 88.72f, -103.9f,
+                        1e4f, 1e10f, 1e30f, 16777216.0f, 0x1p120f, FLT_MAX, -FLT_MAX, kInfinity, -kInfinity,
+                        std::numeric_limits<float>::quiet_NaN(), 0.99999994f, 1.0000001f, -0.99999994f};
+
+TEST(CudaParity, DeterministicMathFunctions) {
+  // Per function: every pair of edge values, 2^20 random bit patterns, 2^19 points of its domain.
+  std::vector<float> a[kMathFunctionCount], b[kMathFunctionCount], cpu[kMathFunctionCount];
+  const float lo[] = {-100, -100, -100, -1, -1, -50, -104, 0, 0}, hi[] = {100, 100, 100, 1, 1, 50, 89, 1e6f, 10};
+  for (uint32_t fi = 0; fi < kMathFunctionCount; ++fi) {
+    for (float x : kEdges)
+      for (float y : kEdges) a[fi].push_back(x), b[fi].push_back(y);
+    Inputs in{fi};
+    for (int i = 0; i < (1 << 20); ++i) a[fi].push_back(in.bits()), b[fi].push_back(in.bits());
+    for (int i = 0; i < (1 << 19); ++i) a[fi].push_back(in.uniform(lo[fi], hi[fi])), b[fi].push_back(in.uniform(-20, 20));
+    for (size_t i = 0; i < a[fi].size(); ++i) cpu[fi].push_back(eval_math(static_cast<MathFunction>(fi), a[fi][i], b[fi][i]));
+  }
+  SKIP_WITHOUT_GPU();
+  for (uint32_t fi = 0; fi < kMathFunctionCount; ++fi) {
+    SCOPED_TRACE("function " + std::to_string(fi));
+    expect_same_bits(cpu[fi], gpu_math(static_cast<MathFunction>(fi), a[fi], b[fi]),
+                     [&](size_t i) { return "f(" + hex(a[fi][i]) + ", " + hex(b[fi][i]) + ")"; });
+  }
+}
+
+TEST(CudaParity, Philox) {
+  Inputs in{7};
+  std::vector<PhiloxQuery> q;
+  for (uint32_t i = 0; i < (1u << 21); ++i) {
+    const bool structured = i < (1u << 20);  // the renderer's counters: (pixel, sample, dimension, 0)
+    q.push_back({{{structured ? i : static_cast<uint32_t>(in.next()), structured ? i % 64 : static_cast<uint32_t>(in.next()),
+                   structured ? i % 3 : static_cast<uint32_t>(in.next()), structured ? 0u : static_cast<uint32_t>(in.next())}},
+                 static_cast<uint32_t>(in.next()), static_cast<uint32_t>(in.next())});
+  }
+  std::vector<Philox4> cpu(q.size());
+  for (size_t i = 0; i < q.size(); ++i) cpu[i] = eval_philox(q[i]);
+  SKIP_WITHOUT_GPU();
+  expect_same_bits(cpu, gpu_philox(q), [](size_t i) { return std::to_string(i); });
+}
+
+// Rays aimed at points on and near each shape, edges and vertices included.
+std::vector<ShapeQuery> shape_queries() {
+  Inputs in{11};
+  std::vector<ShapeQuery> q;
+  const Primitive none = {ShapeKind::Sphere, 0, -1, 0.0f, {}, {}, {}};
+  for (int i = 0; i < (1 << 20); ++i) {  // spheres of radius 1e-3 .. 10
+    Primitive p = none;
+    p.a = in.in_box(-10, 10);
+    p.radius = det_exp(in.uniform(-6.9f, 2.3f));
+    const Vec3 target = p.a + in.direction() * (p.radius * in.uniform(0.9f, 1.1f));
+    const Vec3 origin = in.in_box(-20, 20);
+    q.push_back({p, {origin, normalize(target - origin)}});
+  }
+  for (int i = 0; i < (1 << 20); ++i) {  // triangles, aimed inside, on edges (one weight 0) and at vertices
+    Primitive p = none;
+    p.kind = ShapeKind::Triangle;
+    p.a = in.in_box(-5, 5), p.b = in.in_box(-5, 5), p.c = in.in_box(-5, 5);
+    float u = in.uniform(0, 1), v = in.uniform(0, 1 - u);
+    if (i % 4 == 1) v = 0.0f;
+    if (i % 4 == 2) u = 1.0f, v = 0.0f;
+    const Vec3 target = p.a + (p.b - p.a) * u + (p.c - p.a) * v;
+    const Vec3 origin = in.in_box(-20, 20);
+    q.push_back({p, {origin, normalize(target - origin)}});
+  }
+  for (int i = 0; i < (1 << 18); ++i) {  // quads and planes
+    Primitive p = none;
+    p.kind = i % 2 ? ShapeKind::Quad : ShapeKind::Plane;
+    p.a = in.in_box(-5, 5), p.b = in.in_box(-3, 3), p.c = in.in_box(-3, 3);
+    if (p.kind == ShapeKind::Plane) p.b = normalize(p.b);
+    const Vec3 target = p.a + p.b * in.uniform(-0.1f, 1.1f) + p.c * in.uniform(-0.1f, 1.1f);
+    const Vec3 origin = in.in_box(-20, 20);
+    q.push_back({p, {origin, normalize(target - origin)}});
+  }
+  return q;
+}
+
+TEST(CudaParity, RayShapeTests) {
+  const std::vector<ShapeQuery> q = shape_queries();
+  std::vector<ShapeAnswer> cpu(q.size());
+  size_t hits = 0;
+  for (size_t i = 0; i < q.size(); ++i) hits += (cpu[i] = eval_shape(q[i])).hit;
+  EXPECT_GT(hits, q.size() / 3) << "the queries should mostly hit";
+  SKIP_WITHOUT_GPU();
+  expect_same_bits(cpu, gpu_shapes(q), [&](size_t i) { return "kind " + std::to_string(static_cast<int>(q[i].prim.kind)) + ", t " + hex(cpu[i].t); });
+}
+
+Scene golden_scene(const std::string& name) {
+  const GoldenManifest manifest = read_manifest(TRACER_SOURCE_DIR);
+  const GoldenEntry& e = manifest.find(name);
+  return load_scene(manifest.scene_path(e), e.options.overrides());
+}
+
+// 2^20 rays per scene, origins uniform in its bounds, directions uniform on the sphere.
+TEST(CudaParity, BvhTraversal) {
+  const char* names[] = {"cornell-box", "mesh", "refraction"};
+  std::vector<Scene> scenes;
+  std::vector<std::vector<Ray>> rays(3);
+  std::vector<std::vector<TraceAnswer>> cpu(3);
+  for (int s = 0; s < 3; ++s) {
+    scenes.push_back(golden_scene(names[s]));
+    const SceneView view = scenes[s].view();
+    Inputs in{13};
+    const BvhNode& root = scenes[s].bvh_nodes.at(0);
+    for (int i = 0; i < (1 << 20); ++i) {
+      const Vec3 o = {in.uniform(root.lo.x, root.hi.x), in.uniform(root.lo.y, root.hi.y), in.uniform(root.lo.z, root.hi.z)};
+      rays[s].push_back({o, in.direction()});
+    }
+    size_t hits = 0;
+    for (const Ray& r : rays[s]) {
+      cpu[s].push_back(eval_trace(view, r));
+      hits += cpu[s].back().closest.prim != kNoHit;
+    }
+    EXPECT_GT(hits, rays[s].size() / 4) << names[s];
+  }
+  SKIP_WITHOUT_GPU();
+  for (int s = 0; s < 3; ++s) {
+    SCOPED_TRACE(names[s]);
+    expect_same_bits(cpu[s], gpu_trace(scenes[s], rays[s]), [&](size_t i) {
+      return "t " + hex(cpu[s][i].closest.t) + ", prim " + std::to_string(cpu[s][i].closest.prim);
+    });
+  }
+}
+
+TEST(CudaParity, WholePixelsOfEveryGolden) {
+  const GoldenManifest manifest = read_manifest(TRACER_SOURCE_DIR);
+  std::vector<Scene> scenes;
+  std::vector<std::vector<SampleAnswer>> cpu;
+  for (const GoldenEntry& e : manifest.entries) {
+    SCOPED_TRACE(e.name);
+    scenes.push_back(load_scene(manifest.scene_path(e), e.options.overrides()));
+    const SceneView view = scenes.back().view();
+    const size_t n = static_cast<size_t>(view.settings.width) * view.settings.height;
+    cpu.emplace_back(n);
+    for (size_t i = 0; i < n; ++i) cpu.back()[i] = eval_sample(view, static_cast<uint32_t>(i));
+    // The CPU side equals the CPU renderer, so the GPU is compared with what the goldens hold.
+    RenderStats stats;
+    const Image image = render_cpu(scenes.back(), 1, stats);
+    for (size_t i = 0; i < n; ++i)
+      ASSERT_EQ(std::memcmp(&cpu.back()[i].pixel.value, &image.rgb[3 * i], 3 * sizeof(float)), 0) << "pixel " << i;
+  }
+  SKIP_WITHOUT_GPU();
+  for (size_t g = 0; g < scenes.size(); ++g) {
+    SCOPED_TRACE(manifest.entries[g].name);
+    expect_same_bits(cpu[g], gpu_samples(scenes[g]), [](size_t i) { return "pixel " + std::to_string(i); });
+  }
+}
+
+TEST(CudaParity, RenderThroughTheCli) {
+  const auto dir = test::temp_dir("cuda-cli");
+  const std::string scene = test::source_path("scenes/features/refraction.json");
+  const std::string cpu = (dir / "cpu.exr").string(), gpu = (dir / "gpu.exr").string();
+  std::string output;
+  ASSERT_EQ(test::run_tracer("render " + scene + " --quiet -o " + cpu, &output), 0) << output;
+  const int code = test::run_tracer("render " + scene + " --quiet --device cuda -o " + gpu, &output);
+  bool have_gpu = true;
+  try {
+    gpu_device();
+  } catch (const DeviceUnavailable&) {
+    have_gpu = false;
+  }
+  if (!have_gpu) {
+    EXPECT_EQ(code, 2) << output;
+    EXPECT_NE(output.find("error: "), std::string::npos) << output;
+    EXPECT_NE(output.find("CUDA"), std::string::npos) << output;
+    EXPECT_FALSE(std::filesystem::exists(gpu)) << "no output without a GPU";
+  } else {
+    ASSERT_EQ(code, 0) << output;
+    EXPECT_EQ(test::run_tracer("compare " + cpu + " " + gpu + " --fail 0", &output), 0) << output;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tracer::parity
