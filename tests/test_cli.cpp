@@ -64,6 +64,8 @@ std::vector<BadInput> bad_inputs() {
       {"UnknownAccel", g, "--accel octree", "unknown accel \"octree\""},
       {"MaxDepthTooLarge", g, "--max-depth 65", "--max-depth: must be at most 64"},
       {"BadOutputExtension", g, "-o OUTDIR/out.nosuchformat", "no image writer"},
+      {"UnknownDevice", g, "-o OUTDIR/out.png --device gpu", "--device gpu: expected cpu or cuda"},
+      {"UnknownEffect", g, "-o OUTDIR/out.png --effects glow", "unknown effect \"glow\""},
   };
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "effects.h"
 #include "image_io.h"
 #include "input_error.h"
 #include "progress.h"
@@ -44,7 +45,9 @@ int run_render(const RenderCommand& cmd) {
 
   if (cmd.device == "cuda") cuda_device_description();  // fail before loading when there is no GPU
   const auto t_load = Clock::now();
-  const Scene scene = load_scene(cmd.scene, cmd.overrides);  // loading includes the BVH build
+  RenderOverrides overrides = cmd.overrides;
+  if (!cmd.effects.empty()) overrides.effects = parse_effects(cmd.effects);
+  const Scene scene = load_scene(cmd.scene, overrides);  // loading includes the BVH build
   const double load_build_s = seconds_since(t_load);
   const double build_s = scene.build_seconds;
 

@@ -14,6 +14,7 @@ struct RenderCommand {
   RenderOverrides overrides;
   int threads = 0;
   std::string device = "cpu";
+  std::string effects;  // --effects list; empty: all
   bool quiet = false;
 };
 
@@ -32,7 +33,14 @@ struct GoldenReportCommand {
   bool reset = false;
 };
 
+struct BenchDeviceCommand {
+  std::string device = "cuda", scenes = "scenes";
+  int frames = 5;
+  int threads = 0;
+};
+
 int run_render(const RenderCommand& cmd);
+int run_bench_device(const BenchDeviceCommand& cmd);
 int run_info(const std::string& scene_path);
 int run_compare(const CompareCommand& cmd);
 // 0 identical, 1 differs, 2 cannot check, kExitSkipped when the device is not on this

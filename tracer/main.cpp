@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   r->add_option("--accel", render.overrides.accel, "bvh or none");
   r->add_option("--threads", render.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
   r->add_option("--device", render.device, "cpu or cuda");
+  r->add_option("--effects", render.effects, "Whitted effects to trace: all (default), none, or a list of shadows,reflections,refractions");
   r->add_option("--stats", render.stats, "write timings and ray counts as JSON");
   r->add_flag("--quiet", render.quiet, "no progress bar or summary");
 
@@ -65,6 +66,15 @@ int main(int argc, char** argv) {
   CLI::App* gl = g->add_subcommand("list", "print the golden names, one per line");
   gl->add_option("--root", list_root, "source root holding golden/ (default .)");
 
+  CLI::App* b = app.add_subcommand("bench", "benchmarks: speed against a baseline measured in the same run");
+  b->require_subcommand(1);
+  BenchDeviceCommand bench_device;
+  CLI::App* bd = b->add_subcommand("device", "Whitted frames/s and Mrays/s on a device: per effect, per resolution");
+  bd->add_option("--device", bench_device.device, "cuda (default; the CPU is timed too, as the baseline) or cpu");
+  bd->add_option("--frames", bench_device.frames, "frames per measurement; the median is reported (default 5)");
+  bd->add_option("--scenes", bench_device.scenes, "scene directory: cornell-box.json and the mesh scenes (default scenes)");
+  bd->add_option("--threads", bench_device.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -78,6 +88,7 @@ int main(int argc, char** argv) {
     if (*gu) return run_golden_update(update);
     if (*gr) return run_golden_report(report);
     if (*gl) return run_golden_list(list_root);
+    if (*bd) return run_bench_device(bench_device);
     return run_compare(compare);
   } catch (const std::exception& e) {  // InputError, DeviceUnavailable, CUDA errors, I/O
     std::fprintf(stderr, "error: %s\n", e.what());

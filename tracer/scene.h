@@ -35,6 +35,7 @@ struct Scene {
 // Command-line overrides of the scene's `render` and `film` keys.
 struct RenderOverrides {
   std::optional<uint32_t> spp, width, height, max_depth;
+  std::optional<uint32_t> effects;  // EffectBit mask (`--effects`); all effects when unset
   std::optional<uint64_t> seed;
   std::optional<std::string> integrator, sampler, accel;
 };

@@ -345,6 +345,7 @@ void read_render(const Json* value, const std::string& file, const RenderOverrid
   if (ov.height) rs.height = *ov.height;
   if (ov.max_depth) rs.max_depth = *ov.max_depth;
   if (ov.seed) rs.seed = *ov.seed;
+  rs.effects = ov.effects.value_or(kEffectAll);
   if (ov.sampler) sampler = *ov.sampler;
   if (ov.integrator) integrator = *ov.integrator;
   if (ov.accel) accel = *ov.accel;

@@ -33,6 +33,11 @@ struct Background {
   Vec3 horizon;   // gradient only
 };
 
+// Whitted effects that can be switched off to measure their cost (`--effects`, `tracer
+// bench device`). Off, shadows let every light through; reflection and refraction rays
+// (including a dielectric's Fresnel reflection) are not traced.
+enum EffectBit : uint32_t { kEffectShadows = 1u, kEffectReflection = 2u, kEffectRefraction = 4u, kEffectAll = 7u };
+
 struct RenderSettings {
   IntegratorKind integrator;
   SamplerKind sampler;
@@ -42,6 +47,7 @@ struct RenderSettings {
   uint32_t max_depth;
   uint64_t seed;
   uint32_t width, height;
+  uint32_t effects;  // EffectBit mask; kEffectAll unless a benchmark says otherwise
 };
 
 struct SceneView {

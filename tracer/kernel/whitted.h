@@ -89,9 +89,11 @@ TRACER_HD Vec3 whitted_local(const SceneView& scene, const WhittedResponse& w, c
     const Vec3 l = to_light / d;
     const float cos_l = dot(n, l);
     if (!(cos_l > 0.0f)) continue;
-    const Vec3 origin = offset_ray_origin(s.p, s.ng, l);
-    ++counts.shadow;
-    if (trace_any(scene, {origin, l}, length(light.position - origin))) continue;
+    if (scene.settings.effects & kEffectShadows) {
+      const Vec3 origin = offset_ray_origin(s.p, s.ng, l);
+      ++counts.shadow;
+      if (trace_any(scene, {origin, l}, length(light.position - origin))) continue;
+    }
     const Vec3 h = normalize(l - view_dir);
     const float cos_h = max_of(dot(n, h), 0.0f);
     const Vec3 reflected = w.kd * cos_l + w.ks * det_pow(cos_h, w.shininess);
@@ -126,8 +128,8 @@ TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, R
     radiance += task.weight * whitted_local(scene, w, s, n, task.ray.dir, counts);
     if (task.depth >= scene.settings.max_depth) continue;
 
-    Vec3 kr = w.kr;
-    if (max_component(w.kt) > 0.0f) {
+    Vec3 kr = (scene.settings.effects & kEffectReflection) ? w.kr : Vec3{0.0f, 0.0f, 0.0f};
+    if ((scene.settings.effects & kEffectRefraction) && max_component(w.kt) > 0.0f) {
       // Snell's law with relative index eta = n_incident / n_transmitted.
       const float n_in = front ? 1.0f : w.ior, n_out = front ? w.ior : 1.0f;
       Vec3 refracted;
@@ -148,7 +150,7 @@ TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, R
       }
     }
     const Vec3 weight = task.weight * kr;
-    if (max_component(weight) > 0.0f) {
+    if ((scene.settings.effects & kEffectReflection) && max_component(weight) > 0.0f) {
       const Vec3 reflected = reflect(task.ray.dir, n);
       ++counts.secondary;
       stack[top++] = {{offset_ray_origin(s.p, s.ng, reflected), reflected}, weight, task.depth + 1};
