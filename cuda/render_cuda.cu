@@ -11,22 +11,19 @@
 namespace tracer {
 namespace {
 
-enum Counter { kCamera, kSecondary, kShadow, kNonfinite, kCounterCount };
+enum Counter { kCamera, kSecondary, kShadow, kRejected, kCounterCount };
 
-__global__ void render_kernel(const SceneView scene, float* rgb, unsigned long long* counters) {
+__global__ void render_kernel(const SceneView scene, SampleRange range, FilmSum* film, unsigned long long* counters) {
   const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
   if (x >= scene.settings.width || y >= scene.settings.height) return;
   RayCounts counts = {0, 0, 0};
-  const PixelResult r = render_pixel(scene, x, y, counts);
-  float* out = rgb + (static_cast<size_t>(y) * scene.settings.width + x) * 3;
-  out[0] = r.value.x;
-  out[1] = r.value.y;
-  out[2] = r.value.z;
+  const FilmSum sum = render_pixel(scene, x, y, range.begin, range.end, counts);
+  film[static_cast<size_t>(y) * scene.settings.width + x] = sum;
   // Integer sums: the totals do not depend on the order threads add them in.
   atomicAdd(&counters[kCamera], static_cast<unsigned long long>(counts.camera));
   atomicAdd(&counters[kSecondary], static_cast<unsigned long long>(counts.secondary));
   atomicAdd(&counters[kShadow], static_cast<unsigned long long>(counts.shadow));
-  if (r.nonfinite) atomicAdd(&counters[kNonfinite], static_cast<unsigned long long>(r.nonfinite));
+  if (sum.rejected) atomicAdd(&counters[kRejected], static_cast<unsigned long long>(sum.rejected));
 }
 
 // A CUDA event that is destroyed even when a later call throws.
@@ -46,12 +43,12 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 std::string cuda_device_description() { return describe_cuda_device(select_cuda_device()); }
 
-Image render_cuda(const Scene& scene, RenderStats& stats, CudaRunInfo& info) {
+FilmBuffer render_cuda_film(const Scene& scene, SampleRange range, RenderStats& stats, CudaRunInfo& info) {
   const cudaDeviceProp prop = select_cuda_device();
   info.device = describe_cuda_device(prop);
   const RenderSettings& rs = scene.settings;
   const size_t pixels = static_cast<size_t>(rs.width) * rs.height;
-  info.device_bytes = DeviceScene::bytes(scene) + pixels * 3 * sizeof(float) + kCounterCount * sizeof(unsigned long long);
+  info.device_bytes = DeviceScene::bytes(scene) + pixels * sizeof(FilmSum) + kCounterCount * sizeof(unsigned long long);
   size_t free_bytes = 0, total_bytes = 0;
   TRACER_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
   if (info.device_bytes > free_bytes)
@@ -61,7 +58,7 @@ Image render_cuda(const Scene& scene, RenderStats& stats, CudaRunInfo& info) {
 
   auto t = std::chrono::steady_clock::now();
   const DeviceScene device_scene(scene);
-  DeviceBuffer<float> rgb(pixels * 3);
+  DeviceBuffer<FilmSum> film(pixels);
   DeviceBuffer<unsigned long long> counters(kCounterCount);
   counters.zero();
   TRACER_CUDA_CHECK(cudaDeviceSynchronize());
@@ -70,7 +67,7 @@ Image render_cuda(const Scene& scene, RenderStats& stats, CudaRunInfo& info) {
   const CudaEvent start, stop;
   const dim3 block(16, 16), grid((rs.width + 15) / 16, (rs.height + 15) / 16);
   TRACER_CUDA_CHECK(cudaEventRecord(start.event));
-  render_kernel<<<grid, block>>>(device_scene.view(), rgb.get(), counters.get());
+  render_kernel<<<grid, block>>>(device_scene.view(), range, film.get(), counters.get());
   TRACER_CUDA_CHECK(cudaGetLastError());
   TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
   TRACER_CUDA_CHECK(cudaEventSynchronize(stop.event));
@@ -79,15 +76,21 @@ Image render_cuda(const Scene& scene, RenderStats& stats, CudaRunInfo& info) {
   info.kernel_seconds = kernel_ms / 1000.0;
 
   t = std::chrono::steady_clock::now();
-  Image image;
-  image.width = rs.width;
-  image.height = rs.height;
-  image.rgb = rgb.download();
+  FilmBuffer result;
+  result.width = rs.width;
+  result.height = rs.height;
+  result.range = range;
+  result.pixels = film.download();
   const std::vector<unsigned long long> c = counters.download();
   info.download_seconds = seconds_since(t);
   stats.rays = {c[kCamera], c[kSecondary], c[kShadow]};
-  stats.nonfinite_samples = c[kNonfinite];
-  return image;
+  stats.nonfinite_samples = c[kRejected];
+  return result;
+}
+
+Image render_cuda(const Scene& scene, RenderStats& stats, CudaRunInfo& info) {
+  const uint32_t spp = scene.settings.spp;
+  return resolve_film(render_cuda_film(scene, {0, spp}, stats, info), spp);
 }
 
 }  // namespace tracer

@@ -8,33 +8,31 @@
 
 namespace tracer {
 
-Image render_cpu(const Scene& scene, int threads, RenderStats& stats,
-                 const std::function<void(uint64_t, uint64_t)>& progress) {
+FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, RenderStats& stats,
+                           const ProgressCallback& progress) {
   constexpr uint32_t kTile = 16;
   const SceneView view = scene.view();
   const uint32_t w = view.settings.width, h = view.settings.height;
-  Image image;
-  image.width = w;
-  image.height = h;
-  image.rgb.assign(static_cast<size_t>(w) * h * 3, 0.0f);
+  FilmBuffer film;
+  film.width = w;
+  film.height = h;
+  film.range = range;
+  film.pixels.resize(static_cast<size_t>(w) * h);
   const uint32_t tiles_x = (w + kTile - 1) / kTile, tiles_y = (h + kTile - 1) / kTile;
   const int64_t tile_count = static_cast<int64_t>(tiles_x) * tiles_y;
   std::atomic<uint64_t> tiles_done{0};
-  uint64_t camera = 0, secondary = 0, shadow = 0, nonfinite = 0;
+  uint64_t camera = 0, secondary = 0, shadow = 0, rejected = 0;
   const int nthreads = threads > 0 ? threads : omp_get_max_threads();
 
-#pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : camera, secondary, shadow, nonfinite)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : camera, secondary, shadow, rejected)
   for (int64_t tile = 0; tile < tile_count; ++tile) {
     const uint32_t x0 = static_cast<uint32_t>(tile % tiles_x) * kTile, y0 = static_cast<uint32_t>(tile / tiles_x) * kTile;
     RayCounts counts{};
     for (uint32_t y = y0; y < std::min(y0 + kTile, h); ++y) {
       for (uint32_t x = x0; x < std::min(x0 + kTile, w); ++x) {
-        const PixelResult r = render_pixel(view, x, y, counts);
-        float* out = &image.rgb[(static_cast<size_t>(y) * w + x) * 3];
-        out[0] = r.value.x;
-        out[1] = r.value.y;
-        out[2] = r.value.z;
-        nonfinite += r.nonfinite;
+        const FilmSum sum = render_pixel(view, x, y, range.begin, range.end, counts);
+        film.pixels[static_cast<size_t>(y) * w + x] = sum;
+        rejected += sum.rejected;
       }
     }
     camera += counts.camera;
@@ -44,8 +42,13 @@ Image render_cpu(const Scene& scene, int threads, RenderStats& stats,
     if (progress && omp_get_thread_num() == 0) progress(done, static_cast<uint64_t>(tile_count));
   }
   stats.rays = {camera, secondary, shadow};
-  stats.nonfinite_samples = nonfinite;
-  return image;
+  stats.nonfinite_samples = rejected;
+  return film;
+}
+
+Image render_cpu(const Scene& scene, int threads, RenderStats& stats, const ProgressCallback& progress) {
+  const uint32_t spp = scene.settings.spp;
+  return resolve_film(render_cpu_film(scene, {0, spp}, threads, stats, progress), spp);
 }
 
 }  // namespace tracer

@@ -20,8 +20,11 @@ struct CudaRunInfo {
 // The first CUDA device, described; DeviceUnavailable when there is none usable.
 std::string cuda_device_description();
 
-// Renders on the GPU; DeviceUnavailable (no device, too little memory) or
-// std::runtime_error naming the failing CUDA call.
+// Samples `range` of every pixel on the GPU; DeviceUnavailable (no device, too little
+// memory) or std::runtime_error naming the failing CUDA call.
+FilmBuffer render_cuda_film(const Scene& scene, SampleRange range, RenderStats& stats, CudaRunInfo& info);
+
+// All samples, resolved to an image.
 Image render_cuda(const Scene& scene, RenderStats& stats, CudaRunInfo& info);
 
 }  // namespace tracer

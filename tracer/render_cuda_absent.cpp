@@ -12,6 +12,8 @@ namespace {
 
 std::string cuda_device_description() { no_cuda(); }
 
+FilmBuffer render_cuda_film(const Scene&, SampleRange, RenderStats&, CudaRunInfo&) { no_cuda(); }
+
 Image render_cuda(const Scene&, RenderStats&, CudaRunInfo&) { no_cuda(); }
 
 }  // namespace tracer

@@ -72,14 +72,15 @@ TRACER_HD TraceAnswer eval_trace(const SceneView& scene, const Ray& ray) {
 }
 
 struct SampleAnswer {
-  PixelResult pixel;
+  FilmSum pixel;
   RayCounts counts;
 };
 
 // Every sample of one pixel: the whole integrator, camera to film.
 TRACER_HD SampleAnswer eval_sample(const SceneView& scene, uint32_t pixel_index) {
-  SampleAnswer a = {{{0.0f, 0.0f, 0.0f}, 0u}, {0u, 0u, 0u}};
-  a.pixel = render_pixel(scene, pixel_index % scene.settings.width, pixel_index / scene.settings.width, a.counts);
+  SampleAnswer a = {{{0, 0, 0}, 0u, 0u}, {0u, 0u, 0u}};
+  a.pixel = render_pixel(scene, pixel_index % scene.settings.width, pixel_index / scene.settings.width, 0u,
+                         scene.settings.spp, a.counts);
   return a;
 }
 
