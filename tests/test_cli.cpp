@@ -66,6 +66,8 @@ std::vector<BadInput> bad_inputs() {
       {"BadOutputExtension", g, "-o OUTDIR/out.nosuchformat", "no image writer"},
       {"UnknownDevice", g, "-o OUTDIR/out.png --device gpu", "--device gpu: expected cpu or cuda"},
       {"UnknownEffect", g, "-o OUTDIR/out.png --effects glow", "unknown effect \"glow\""},
+      {"SamplesNeedAPartialFile", g, "-o OUTDIR/out.png --samples 0:1", "--samples writes a partial file"},
+      {"SampleRangeBeyondSpp", g, "-o OUTDIR/out.partial --samples 0:2", "--samples 0:2: expected 0 <= A < B <= spp (1)"},
   };
 }
 

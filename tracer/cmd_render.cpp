@@ -1,3 +1,4 @@
+#include <OpenImageIO/hash.h>
 #include <OpenImageIO/imageio.h>
 #include <omp.h>
 
@@ -10,7 +11,9 @@
 #include "effects.h"
 #include "image_io.h"
 #include "input_error.h"
+#include "partial_file.h"
 #include "progress.h"
+#include "render_options.h"
 #include "render_cpu.h"
 #include "render_cuda.h"
 #include "scene_loader.h"
@@ -22,13 +25,26 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-// Fail before rendering when the output could not be written anyway.
-void check_output_path(const std::string& path) {
+// Fail before rendering when the output could not be written anyway. A sample range
+// writes a partial file, anything else an image.
+void check_output_path(const std::string& path, bool partial) {
   const std::filesystem::path p(path);
   const std::filesystem::path dir = p.parent_path().empty() ? "." : p.parent_path();
   if (!std::filesystem::is_directory(dir)) throw InputError(path + ": output directory does not exist");
+  if (partial) {
+    if (p.extension() != ".partial") throw InputError(path + ": --samples writes a partial file; name it NAME.partial");
+    return;
+  }
   if (p.extension().empty()) throw InputError(path + ": output needs a file extension (.exr, .png, ...)");
+  if (p.extension() == ".partial") throw InputError(path + ": a .partial file holds a sample range; give --samples A:B");
   if (!OIIO::ImageOutput::create(path)) throw InputError(path + ": no image writer for extension " + p.extension().string());
+}
+
+// What makes two partial files parts of one render: every resolved option and the effects.
+Json render_identity(const Scene& scene) {
+  Json j = Json::parse(resolved_options(scene).to_json().dump());
+  j["effects"] = scene.settings.effects;
+  return j;
 }
 
 }  // namespace
@@ -38,7 +54,8 @@ int run_render(const RenderCommand& cmd) {
     throw InputError("--device " + cmd.device + ": expected cpu or cuda");
   const std::string output =
       cmd.output.empty() ? std::filesystem::path(cmd.scene).stem().string() + ".png" : cmd.output;
-  check_output_path(output);
+  const bool partial = !cmd.samples.empty();
+  check_output_path(output, partial);
   if (!cmd.stats.empty() && std::filesystem::path(cmd.stats).has_parent_path() &&
       !std::filesystem::is_directory(std::filesystem::path(cmd.stats).parent_path()))
     throw InputError(cmd.stats + ": stats directory does not exist");
@@ -47,25 +64,33 @@ int run_render(const RenderCommand& cmd) {
   const auto t_load = Clock::now();
   RenderOverrides overrides = cmd.overrides;
   if (!cmd.effects.empty()) overrides.effects = parse_effects(cmd.effects);
-  const Scene scene = load_scene(cmd.scene, overrides);  // loading includes the BVH build
+  const std::string scene_text = read_text_file(cmd.scene, "scene file");
+  const Scene scene = load_scene_text(scene_text, cmd.scene, overrides);  // loading includes the BVH build
   const double load_build_s = seconds_since(t_load);
   const double build_s = scene.build_seconds;
 
   const RenderSettings& rs = scene.settings;
+  const SampleRange range = partial ? parse_sample_range(cmd.samples, rs.spp) : SampleRange{0, rs.spp};
   RenderStats stats;
   CudaRunInfo cuda;
-  Image image;
+  Partial part;
   const auto t_render = Clock::now();
   if (cmd.device == "cuda") {
-    image = render_cuda(scene, stats, cuda);  // one launch: no progress to draw
+    part.film = render_cuda_film(scene, range, stats, cuda);  // one launch: no progress to draw
   } else {
     const uint64_t tiles = ((rs.width + 15) / 16) * static_cast<uint64_t>((rs.height + 15) / 16);
     ProgressBar bar(tiles, !cmd.quiet);
-    image = render_cpu(scene, cmd.threads, stats, [&](uint64_t done, uint64_t) { bar.update(done); });
+    part.film = render_cpu_film(scene, range, cmd.threads, stats, [&](uint64_t done, uint64_t) { bar.update(done); });
     bar.finish();
   }
   const double render_s = seconds_since(t_render);
-  write_image(image, output);
+  if (partial) {
+    part.header = {render_identity(scene), cmd.scene, OIIO::SHA1::digest(scene_text.data(), scene_text.size()), rs.spp,
+                   stats.nonfinite_samples};
+    write_partial(output, part);
+  } else {
+    write_image(resolve_film(part.film, rs.spp), output);
+  }
 
   const uint64_t rays = stats.rays.camera + stats.rays.secondary + stats.rays.shadow;
   const double mrays = render_s > 0.0 ? static_cast<double>(rays) / render_s / 1e6 : 0.0;
@@ -76,6 +101,7 @@ int run_render(const RenderCommand& cmd) {
     j["width"] = rs.width;
     j["height"] = rs.height;
     j["spp"] = rs.spp;
+    j["samples"] = {range.begin, range.end};
     j["device"] = cmd.device == "cuda" ? cuda.device : "cpu";
     if (cmd.device == "cuda") {
       j["device_bytes"] = cuda.device_bytes;

@@ -2,6 +2,7 @@
 // 2 bad input or error). main.cpp parses the command line with CLI11.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "compare.h"
 #include "golden_update.h"
@@ -15,6 +16,7 @@ struct RenderCommand {
   int threads = 0;
   std::string device = "cpu";
   std::string effects;  // --effects list; empty: all
+  std::string samples;  // --samples A:B: write samples [A, B) to a partial file
   bool quiet = false;
 };
 
@@ -39,7 +41,13 @@ struct BenchDeviceCommand {
   int threads = 0;
 };
 
+struct MergeCommand {
+  std::vector<std::string> parts;
+  std::string output;
+};
+
 int run_render(const RenderCommand& cmd);
+int run_merge(const MergeCommand& cmd);
 int run_bench_device(const BenchDeviceCommand& cmd);
 int run_info(const std::string& scene_path);
 int run_compare(const CompareCommand& cmd);

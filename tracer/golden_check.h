@@ -16,7 +16,7 @@ struct GoldenRender {
   Image image;
   uint64_t nonfinite_samples = 0;
   std::string hash;
-  GoldenOptions options;  // every option as the scene and the manifest resolved them
+  RenderOptions options;  // every option as the scene and the manifest resolved them
   double seconds = 0.0;
 };
 

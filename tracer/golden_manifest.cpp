@@ -23,9 +23,9 @@ uint32_t read_u32(JsonObject& obj, const std::string& key) {
   return static_cast<uint32_t>(v);
 }
 
-GoldenOptions read_options(const Json& value, const std::string& path, const std::string& file) {
+RenderOptions read_options(const Json& value, const std::string& path, const std::string& file) {
   JsonObject obj(value, path, file);
-  GoldenOptions o;
+  RenderOptions o;
   if (obj.find("integrator")) o.integrator = obj.string("integrator");
   if (obj.find("sampler")) o.sampler = obj.string("sampler");
   if (obj.find("accel")) o.accel = obj.string("accel");
@@ -77,23 +77,6 @@ GoldenEntry read_entry(const std::string& name, const Json& value, const std::st
 
 }  // namespace
 
-bool GoldenOptions::complete() const {
-  return integrator && sampler && accel && spp && width && height && max_depth && seed;
-}
-
-RenderOverrides GoldenOptions::overrides() const {
-  RenderOverrides o;
-  o.integrator = integrator;
-  o.sampler = sampler;
-  o.accel = accel;
-  o.spp = spp;
-  o.width = width;
-  o.height = height;
-  o.max_depth = max_depth;
-  o.seed = seed;
-  return o;
-}
-
 std::string GoldenManifest::image_path(const GoldenEntry& e) const {
   return (std::filesystem::path(root) / "golden" / (e.name + ".exr")).string();
 }
@@ -133,18 +116,9 @@ void write_manifest(const GoldenManifest& manifest) {
   doc["format"] = kFormat;
   doc["goldens"] = nlohmann::ordered_json::object();
   for (const GoldenEntry& e : manifest.entries) {
-    nlohmann::ordered_json entry, options = nlohmann::ordered_json::object();
-    const GoldenOptions& o = e.options;
-    if (o.integrator) options["integrator"] = *o.integrator;
-    if (o.sampler) options["sampler"] = *o.sampler;
-    if (o.spp) options["spp"] = *o.spp;
-    if (o.seed) options["seed"] = *o.seed;
-    if (o.width) options["width"] = *o.width;
-    if (o.height) options["height"] = *o.height;
-    if (o.accel) options["accel"] = *o.accel;
-    if (o.max_depth) options["max_depth"] = *o.max_depth;
+    nlohmann::ordered_json entry;
     entry["scene"] = e.scene;
-    entry["options"] = options;
+    entry["options"] = e.options.to_json();
     if (!e.hash.empty()) entry["hash"] = e.hash;
     if (e.tolerance)
       entry["compare"] = {{"fail", e.tolerance->fail}, {"failpercent", e.tolerance->failpercent}, {"why", e.tolerance->why}};
@@ -153,21 +127,6 @@ void write_manifest(const GoldenManifest& manifest) {
     doc["goldens"][e.name] = entry;
   }
   write_text_atomically(manifest.path, doc.dump(2) + "\n");
-}
-
-GoldenOptions resolved_options(const Scene& scene) {
-  const RenderSettings& rs = scene.settings;
-  const auto& names = accepted_scene_types();
-  GoldenOptions o;
-  o.integrator = names.at("integrator").at(static_cast<size_t>(rs.integrator));
-  o.sampler = names.at("sampler").at(static_cast<size_t>(rs.sampler));
-  o.accel = names.at("accel").at(static_cast<size_t>(rs.accel));
-  o.spp = rs.spp;
-  o.width = rs.width;
-  o.height = rs.height;
-  o.max_depth = rs.max_depth;
-  o.seed = rs.seed;
-  return o;
 }
 
 }  // namespace tracer

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "json_reader.h"
+#include "render_options.h"
 #include "scene.h"
 
 namespace tracer {
@@ -20,20 +21,10 @@ struct GoldenTolerance {
   std::string why;
 };
 
-// The render options a manifest records, in the order it writes them.
-struct GoldenOptions {
-  std::optional<std::string> integrator, sampler, accel;
-  std::optional<uint32_t> spp, width, height, max_depth;
-  std::optional<uint64_t> seed;
-
-  bool complete() const;
-  RenderOverrides overrides() const;
-};
-
 struct GoldenEntry {
   std::string name;                          // [a-z0-9-]+: the test and the file name
   std::string scene;                         // relative to the source root
-  GoldenOptions options;
+  RenderOptions options;
   std::string hash;                          // pixel_hash of the reference; empty for a new entry
   std::optional<GoldenTolerance> tolerance;  // nullopt: exact
 };
@@ -51,8 +42,5 @@ struct GoldenManifest {
 std::string manifest_path(const std::string& root);
 GoldenManifest read_manifest(const std::string& root);  // InputError naming file and key
 void write_manifest(const GoldenManifest& manifest);     // atomically, in a stable layout
-
-// Every option as the loaded scene resolved it (scene file plus overrides).
-GoldenOptions resolved_options(const Scene& scene);
 
 }  // namespace tracer

@@ -41,7 +41,7 @@ std::string html_escape(const std::string& s) {
   return out;
 }
 
-std::string options_summary(const GoldenOptions& o) {
+std::string options_summary(const RenderOptions& o) {
   std::ostringstream s;
   s << o.integrator.value_or("?") << ", " << o.spp.value_or(0) << " spp " << o.sampler.value_or("?") << ", seed "
     << o.seed.value_or(0) << ", " << o.width.value_or(0) << "x" << o.height.value_or(0) << ", "

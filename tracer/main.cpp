@@ -26,8 +26,14 @@ int main(int argc, char** argv) {
   r->add_option("--threads", render.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
   r->add_option("--device", render.device, "cpu or cuda");
   r->add_option("--effects", render.effects, "Whitted effects to trace: all (default), none, or a list of shadows,reflections,refractions");
+  r->add_option("--samples", render.samples, "A:B renders only samples [A, B) of every pixel into NAME.partial, for tracer merge");
   r->add_option("--stats", render.stats, "write timings and ray counts as JSON");
   r->add_flag("--quiet", render.quiet, "no progress bar or summary");
+
+  MergeCommand merge;
+  CLI::App* m = app.add_subcommand("merge", "add partial renders (--samples) into the image of all their samples");
+  m->add_option("parts", merge.parts, "partial files of one render covering samples [0, spp) once")->required();
+  m->add_option("-o,--output", merge.output, "output image (.exr, .png, ...)")->required();
 
   std::string info_scene;
   CLI::App* i = app.add_subcommand("info", "primitive counts, feature mask and acceleration stats");
@@ -84,6 +90,7 @@ int main(int argc, char** argv) {
   try {
     if (*r) return run_render(render);
     if (*i) return run_info(info_scene);
+    if (*m) return run_merge(merge);
     if (*gc) return run_golden_check(check);
     if (*gu) return run_golden_update(update);
     if (*gr) return run_golden_report(report);

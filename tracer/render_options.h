@@ -1,0 +1,26 @@
+// The options that decide a render's pixels besides the scene's contents: what a golden's
+// manifest entry records and what a partial file carries so that `tracer merge` only adds
+// up parts of one render. Each may be unset (the scene file decides).
+#pragma once
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "scene.h"
+
+namespace tracer {
+
+struct RenderOptions {
+  std::optional<std::string> integrator, sampler, accel;
+  std::optional<uint32_t> spp, width, height, max_depth;
+  std::optional<uint64_t> seed;
+
+  bool complete() const;                     // every option set
+  RenderOverrides overrides() const;         // as command-line overrides of a scene
+  nlohmann::ordered_json to_json() const;    // the set options, in a fixed order
+};
+
+// Every option as the loaded scene resolved it (scene file plus overrides).
+RenderOptions resolved_options(const Scene& scene);
+
+}  // namespace tracer
