@@ -15,7 +15,9 @@ class DeviceScene {
         unbounded_(scene.unbounded),
         bvh_nodes_(scene.bvh_nodes),
         materials_(scene.materials),
-        lights_(scene.lights) {
+        lights_(scene.lights),
+        light_table_(scene.light_table),
+        light_of_prim_(scene.light_of_prim) {
     view_ = scene.view();
     view_.primitives = primitives_.get();
     view_.triangle_shading = triangle_shading_.get();
@@ -24,6 +26,8 @@ class DeviceScene {
     view_.bvh_nodes = bvh_nodes_.get();
     view_.materials = materials_.get();
     view_.lights = lights_.get();
+    view_.light_table = light_table_.get();
+    view_.light_of_prim = light_of_prim_.get();
   }
 
   const SceneView& view() const { return view_; }
@@ -32,7 +36,8 @@ class DeviceScene {
   static size_t bytes(const Scene& s) {
     return s.primitives.size() * sizeof(Primitive) + s.triangle_shading.size() * sizeof(TriangleShading) +
            (s.bounded.size() + s.unbounded.size()) * sizeof(uint32_t) + s.bvh_nodes.size() * sizeof(BvhNode) +
-           s.materials.size() * sizeof(Material) + s.lights.size() * sizeof(PointLight);
+           s.materials.size() * sizeof(Material) + s.lights.size() * sizeof(PointLight) +
+           s.light_table.size() * sizeof(LightEntry) + s.light_of_prim.size() * sizeof(uint32_t);
   }
 
  private:
@@ -42,6 +47,8 @@ class DeviceScene {
   DeviceBuffer<BvhNode> bvh_nodes_;
   DeviceBuffer<Material> materials_;
   DeviceBuffer<PointLight> lights_;
+  DeviceBuffer<LightEntry> light_table_;
+  DeviceBuffer<uint32_t> light_of_prim_;
   SceneView view_{};
 };
 

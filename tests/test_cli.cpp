@@ -60,7 +60,7 @@ std::vector<BadInput> bad_inputs() {
       {"UnknownMaterial", replace(g, "\"material\": \"m\"}]", "\"material\": \"x\"}]"), "", "shapes[0].material: unknown material \"x\""},
       {"GridNeedsSquareSpp", g, "--sampler grid --spp 3", "needs a square spp"},
       {"TextureNotYet", replace(g, "\"albedo\": [0.5, 0.5, 0.5]", "\"albedo\": {\"texture\": \"a.png\"}"), "", "materials.m.albedo: not supported yet"},
-      {"PathNotYet", g, "--integrator path", "not supported yet: integrator \"path\""},
+      {"UnknownIntegrator", g, "--integrator photons", "unknown integrator \"photons\""},
       {"UnknownAccel", g, "--accel octree", "unknown accel \"octree\""},
       {"MaxDepthTooLarge", g, "--max-depth 65", "--max-depth: must be at most 64"},
       {"BadOutputExtension", g, "-o OUTDIR/out.nosuchformat", "no image writer"},

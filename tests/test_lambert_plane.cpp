@@ -1,5 +1,6 @@
-// A Lambert plane under a point light, pixel by pixel against kd * I * cos / d^2
-// evaluated in double precision from the same camera rays.
+// A Lambert plane under a point light, pixel by pixel against kd * I * cos / d^2 (Whitted)
+// and albedo * I * cos / (pi d^2) (path tracing: next-event estimation at the first hit, the
+// continuation escapes to a black sky), evaluated in double precision from the same camera rays.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +14,7 @@ namespace {
 const char* kScene = R"({"format": "tracer-scene/1",
   "camera": {"from": [0.2, 3, 4], "to": [0, 0, 0], "vfov": 50},
   "film": {"width": 64, "height": 48},
-  "render": {"integrator": "whitted", "spp": 1, "sampler": "center", "max_depth": 0},
+  "render": {"integrator": "INTEGRATOR", "spp": 1, "sampler": "center", "max_depth": DEPTH},
   "materials": {"floor": {"type": "lambert", "albedo": [0.5, 0.6, 0.7]}},
   "lights": [LIGHT],
   "shapes": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor"}]})";
@@ -23,9 +24,12 @@ const char* kScene = R"({"format": "tracer-scene/1",
 // gamma(64) = 64 u / (1 - 64 u) bounds their compound relative error.
 constexpr double kRelTolerance = 64 * 0x1p-24 / (1 - 64 * 0x1p-24);
 
-void check_plane(const std::string& light, bool attenuated) {
+void check_plane(const std::string& light, bool attenuated, bool path = false) {
   std::string text = kScene;
   text.replace(text.find("LIGHT"), 5, light);
+  text.replace(text.find("INTEGRATOR"), 10, path ? "path" : "whitted");
+  text.replace(text.find("DEPTH"), 5, path ? "1" : "0");
+  const double brdf_scale = path ? 1.0 / M_PI : 1.0;  // Lambert's BRDF is albedo / pi
   const Scene scene = test::scene_from(text);
   RenderStats stats;
   const Image img = render_cpu(scene, 2, stats);
@@ -48,7 +52,7 @@ void check_plane(const std::string& light, bool attenuated) {
       const double cos = v[1] / d;
       const double falloff = attenuated ? std::min(1.0 / (l.kc + l.kl * d + l.kq * d2), 1.0) : 1.0 / d2;
       for (int c = 0; c < 3; ++c) {
-        const double expected = kd[c] * I[c] * cos * falloff;
+        const double expected = kd[c] * brdf_scale * I[c] * cos * falloff;
         const double rel = std::abs(px[c] - expected) / expected;
         worst = std::max(worst, rel);
         EXPECT_LE(rel, kRelTolerance) << "pixel " << x << "," << y << " channel " << c;
@@ -66,4 +70,8 @@ TEST(LambertPlane, MatchesInverseSquareCosineLaw) {
 
 TEST(LambertPlane, MatchesAttenuationPolynomial) {
   check_plane(R"({"type": "point", "position": [-0.5, 1.5, 0.5], "intensity": [2, 2, 2], "attenuation": [0.5, 0.3, 0.2]})", true);
+}
+
+TEST(LambertPlane, PathTracerMatchesAlbedoOverPi) {
+  check_plane(R"({"type": "point", "position": [0.3, 2, -0.2], "intensity": [3, 4, 5]})", false, true);
 }

@@ -16,6 +16,7 @@ struct RenderCommand {
   int threads = 0;
   std::string device = "cpu";
   std::string effects;  // --effects list; empty: all
+  std::string nee;      // --nee on|off; empty: the scene's render.nee (default on)
   std::string samples;  // --samples A:B: write samples [A, B) to a partial file
   bool quiet = false;
 };

@@ -34,6 +34,8 @@ RenderOptions read_options(const Json& value, const std::string& path, const std
   if (obj.find("height")) o.height = read_u32(obj, "height");
   if (obj.find("max_depth")) o.max_depth = read_u32(obj, "max_depth");
   if (obj.find("seed")) o.seed = obj.unsigned_integer("seed");
+  if (obj.find("nee")) o.nee = obj.boolean_or("nee", true);
+  if (obj.find("rr_depth")) o.rr_depth = read_u32(obj, "rr_depth");
   obj.finish();
   return o;
 }

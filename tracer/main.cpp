@@ -19,12 +19,15 @@ int main(int argc, char** argv) {
   r->add_option("--seed", render.overrides.seed, "64-bit seed");
   r->add_option("--width", render.overrides.width, "image width in pixels");
   r->add_option("--height", render.overrides.height, "image height in pixels");
-  r->add_option("--integrator", render.overrides.integrator, "whitted, normals, albedo or depth");
+  r->add_option("--integrator", render.overrides.integrator, "whitted, path, normals, albedo or depth");
   r->add_option("--max-depth", render.overrides.max_depth, "maximum ray depth");
   r->add_option("--sampler", render.overrides.sampler, "center, grid, stochastic or stratified");
   r->add_option("--accel", render.overrides.accel, "bvh or none");
   r->add_option("--threads", render.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
   r->add_option("--device", render.device, "cpu or cuda");
+  r->add_option("--nee", render.nee, "path: next-event estimation with MIS, on (default) or off (the plain estimator)")
+      ->check(CLI::IsMember({"on", "off"}));
+  r->add_option("--rr-depth", render.overrides.rr_depth, "path: Russian roulette from this many bounces on (default 3)");
   r->add_option("--effects", render.effects, "Whitted effects to trace: all (default), none, or a list of shadows,reflections,refractions");
   r->add_option("--samples", render.samples, "A:B renders only samples [A, B) of every pixel into NAME.partial, for tracer merge");
   r->add_option("--stats", render.stats, "write timings and ray counts as JSON");

@@ -18,6 +18,8 @@ RenderOverrides RenderOptions::overrides() const {
   o.height = height;
   o.max_depth = max_depth;
   o.seed = seed;
+  o.nee = nee;
+  o.rr_depth = rr_depth;
   return o;
 }
 
@@ -31,6 +33,8 @@ nlohmann::ordered_json RenderOptions::to_json() const {
   if (height) j["height"] = *height;
   if (accel) j["accel"] = *accel;
   if (max_depth) j["max_depth"] = *max_depth;
+  if (nee) j["nee"] = *nee;
+  if (rr_depth) j["rr_depth"] = *rr_depth;
   return j;
 }
 
@@ -46,6 +50,10 @@ RenderOptions resolved_options(const Scene& scene) {
   o.height = rs.height;
   o.max_depth = rs.max_depth;
   o.seed = rs.seed;
+  if (rs.integrator == IntegratorKind::Path) {
+    o.nee = rs.nee != 0;
+    o.rr_depth = rs.rr_depth;
+  }
   return o;
 }
 

@@ -14,8 +14,10 @@ struct RenderOptions {
   std::optional<std::string> integrator, sampler, accel;
   std::optional<uint32_t> spp, width, height, max_depth;
   std::optional<uint64_t> seed;
+  std::optional<bool> nee;             // path integrator only; recorded when resolved
+  std::optional<uint32_t> rr_depth;    // path integrator only; recorded when resolved
 
-  bool complete() const;                     // every option set
+  bool complete() const;                     // the eight options every golden records are set
   RenderOverrides overrides() const;         // as command-line overrides of a scene
   nlohmann::ordered_json to_json() const;    // the set options, in a fixed order
 };

@@ -20,6 +20,8 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<std::string> material_names;
   std::vector<PointLight> lights;
+  std::vector<LightEntry> light_table;  // path integrator's lights (light_table.h)
+  std::vector<uint32_t> light_of_prim;  // per primitive: its light_table entry or kNoHit
   Background background{};
   Vec3 ambient{0.0f, 0.0f, 0.0f};
   Camera camera{};
@@ -36,6 +38,8 @@ struct Scene {
 struct RenderOverrides {
   std::optional<uint32_t> spp, width, height, max_depth;
   std::optional<uint32_t> effects;  // EffectBit mask (`--effects`); all effects when unset
+  std::optional<bool> nee;          // path: next-event estimation (`--nee on|off`)
+  std::optional<uint32_t> rr_depth; // path: Russian roulette depth (`--rr-depth`)
   std::optional<uint64_t> seed;
   std::optional<std::string> integrator, sampler, accel;
 };

@@ -6,6 +6,7 @@
 #include "bvh_builder.h"
 #include "camera_setup.h"
 #include "json_reader.h"
+#include "light_table.h"
 #include "kernel/whitted.h"
 #include "mesh.h"
 #include "scene_types.h"
@@ -71,6 +72,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.kind = MaterialKind::Emissive;
     m.radiance = obj.color("radiance");
     m.two_sided = obj.boolean_or("two_sided", false) ? 1u : 0u;
+    m.albedo = obj.color_or("albedo", {0.0f, 0.0f, 0.0f});  // an emitter that also reflects
   }
   obj.finish();
   return m;
@@ -307,7 +309,6 @@ SamplerKind parse_sampler(const std::string& name, const std::string& where) {
 }
 
 IntegratorKind parse_integrator(const std::string& name, const std::string& where) {
-  if (name == "path") throw InputError(where + ": not supported yet: integrator \"path\"");
   return parse_kind<IntegratorKind>("integrator", name, where);
 }
 
@@ -333,6 +334,8 @@ void read_render(const Json* value, const std::string& file, const RenderOverrid
   std::string accel = obj.string_or("accel", "bvh");
   rs.max_depth = read_count(obj, "max_depth", 5);
   rs.seed = obj.find("seed") ? obj.unsigned_integer("seed") : 0;
+  rs.nee = obj.boolean_or("nee", true) ? 1u : 0u;
+  rs.rr_depth = read_count(obj, "rr_depth", 3);
   if (obj.find("grid_resolution")) not_supported(obj, "grid_resolution", "the uniform grid accelerator");
   obj.finish();
   rs.width = read_count(film, "width", 0);
@@ -346,6 +349,8 @@ void read_render(const Json* value, const std::string& file, const RenderOverrid
   if (ov.max_depth) rs.max_depth = *ov.max_depth;
   if (ov.seed) rs.seed = *ov.seed;
   rs.effects = ov.effects.value_or(kEffectAll);
+  if (ov.nee) rs.nee = *ov.nee ? 1u : 0u;
+  if (ov.rr_depth) rs.rr_depth = *ov.rr_depth;
   if (ov.sampler) sampler = *ov.sampler;
   if (ov.integrator) integrator = *ov.integrator;
   if (ov.accel) accel = *ov.accel;
@@ -489,6 +494,7 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
     if (p.shading >= 0 && scene.triangle_shading[p.shading].has_normals) scene.features |= kFeatureShadingNormals;
   }
   if (!scene.lights.empty()) scene.features |= kFeaturePointLight;
+  build_light_table(scene);
   const auto build_start = std::chrono::steady_clock::now();
   build_acceleration(scene);
   scene.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();

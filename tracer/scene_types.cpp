@@ -10,7 +10,7 @@ const std::map<std::string, std::vector<std::string>>& accepted_scene_types() {
       {"material", {"lambert", "metal", "dielectric", "phong", "emissive"}},
       {"light", {"point"}},
       {"background", {"constant", "gradient"}},
-      {"integrator", {"whitted", "normals", "albedo", "depth"}},
+      {"integrator", {"whitted", "normals", "albedo", "depth", "path"}},
       {"sampler", {"center", "grid", "stochastic", "stratified"}},
       {"accel", {"bvh", "none"}},
   };

@@ -1,6 +1,7 @@
 // Reflection, refraction (Snell's law) and Fresnel reflectance for unit vectors.
 #pragma once
 #include "detmath.h"
+#include "material.h"
 #include "vec3.h"
 
 namespace tracer {
@@ -36,6 +37,13 @@ TRACER_HD float fresnel_exact(float cos_i, float cos_t, float n1, float n2) {
   const float rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
   const float rp = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
   return 0.5f * (rs * rs + rp * rp);
+}
+
+// Reflectance of a dielectric interface by the material's Fresnel model; Schlick takes
+// the cosine on the optically thinner side.
+TRACER_HD float dielectric_reflectance(FresnelKind model, float cos_i, float cos_t, float n_in, float n_out) {
+  return model == FresnelKind::Exact ? fresnel_exact(cos_i, cos_t, n_in, n_out)
+                                     : fresnel_schlick(n_in <= n_out ? cos_i : cos_t, n_in, n_out);
 }
 
 }  // namespace tracer

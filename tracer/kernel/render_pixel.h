@@ -5,6 +5,7 @@
 #pragma once
 #include "debug_views.h"
 #include "film.h"
+#include "path.h"
 #include "whitted.h"
 
 namespace tracer {
@@ -22,8 +23,12 @@ TRACER_HD FilmSum render_pixel(const SceneView& scene, uint32_t px, uint32_t py,
     const Ray ray = camera_ray(scene.camera, static_cast<float>(px) + ox,
                                static_cast<float>(py) + oy, lu, lv);
     ++counts.camera;
-    const Vec3 value = rs.integrator == IntegratorKind::Whitted ? whitted_radiance(scene, ray, counts)
-                                                                 : debug_view(scene, ray);
+    Vec3 value;
+    switch (rs.integrator) {
+      case IntegratorKind::Whitted: value = whitted_radiance(scene, ray, counts); break;
+      case IntegratorKind::Path: value = path_radiance(scene, ray, pixel, s, counts); break;
+      default: value = debug_view(scene, ray); break;
+    }
     film_add(sum, value);
   }
   return sum;

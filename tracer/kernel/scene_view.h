@@ -17,7 +17,7 @@
 namespace tracer {
 
 enum class AccelKind : uint32_t { Bvh, None };
-enum class IntegratorKind : uint32_t { Whitted, Normals, Albedo, Depth };
+enum class IntegratorKind : uint32_t { Whitted, Normals, Albedo, Depth, Path };
 enum class BackgroundKind : uint32_t { Constant, Gradient };
 
 struct PointLight {
@@ -25,6 +25,15 @@ struct PointLight {
   Vec3 intensity;
   float kc, kl, kq;         // attenuation, used when has_attenuation
   uint32_t has_attenuation;  // 0: physical 1/d^2 falloff
+};
+
+// An entry of the path integrator's light table (kernel/light_sampling.h).
+enum class LightKind : uint32_t { Point, Shape };
+struct LightEntry {
+  LightKind kind;
+  uint32_t index;  // into SceneView::lights, or the emitting primitive's id
+  float pmf;       // probability of choosing this light
+  float cdf;       // sum of the pmfs up to and including this entry; 1 for the last
 };
 
 struct Background {
@@ -48,6 +57,8 @@ struct RenderSettings {
   uint64_t seed;
   uint32_t width, height;
   uint32_t effects;  // EffectBit mask; kEffectAll unless a benchmark says otherwise
+  uint32_t nee;      // path: next-event estimation with MIS (1) or the plain estimator (0)
+  uint32_t rr_depth; // path: Russian roulette from this many bounces on
 };
 
 struct SceneView {
@@ -63,6 +74,9 @@ struct SceneView {
   const Material* materials;
   const PointLight* lights;
   uint32_t light_count;
+  const LightEntry* light_table;  // path integrator: every light with its selection probability
+  uint32_t light_entry_count;
+  const uint32_t* light_of_prim;  // per primitive: its light_table entry, or kNoHit
   Background background;
   Vec3 ambient;
   Camera camera;

@@ -2,6 +2,7 @@
 // explicit fixed-size stack of weighted rays replaces recursion. How each material kind
 // maps onto the model is documented in docs/materials.md and coded in whitted_response().
 #pragma once
+#include "light_sources.h"
 #include "optics.h"
 #include "ray_offset.h"
 #include "surface.h"
@@ -50,29 +51,14 @@ TRACER_HD WhittedResponse whitted_response(const Material& m) {
       w.kt = Vec3{1.0f, 1.0f, 1.0f} * m.transparency;
       w.ior = m.ior;
       break;
-    case MaterialKind::Emissive:
+    case MaterialKind::Emissive:  // an emitter, Lambertian with its albedo (0 unless given)
+      w.ka = m.albedo;
+      w.kd = m.albedo;
       w.emission = m.radiance;
       w.two_sided = m.two_sided != 0;
       break;
   }
   return w;
-}
-
-TRACER_HD Vec3 background_radiance(const Background& bg, Vec3 dir) {
-  switch (bg.kind) {
-    case BackgroundKind::Gradient: {
-      const float t = max_of(dir.y, 0.0f);  // horizon at y <= 0, zenith straight up
-      return bg.horizon * (1.0f - t) + bg.radiance * t;
-    }
-    case BackgroundKind::Constant: break;
-  }
-  return bg.radiance;
-}
-
-// Falloff of a point light: physical 1/d^2, or min(1/(kc + kl d + kq d^2), 1).
-TRACER_HD float light_falloff(const PointLight& light, float d, float d2) {
-  if (!light.has_attenuation) return 1.0f / d2;
-  return min_of(1.0f / (light.kc + light.kl * d + light.kq * d2), 1.0f);
 }
 
 // Ambient plus, per point light, diffuse kd I cos and Blinn-Phong specular
@@ -136,9 +122,7 @@ TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, R
       float cos_t;
       if (refract(task.ray.dir, n, n_in / n_out, refracted, cos_t)) {
         const float cos_i = -dot(task.ray.dir, n);
-        const float f = w.fresnel == FresnelKind::Exact
-                            ? fresnel_exact(cos_i, cos_t, n_in, n_out)
-                            : fresnel_schlick(n_in <= n_out ? cos_i : cos_t, n_in, n_out);
+        const float f = dielectric_reflectance(w.fresnel, cos_i, cos_t, n_in, n_out);
         kr += w.kt * f;
         const Vec3 weight = task.weight * w.kt * (1.0f - f);
         if (max_component(weight) > 0.0f) {
