@@ -12,6 +12,7 @@ packages=(
   libgtest-dev                            # the test suite
   chromium                                # opens the golden report headless in a test
   git                                     # golden update's check for uncommitted edits
+  fonts-dejavu-core                       # the font of the bench converge plot
 )
 missing=()
 for p in "${packages[@]}"; do

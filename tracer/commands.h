@@ -47,7 +47,21 @@ struct MergeCommand {
   std::string output;
 };
 
+struct BenchConvergeCommand {
+  std::string scene, ref, csv, plot, spp = "1,4,16,64,256", nee = "scene";
+  uint32_t ref_spp = 0, width = 0, height = 0;
+  int threads = 0;
+};
+
+struct BenchTradeCommand {
+  std::string scene, ref;
+  uint32_t spp = 64, ref_spp = 0, width = 0, height = 0;
+  int threads = 0;
+};
+
 int run_render(const RenderCommand& cmd);
+int run_bench_converge(const BenchConvergeCommand& cmd);
+int run_bench_trade(const BenchTradeCommand& cmd);
 int run_merge(const MergeCommand& cmd);
 int run_bench_device(const BenchDeviceCommand& cmd);
 int run_info(const std::string& scene_path);

@@ -6,6 +6,17 @@
 
 #include "commands.h"
 
+namespace {
+
+// The options every speed/accuracy benchmark takes.
+void add_bench_size_options(CLI::App* app, uint32_t& width, uint32_t& height, int& threads) {
+  app->add_option("--width", width, "image width override");
+  app->add_option("--height", height, "image height override");
+  app->add_option("--threads", threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace tracer;
   CLI::App app{"tracer: a deterministic ray tracer"};
@@ -84,6 +95,24 @@ int main(int argc, char** argv) {
   bd->add_option("--scenes", bench_device.scenes, "scene directory: cornell-box.json and the mesh scenes (default scenes)");
   bd->add_option("--threads", bench_device.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
 
+  BenchConvergeCommand converge;
+  CLI::App* bc = b->add_subcommand("converge", "RMSE and relMSE against time as spp grows; CSV and a log-log plot");
+  bc->add_option("scene", converge.scene, "scene file (JSON)")->required();
+  bc->add_option("--spp", converge.spp, "comma-separated sample counts (default 1,4,16,64,256)");
+  bc->add_option("--nee", converge.nee, "scene (default), on, off, or both: NEE+MIS and the plain estimator side by side");
+  bc->add_option("--ref", converge.ref, "reference image (EXR); default: render one at --ref-spp");
+  bc->add_option("--ref-spp", converge.ref_spp, "reference samples per pixel (default 8 x the largest --spp)");
+  bc->add_option("--csv", converge.csv, "table output (default SCENE-converge.csv)");
+  bc->add_option("--plot", converge.plot, "log-log plot of RMSE against seconds (default SCENE-converge.png)");
+  add_bench_size_options(bc, converge.width, converge.height, converge.threads);
+  BenchTradeCommand trade;
+  CLI::App* bt = b->add_subcommand("trade", "time and error of each knob, at a fixed sample budget and at equal time");
+  bt->add_option("scene", trade.scene, "scene file (JSON)")->required();
+  bt->add_option("--spp", trade.spp, "the fixed sample budget (default 64)");
+  bt->add_option("--ref", trade.ref, "reference image (EXR); default: render one at --ref-spp");
+  bt->add_option("--ref-spp", trade.ref_spp, "reference samples per pixel (default 16 x --spp)");
+  add_bench_size_options(bt, trade.width, trade.height, trade.threads);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -99,6 +128,8 @@ int main(int argc, char** argv) {
     if (*gr) return run_golden_report(report);
     if (*gl) return run_golden_list(list_root);
     if (*bd) return run_bench_device(bench_device);
+    if (*bc) return run_bench_converge(converge);
+    if (*bt) return run_bench_trade(trade);
     return run_compare(compare);
   } catch (const std::exception& e) {  // InputError, DeviceUnavailable, CUDA errors, I/O
     std::fprintf(stderr, "error: %s\n", e.what());

@@ -40,6 +40,7 @@ struct RenderOverrides {
   std::optional<uint32_t> effects;  // EffectBit mask (`--effects`); all effects when unset
   std::optional<bool> nee;          // path: next-event estimation (`--nee on|off`)
   std::optional<uint32_t> rr_depth; // path: Russian roulette depth (`--rr-depth`)
+  std::optional<FresnelKind> fresnel;  // every dielectric's Fresnel model (`bench trade`)
   std::optional<uint64_t> seed;
   std::optional<std::string> integrator, sampler, accel;
 };

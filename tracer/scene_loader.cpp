@@ -494,6 +494,9 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
     if (p.shading >= 0 && scene.triangle_shading[p.shading].has_normals) scene.features |= kFeatureShadingNormals;
   }
   if (!scene.lights.empty()) scene.features |= kFeaturePointLight;
+  if (overrides.fresnel)
+    for (Material& m : scene.materials)
+      if (m.kind == MaterialKind::Dielectric) m.fresnel = *overrides.fresnel;
   build_light_table(scene);
   const auto build_start = std::chrono::steady_clock::now();
   build_acceleration(scene);

@@ -1,0 +1,51 @@
+// The speed/accuracy benchmarks produce what they promise: a converge table with its CSV
+// and plot, a trade table with a row per knob setting, and clear errors for bad options.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "image_io.h"
+#include "test_util.h"
+
+namespace tracer {
+namespace {
+
+TEST(Bench, ConvergeWritesTableCsvAndPlot) {
+  const auto dir = test::temp_dir("bench-converge");
+  const std::string csv = (dir / "c.csv").string(), plot = (dir / "c.png").string();
+  std::string output;
+  ASSERT_EQ(test::run_tracer("bench converge " + test::source_path("scenes/cornell-box-path.json") +
+                                 " --width 16 --height 12 --spp 1,4 --ref-spp 16 --nee both --threads 1 --csv " + csv +
+                                 " --plot " + plot, &output), 0) << output;
+  EXPECT_NE(output.find("NEE+MIS reaches the plain estimator's RMSE"), std::string::npos) << output;
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "series,spp,seconds,rmse,rel_mse");
+  int rows = 0;
+  while (std::getline(in, line)) {
+    ++rows;
+    EXPECT_TRUE(line.rfind("NEE+MIS,", 0) == 0 || line.rfind("plain,", 0) == 0) << line;
+  }
+  EXPECT_EQ(rows, 4);
+  const Image png = read_image(plot);
+  EXPECT_EQ(png.width, 800u);
+  EXPECT_EQ(png.height, 560u);
+  EXPECT_EQ(test::run_tracer("bench converge " + test::source_path("scenes/cornell-box-path.json") + " --spp 1,x", &output), 2);
+  EXPECT_NE(output.find("--spp 1,x: expected a comma-separated list"), std::string::npos) << output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Bench, TradeHasARowPerKnobSetting) {
+  std::string output;
+  ASSERT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/cornell-box-path.json") +
+                                 " --width 12 --height 8 --spp 4 --ref-spp 8 --threads 1", &output), 0) << output;
+  for (const char* row : {"nee        off", "sampler    stratified", "fresnel    exact", "rr_depth   off", "max_depth  16"})
+    EXPECT_NE(output.find(row), std::string::npos) << row << " in " << output;
+  EXPECT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/features/shadows.json"), &output), 2);
+  EXPECT_NE(output.find("measures the path integrator"), std::string::npos) << output;
+}
+
+}  // namespace
+}  // namespace tracer

@@ -1,0 +1,76 @@
+#include "bench_common.h"
+
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+#include "image_io.h"
+#include "input_error.h"
+#include "render_cpu.h"
+#include "scene_loader.h"
+
+namespace tracer {
+
+constexpr uint64_t kReferenceSeedOffset = 0x9E3779B97F4A7C15ull;  // keeps the reference's samples independent
+
+TimedRender timed_render(const Scene& scene, int threads) {
+  TimedRender r;
+  RenderStats stats;
+  const auto start = std::chrono::steady_clock::now();
+  r.image = render_cpu(scene, threads, stats);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.rays = stats.rays.camera + stats.rays.secondary + stats.rays.shadow;
+  return r;
+}
+
+ImageError image_error(const Image& image, const Image& reference) {
+  ImageError e;
+  for (size_t i = 0; i < image.rgb.size(); ++i) {
+    const double d = static_cast<double>(image.rgb[i]) - reference.rgb[i];
+    e.rmse += d * d;
+    e.rel_mse += d * d / (static_cast<double>(reference.rgb[i]) * reference.rgb[i] + 0.01);
+  }
+  const double n = static_cast<double>(image.rgb.size());
+  e.rmse = std::sqrt(e.rmse / n);
+  e.rel_mse /= n;
+  return e;
+}
+
+Image reference_image(const std::string& scene_path, RenderOverrides overrides, const std::string& ref_file,
+                      uint32_t ref_spp, int threads) {
+  const Scene probe = load_scene(scene_path, overrides);
+  if (!ref_file.empty()) {
+    Image ref = read_image(ref_file);
+    if (ref.width != probe.settings.width || ref.height != probe.settings.height)
+      throw InputError(ref_file + ": the reference is " + std::to_string(ref.width) + "x" + std::to_string(ref.height) +
+                       ", the renders " + std::to_string(probe.settings.width) + "x" + std::to_string(probe.settings.height));
+    std::printf("reference: %s\n", ref_file.c_str());
+    return ref;
+  }
+  overrides.spp = ref_spp;
+  overrides.seed = probe.settings.seed + kReferenceSeedOffset;
+  if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) overrides.sampler = "stochastic";
+  const TimedRender r = timed_render(load_scene(scene_path, overrides), threads);
+  std::printf("reference: %u spp, %.2f s (give --ref FILE to reuse one)\n", ref_spp, r.seconds);
+  return r.image;
+}
+
+std::vector<uint32_t> parse_spp_list(const std::string& option, const std::string& text) {
+  std::vector<uint32_t> out;
+  std::stringstream items(text);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    try {
+      size_t used = 0;
+      const unsigned long v = std::stoul(item, &used);
+      if (used != item.size() || v == 0 || v > 0xffffffffu || item[0] == '-') throw std::invalid_argument("");
+      out.push_back(static_cast<uint32_t>(v));
+    } catch (const std::exception&) {
+      throw InputError(option + " " + text + ": expected a comma-separated list of positive sample counts");
+    }
+  }
+  if (out.empty()) throw InputError(option + ": expected at least one sample count");
+  return out;
+}
+
+}  // namespace tracer

@@ -1,0 +1,33 @@
+// What the speed/accuracy benchmarks share: a timed render and its error against a
+// reference image. relMSE is the mean of (x - r)^2 / (r^2 + 0.01) over pixels and channels
+// (Rousselle et al. 2011), which weighs dark and bright regions alike.
+#pragma once
+#include <string>
+
+#include "image.h"
+#include "scene.h"
+
+namespace tracer {
+
+struct TimedRender {
+  Image image;
+  double seconds = 0;  // the render alone, wall clock, all threads
+  uint64_t rays = 0;
+};
+
+struct ImageError {
+  double rmse = 0, rel_mse = 0;
+};
+
+TimedRender timed_render(const Scene& scene, int threads);
+ImageError image_error(const Image& image, const Image& reference);
+
+// The reference: `ref_file` when given (it must match the size), else the scene rendered
+// at ref_spp samples with a seed no measured render uses. Prints what it used.
+Image reference_image(const std::string& scene_path, RenderOverrides overrides, const std::string& ref_file,
+                      uint32_t ref_spp, int threads);
+
+// "1,4,16" to numbers; InputError naming the option.
+std::vector<uint32_t> parse_spp_list(const std::string& option, const std::string& text);
+
+}  // namespace tracer
