@@ -1,0 +1,257 @@
+// Chi-square goodness-of-fit tests of every sampling routine of the path integrator: N
+// samples are binned, each bin's expected count comes from the routine's density integrated
+// in closed form over the bin, bins expecting fewer than 5 samples are pooled, and the test
+// fails when the p-value of the chi-square statistic is below a significance of 1e-3. The
+// inputs are a fixed stream, so a result is repeatable. The light samplers' densities are
+// also checked against the light's solid angle: E[1 / pdf] over their samples.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "kernel/bsdf.h"
+#include "kernel/light_sampling.h"
+#include "test_util.h"
+
+namespace tracer {
+namespace {
+
+constexpr double kSignificance = 1e-3;
+constexpr int kSamples = 400000;
+
+struct Stream {  // splitmix64 to uniform floats in [0, 1)
+  uint64_t state;
+  float next() {
+    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return static_cast<float>((z ^ (z >> 31)) >> 40) * 0x1p-24f;
+  }
+};
+
+// Regularised upper incomplete gamma Q(a, x): series below a + 1, continued fraction above.
+double gamma_q(double a, double x) {
+  if (x <= 0) return 1.0;
+  const double log_prefix = a * std::log(x) - x - std::lgamma(a);
+  if (x < a + 1) {
+    double term = 1.0 / a, sum = term;
+    for (int n = 1; n < 10000 && term > sum * 1e-15; ++n) sum += term *= x / (a + n);
+    return 1.0 - sum * std::exp(log_prefix);
+  }
+  double b = x + 1 - a, c = 1e300, d = 1 / b, h = d;  // modified Lentz
+  for (int i = 1; i < 10000; ++i) {
+    const double an = -i * (i - a);
+    b += 2;
+    d = an * d + b;
+    c = b + an / c;
+    d = 1 / d;
+    const double delta = d * c;
+    h *= delta;
+    if (std::abs(delta - 1) < 1e-15) break;
+  }
+  return std::exp(log_prefix) * h;
+}
+
+// Pools bins expecting fewer than 5 samples, then returns the chi-square p-value.
+double chi2_p_value(const std::vector<double>& observed, const std::vector<double>& expected) {
+  double chi2 = 0, pooled_o = 0, pooled_e = 0;
+  int cells = 0;
+  for (size_t i = 0; i < observed.size(); ++i) {
+    if (expected[i] < 5) {
+      pooled_o += observed[i], pooled_e += expected[i];
+      continue;
+    }
+    chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
+    ++cells;
+  }
+  if (pooled_e > 0) chi2 += (pooled_o - pooled_e) * (pooled_o - pooled_e) / std::max(pooled_e, 1e-12), ++cells;
+  return gamma_q((cells - 1) / 2.0, chi2 / 2.0);
+}
+
+// Directions binned by (cos theta, phi) about `axis`; `cdf_cos(c)` is the probability that
+// cos theta < c. Returns the p-value.
+template <class Sample, class CdfCos>
+double direction_test(Vec3 axis, Sample sample, CdfCos cdf_cos, double cos_lo, int cos_bins = 16, int phi_bins = 24) {
+  const Frame f = frame_around(axis);
+  std::vector<double> observed(cos_bins * phi_bins, 0.0), expected(cos_bins * phi_bins, 0.0);
+  Stream s{42};
+  for (int i = 0; i < kSamples; ++i) {
+    const Vec3 d = sample(s.next(), s.next(), s.next());
+    const double c = dot(d, f.n), phi = std::atan2(dot(d, f.b), dot(d, f.t)) + M_PI;
+    const int ci = std::min(cos_bins - 1, std::max(0, int((c - cos_lo) / (1 - cos_lo) * cos_bins)));
+    const int pi = std::min(phi_bins - 1, int(phi / (2 * M_PI) * phi_bins));
+    observed[ci * phi_bins + pi] += 1;
+  }
+  for (int ci = 0; ci < cos_bins; ++ci) {
+    const double c0 = cos_lo + (1 - cos_lo) * ci / cos_bins, c1 = cos_lo + (1 - cos_lo) * (ci + 1) / cos_bins;
+    for (int pi = 0; pi < phi_bins; ++pi) expected[ci * phi_bins + pi] = kSamples * (cdf_cos(c1) - cdf_cos(c0)) / phi_bins;
+  }
+  return chi2_p_value(observed, expected);
+}
+
+Material material(MaterialKind kind) {
+  Material m{};
+  m.kind = kind;
+  m.albedo = {0.8f, 0.8f, 0.8f};
+  m.ior = 1.5f;
+  m.tint = {1, 1, 1};
+  return m;
+}
+
+TEST(SamplingChi2, CosineHemisphere) {
+  const Vec3 n = normalize(Vec3{0.3f, 0.5f, -0.8f});
+  const Material m = material(MaterialKind::Lambert);
+  const double p = direction_test(n, [&](float a, float b, float c) {
+    BsdfSample s;
+    EXPECT_TRUE(sample_bsdf(m, n, n, true, a, b, c, s));
+    EXPECT_NEAR(s.pdf, dot(s.wi, n) / kPi, 1e-5);
+    return s.wi;
+  }, [](double c) { return c * c; }, 0.0);  // P(cos < c) = c^2 for density cos / pi
+  EXPECT_GT(p, kSignificance);
+}
+
+TEST(SamplingChi2, MetalLobeAtNormalIncidence) {
+  Material m = material(MaterialKind::Metal);
+  m.roughness = 0.4f;
+  const float e = metal_exponent(m.roughness);
+  const Vec3 n = {0, 1, 0};
+  const double p = direction_test(n, [&](float a, float b, float c) {
+    BsdfSample s;
+    EXPECT_TRUE(sample_bsdf(m, n, n, true, a, b, c, s));
+    EXPECT_NEAR(s.pdf, pdf_bsdf(m, n, s.wi, n), 1e-4 * s.pdf);
+    return s.wi;
+  }, [&](double c) { return std::pow(c, e + 1.0); }, 0.0);  // density (e+1)/(2 pi) cos^e
+  EXPECT_GT(p, kSignificance);
+}
+
+TEST(SamplingChi2, PhongLobes) {
+  Material m = material(MaterialKind::Phong);
+  m.albedo = {0.3f, 0.3f, 0.3f};
+  m.specular = {0.5f, 0.5f, 0.5f};
+  m.shininess = 20.0f;
+  const Vec3 n = {0, 0, 1};
+  const double pd = phong_diffuse_probability(m);
+  const double p = direction_test(n, [&](float a, float b, float c) {
+    BsdfSample s;
+    EXPECT_TRUE(sample_bsdf(m, n, n, true, a, b, c, s));
+    return s.wi;
+  }, [&](double c) { return pd * c * c + (1 - pd) * std::pow(c, m.shininess + 1.0); }, 0.0);
+  EXPECT_GT(p, kSignificance);
+}
+
+TEST(SamplingChi2, DielectricChoosesReflectionWithFresnelProbability) {
+  for (FresnelKind model : {FresnelKind::Schlick, FresnelKind::Exact}) {
+    Material m = material(MaterialKind::Dielectric);
+    m.fresnel = model;
+    const Vec3 n = {0, 0, 1}, wo = normalize(Vec3{0.8f, 0, 0.3f});
+    Vec3 refracted;
+    float cos_t;
+    ASSERT_TRUE(refract(-wo, n, 1.0f / 1.5f, refracted, cos_t));
+    const double f = dielectric_reflectance(model, dot(wo, n), cos_t, 1.0f, 1.5f);
+    Stream s{7};
+    double reflected = 0;
+    for (int i = 0; i < kSamples; ++i) {
+      BsdfSample b;
+      ASSERT_TRUE(sample_bsdf(m, wo, n, true, s.next(), s.next(), s.next(), b));
+      reflected += dot(b.wi, n) > 0;
+    }
+    const double p = chi2_p_value({reflected, kSamples - reflected}, {kSamples * f, kSamples * (1 - f)});
+    EXPECT_GT(p, kSignificance) << "F " << f << ", reflected " << reflected / kSamples;
+  }
+}
+
+// One emitter in a scene, sampled from `from`.
+struct LightFixture {
+  Scene scene;
+  SceneView view;
+  explicit LightFixture(const std::string& shape)
+      : scene(test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
+          "film": {"width": 4, "height": 4}, "render": {"integrator": "path"},
+          "materials": {"lamp": {"type": "emissive", "radiance": [1, 1, 1], "two_sided": true}},
+          "shapes": [)" + shape + "]}")),
+        view(scene.view()) {}
+};
+
+// E[1 / pdf] over light samples is the solid angle the light subtends.
+template <class Check>
+double mean_inverse_pdf(const LightFixture& fx, Vec3 from, Check check) {
+  Stream s{9};
+  double sum = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    const LightSample ls = sample_light(fx.view, 0, from, s.next(), s.next());
+    EXPECT_TRUE(ls.valid);
+    check(ls);
+    sum += 1.0 / ls.pdf;
+  }
+  return sum / kSamples;
+}
+
+TEST(SamplingChi2, SphereLightIsUniformInItsCone) {
+  const LightFixture fx(R"({"type": "sphere", "center": [0, 0, 0], "radius": 0.5, "material": "lamp"})");
+  const Vec3 from = {0.4f, 1.2f, 2.0f};
+  const double d2 = dot(from, from), cos_max = std::sqrt(1 - 0.25 / d2);
+  Stream s{3};
+  const double p = direction_test(-from / std::sqrt(float(d2)), [&](float a, float b, float) {
+    return sample_light(fx.view, 0, from, a, b).wi;
+  }, [&](double c) { return (c - cos_max) / (1 - cos_max); }, cos_max);
+  EXPECT_GT(p, kSignificance);
+  const double omega = mean_inverse_pdf(fx, from, [](const LightSample&) {});
+  EXPECT_NEAR(omega, 2 * M_PI * (1 - cos_max), 1e-3 * omega);
+}
+
+// Positions binned on the unit square of the shape's parameters; for a triangle the bins
+// are those of (b1, b2) with b1 + b2 <= 1, cut in half along the diagonal.
+TEST(SamplingChi2, QuadAndTriangleLightsAreUniformByArea) {
+  for (const bool triangle : {false, true}) {
+    const LightFixture fx(triangle ? R"({"type": "triangle", "vertices": [[-1, -1, 0], [1, -1, 0], [-1, 1, 0]], "material": "lamp"})"
+                                   : R"({"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "lamp"})");
+    const Vec3 from = {0.3f, -0.2f, 1.5f};
+    constexpr int kBins = 12;
+    std::vector<double> observed(kBins * kBins, 0.0), expected(kBins * kBins, 0.0);
+    Stream s{5};
+    double inverse_pdf = 0;
+    for (int i = 0; i < kSamples; ++i) {
+      const LightSample ls = sample_light(fx.view, 0, from, s.next(), s.next());
+      ASSERT_TRUE(ls.valid);
+      inverse_pdf += 1.0 / ls.pdf;
+      const Vec3 q = from + ls.wi * ls.distance;
+      const int bx = std::min(kBins - 1, std::max(0, int((q.x + 1) / 2 * kBins)));
+      const int by = std::min(kBins - 1, std::max(0, int((q.y + 1) / 2 * kBins)));
+      observed[by * kBins + bx] += 1;
+    }
+    for (int by = 0; by < kBins; ++by)
+      for (int bx = 0; bx < kBins; ++bx) {
+        const double area = !triangle ? 1.0 : bx + by + 1 < kBins ? 1.0 : bx + by + 1 == kBins ? 0.5 : 0.0;
+        expected[by * kBins + bx] = kSamples * area / (triangle ? kBins * kBins / 2.0 : kBins * kBins);
+      }
+    EXPECT_GT(chi2_p_value(observed, expected), kSignificance) << (triangle ? "triangle" : "quad");
+    // Solid angle of the shape from `from`, by fine numerical integration over its area.
+    double omega = 0;
+    constexpr int kGrid = 800;
+    for (int j = 0; j < kGrid; ++j)
+      for (int i = 0; i < kGrid; ++i) {
+        const double x = -1 + 2 * (i + 0.5) / kGrid, y = -1 + 2 * (j + 0.5) / kGrid;
+        if (triangle && (x + 1) + (y + 1) > 2) continue;
+        const double dx = x - from.x, dy = y - from.y, dz = -from.z, r2 = dx * dx + dy * dy + dz * dz;
+        omega += (4.0 / (kGrid * kGrid)) * std::abs(dz) / (r2 * std::sqrt(r2));
+      }
+    EXPECT_NEAR(inverse_pdf / kSamples, omega, 2e-3 * omega) << (triangle ? "triangle" : "quad");
+  }
+}
+
+TEST(SamplingChi2, GammaQKnownValues) {
+  EXPECT_NEAR(gamma_q(1.0, 2.0), std::exp(-2.0), 1e-12);           // Q(1, x) = e^-x
+  EXPECT_NEAR(gamma_q(0.5, 1.0), std::erfc(1.0), 1e-10);           // Q(1/2, x) = erfc(sqrt(x))
+  // Integer a: Q(n, x) = e^-x sum_{k<n} x^k / k!  (chi-square with 10 dof at 40).
+  EXPECT_NEAR(gamma_q(5.0, 20.0), std::exp(-20.0) * (1 + 20 + 200 + 8000.0 / 6 + 160000.0 / 24), 1e-15);
+}
+
+// The test has power: uniform hemisphere samples are not cosine-distributed.
+TEST(SamplingChi2, RejectsAWrongDensity) {
+  const double p = direction_test({0, 0, 1}, [](float a, float b, float) { return direction_from(a, b); },
+                                  [](double c) { return c * c; }, 0.0);
+  EXPECT_LT(p, 1e-12);
+}
+
+}  // namespace
+}  // namespace tracer
