@@ -41,7 +41,9 @@ INSTANTIATE_TEST_SUITE_P(
     Scenes, MergeSplits,
     testing::Values(Split{"scenes/features/thin-lens.json", "", {{0, 1}, {1, 5}, {5, 16}}},
                     Split{"scenes/cornell-box.json", "--width 96 --height 72 --sampler stochastic --spp 7", {{0, 3}, {3, 4}, {4, 7}}},
-                    Split{"scenes/features/refraction.json", "--sampler stratified --spp 9", {{0, 4}, {4, 9}}}));
+                    Split{"scenes/features/refraction.json", "--sampler stratified --spp 9", {{0, 4}, {4, 9}}},
+                    Split{"scenes/cornell-box-path.json", "--width 64 --height 48 --spp 12", {{0, 5}, {5, 6}, {6, 12}}},
+                    Split{"scenes/features/path-materials.json", "--width 48 --height 36 --spp 8 --nee off", {{0, 3}, {3, 8}}}));
 
 TEST(Merge, RefusesGapsOverlapsAndOtherRenders) {
   const auto dir = test::temp_dir("merge-bad");
