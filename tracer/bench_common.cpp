@@ -1,5 +1,6 @@
 #include "bench_common.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <sstream>
@@ -13,13 +14,18 @@ namespace tracer {
 
 constexpr uint64_t kReferenceSeedOffset = 0x9E3779B97F4A7C15ull;  // keeps the reference's samples independent
 
-TimedRender timed_render(const Scene& scene, int threads) {
+TimedRender timed_render(const Scene& scene, int threads, int repeats) {
   TimedRender r;
-  RenderStats stats;
-  const auto start = std::chrono::steady_clock::now();
-  r.image = render_cpu(scene, threads, stats);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.rays = stats.rays.camera + stats.rays.secondary + stats.rays.shadow;
+  std::vector<double> times;
+  for (int i = 0; i < repeats; ++i) {
+    RenderStats stats;
+    const auto start = std::chrono::steady_clock::now();
+    r.image = render_cpu(scene, threads, stats);
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    r.rays = stats.rays.camera + stats.rays.secondary + stats.rays.shadow;
+  }
+  std::sort(times.begin(), times.end());
+  r.seconds = times[times.size() / 2];
   return r;
 }
 

@@ -11,7 +11,7 @@ namespace tracer {
 
 struct TimedRender {
   Image image;
-  double seconds = 0;  // the render alone, wall clock, all threads
+  double seconds = 0;  // the render alone, wall clock, all threads; the median of the repeats
   uint64_t rays = 0;
 };
 
@@ -19,7 +19,8 @@ struct ImageError {
   double rmse = 0, rel_mse = 0;
 };
 
-TimedRender timed_render(const Scene& scene, int threads);
+// Renders `repeats` times (the image is the same each time) and keeps the median time.
+TimedRender timed_render(const Scene& scene, int threads, int repeats = 1);
 ImageError image_error(const Image& image, const Image& reference);
 
 // The reference: `ref_file` when given (it must match the size), else the scene rendered

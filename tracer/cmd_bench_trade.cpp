@@ -14,6 +14,8 @@
 namespace tracer {
 namespace {
 
+constexpr int kRepeats = 3;  // each timing is the median of three renders
+
 struct Knob {
   const char* name;
   std::string setting;
@@ -68,8 +70,8 @@ int run_bench_trade(const BenchTradeCommand& cmd) {
   if (probe.settings.integrator != IntegratorKind::Path)
     throw InputError(cmd.scene + ": bench trade measures the path integrator's knobs; give a scene with \"integrator\": \"path\"");
   if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) base.sampler = "stochastic";
-  std::printf("tracer bench trade %s: %ux%u, %u spp budget\n", cmd.scene.c_str(), probe.settings.width,
-              probe.settings.height, cmd.spp);
+  std::printf("tracer bench trade %s: %ux%u, %u spp budget; seconds are the median of %d renders\n",
+              cmd.scene.c_str(), probe.settings.width, probe.settings.height, cmd.spp, kRepeats);
   const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 16 * cmd.spp, cmd.threads);
 
   std::printf("%-10s %-15s | %6s %9s %11s %11s | %9s %9s %11s\n", "knob", "setting", "spp", "seconds", "RMSE", "relMSE",
@@ -78,12 +80,12 @@ int run_bench_trade(const BenchTradeCommand& cmd) {
   for (const Knob& knob : knobs()) {
     RenderOverrides ov = combine(base, knob.overrides);
     ov.spp = knob.square_spp ? nearest_square(cmd.spp) : cmd.spp;
-    const TimedRender fixed = timed_render(load_scene(cmd.scene, ov), cmd.threads);
+    const TimedRender fixed = timed_render(load_scene(cmd.scene, ov), cmd.threads, kRepeats);
     const ImageError fixed_error = image_error(fixed.image, ref);
     if (baseline_seconds == 0) baseline_seconds = fixed.seconds;
     const double scaled = static_cast<double>(*ov.spp) * baseline_seconds / fixed.seconds;
     ov.spp = knob.square_spp ? nearest_square(scaled) : std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(scaled)));
-    const TimedRender equal = timed_render(load_scene(cmd.scene, ov), cmd.threads);
+    const TimedRender equal = timed_render(load_scene(cmd.scene, ov), cmd.threads, kRepeats);
     const ImageError equal_error = image_error(equal.image, ref);
     std::printf("%-10s %-15s | %6u %9.3f %11.5g %11.5g | %9u %9.3f %11.5g\n", knob.name, knob.setting.c_str(),
                 knob.square_spp ? nearest_square(cmd.spp) : cmd.spp, fixed.seconds, fixed_error.rmse, fixed_error.rel_mse,
