@@ -14,6 +14,8 @@ namespace {
 TEST(Bench, ConvergeWritesTableCsvAndPlot) {
   const auto dir = test::temp_dir("bench-converge");
   const std::string csv = (dir / "c.csv").string(), plot = (dir / "c.png").string();
+  const auto cwd = std::filesystem::current_path();
+  std::filesystem::current_path(dir);  // the reference is saved in the working directory
   std::string output;
   ASSERT_EQ(test::run_tracer("bench converge " + test::source_path("scenes/cornell-box-path.json") +
                                  " --width 16 --height 12 --spp 1,4 --ref-spp 16 --nee both --threads 1 --csv " + csv +
@@ -22,13 +24,15 @@ TEST(Bench, ConvergeWritesTableCsvAndPlot) {
   std::ifstream in(csv);
   std::string line;
   std::getline(in, line);
-  EXPECT_EQ(line, "series,spp,seconds,rmse,rel_mse");
+  EXPECT_EQ(line, "series,spp,seconds,rmse,display_rmse,rel_mse");
   int rows = 0;
   while (std::getline(in, line)) {
     ++rows;
     EXPECT_TRUE(line.rfind("NEE+MIS,", 0) == 0 || line.rfind("plain,", 0) == 0) << line;
   }
   EXPECT_EQ(rows, 4);
+  EXPECT_TRUE(std::filesystem::exists(dir / "cornell-box-path-converge-ref.exr"));
+  std::filesystem::current_path(cwd);
   const Image png = read_image(plot);
   EXPECT_EQ(png.width, 800u);
   EXPECT_EQ(png.height, 560u);
@@ -38,9 +42,14 @@ TEST(Bench, ConvergeWritesTableCsvAndPlot) {
 }
 
 TEST(Bench, TradeHasARowPerKnobSetting) {
+  const auto dir = test::temp_dir("bench-trade");
+  const auto cwd = std::filesystem::current_path();
+  std::filesystem::current_path(dir);
   std::string output;
   ASSERT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/cornell-box-path.json") +
                                  " --width 12 --height 8 --spp 4 --ref-spp 8 --threads 1", &output), 0) << output;
+  std::filesystem::current_path(cwd);
+  std::filesystem::remove_all(dir);
   for (const char* row : {"nee        off", "sampler    stratified", "fresnel    exact", "rr_depth   off", "max_depth  16"})
     EXPECT_NE(output.find(row), std::string::npos) << row << " in " << output;
   EXPECT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/features/shadows.json"), &output), 2);

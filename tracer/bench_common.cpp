@@ -33,17 +33,21 @@ ImageError image_error(const Image& image, const Image& reference) {
   ImageError e;
   for (size_t i = 0; i < image.rgb.size(); ++i) {
     const double d = static_cast<double>(image.rgb[i]) - reference.rgb[i];
+    const double shown = std::clamp(static_cast<double>(image.rgb[i]), 0.0, 1.0) -
+                         std::clamp(static_cast<double>(reference.rgb[i]), 0.0, 1.0);
     e.rmse += d * d;
+    e.display_rmse += shown * shown;
     e.rel_mse += d * d / (static_cast<double>(reference.rgb[i]) * reference.rgb[i] + 0.01);
   }
   const double n = static_cast<double>(image.rgb.size());
   e.rmse = std::sqrt(e.rmse / n);
+  e.display_rmse = std::sqrt(e.display_rmse / n);
   e.rel_mse /= n;
   return e;
 }
 
 Image reference_image(const std::string& scene_path, RenderOverrides overrides, const std::string& ref_file,
-                      uint32_t ref_spp, int threads) {
+                      uint32_t ref_spp, int threads, const std::string& save_as) {
   const Scene probe = load_scene(scene_path, overrides);
   if (!ref_file.empty()) {
     Image ref = read_image(ref_file);
@@ -57,7 +61,9 @@ Image reference_image(const std::string& scene_path, RenderOverrides overrides, 
   overrides.seed = probe.settings.seed + kReferenceSeedOffset;
   if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) overrides.sampler = "stochastic";
   const TimedRender r = timed_render(load_scene(scene_path, overrides), threads);
-  std::printf("reference: %u spp, %.2f s (give --ref FILE to reuse one)\n", ref_spp, r.seconds);
+  write_image(r.image, save_as);
+  std::printf("reference: %u spp, %.2f s, saved as %s (give --ref %s to reuse it)\n", ref_spp, r.seconds,
+              save_as.c_str(), save_as.c_str());
   return r.image;
 }
 

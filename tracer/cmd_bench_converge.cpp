@@ -21,20 +21,22 @@ struct Point {
   ImageError error;
 };
 
-// Seconds the series needs for `rmse`, interpolated in log-log between its points, or
-// extrapolated from its last point along the 1/sqrt(time) law; `extrapolated` says which.
-double seconds_to_reach(const std::vector<Point>& series, double rmse, bool& extrapolated) {
+// Seconds the series needs to bring `metric` down to `target`, interpolated in log-log
+// between its points, or extrapolated from its last point along the error ~ 1/sqrt(time)
+// law (`power` 1 for an RMSE, 2 for a mean squared error); `extrapolated` says which.
+double seconds_to_reach(const std::vector<Point>& series, double ImageError::*metric, double power, double target,
+                        bool& extrapolated) {
   extrapolated = false;
   for (size_t i = 1; i < series.size(); ++i) {
-    const Point &a = series[i - 1], &b = series[i];
-    if (b.error.rmse <= rmse && a.error.rmse >= rmse) {
-      const double f = (std::log(rmse) - std::log(a.error.rmse)) / (std::log(b.error.rmse) - std::log(a.error.rmse));
-      return std::exp(std::log(a.seconds) + f * (std::log(b.seconds) - std::log(a.seconds)));
+    const double a = series[i - 1].error.*metric, b = series[i].error.*metric;
+    if (b <= target && a >= target) {
+      const double f = (std::log(target) - std::log(a)) / (std::log(b) - std::log(a));
+      return std::exp(std::log(series[i - 1].seconds) + f * (std::log(series[i].seconds) - std::log(series[i - 1].seconds)));
     }
   }
   extrapolated = true;
   const Point& last = series.back();
-  return last.seconds * (last.error.rmse / rmse) * (last.error.rmse / rmse);
+  return last.seconds * std::pow(last.error.*metric / target, 2.0 / power);
 }
 
 }  // namespace
@@ -58,7 +60,8 @@ int run_bench_converge(const BenchConvergeCommand& cmd) {
     base.sampler = "stochastic";  // the center sampler takes one sample only
   std::printf("tracer bench converge %s: %ux%u, %s\n", cmd.scene.c_str(), probe.settings.width, probe.settings.height,
               cmd.nee == "both" ? "NEE+MIS and the plain estimator" : "the scene's estimator");
-  const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 8 * max_spp, cmd.threads);
+  const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 8 * max_spp, cmd.threads,
+                                    stem + "-converge-ref.exr");
 
   std::vector<std::pair<std::string, bool>> series_setups;
   if (cmd.nee == "both") series_setups = {{"NEE+MIS", true}, {"plain", false}};
@@ -66,8 +69,8 @@ int run_bench_converge(const BenchConvergeCommand& cmd) {
 
   std::ofstream out(csv);
   if (!out) throw InputError(csv + ": cannot write");
-  out << "series,spp,seconds,rmse,rel_mse\n";
-  std::printf("%-10s %8s %10s %12s %12s\n", "series", "spp", "seconds", "RMSE", "relMSE");
+  out << "series,spp,seconds,rmse,display_rmse,rel_mse\n";
+  std::printf("%-10s %8s %10s %12s %13s %12s\n", "series", "spp", "seconds", "RMSE", "display RMSE", "relMSE");
   std::vector<std::vector<Point>> results;
   std::vector<PlotSeries> lines;
   for (const auto& [label, nee] : series_setups) {
@@ -82,8 +85,8 @@ int run_bench_converge(const BenchConvergeCommand& cmd) {
       results.back().push_back({spp, r.seconds, e});
       line.x.push_back(r.seconds);
       line.y.push_back(e.rmse);
-      std::printf("%-10s %8u %10.3f %12.6g %12.6g\n", label.c_str(), spp, r.seconds, e.rmse, e.rel_mse);
-      out << label << "," << spp << "," << r.seconds << "," << e.rmse << "," << e.rel_mse << "\n";
+      std::printf("%-10s %8u %10.3f %12.6g %13.6g %12.6g\n", label.c_str(), spp, r.seconds, e.rmse, e.display_rmse, e.rel_mse);
+      out << label << "," << spp << "," << r.seconds << "," << e.rmse << "," << e.display_rmse << "," << e.rel_mse << "\n";
     }
     lines.push_back(line);
   }
@@ -92,11 +95,18 @@ int run_bench_converge(const BenchConvergeCommand& cmd) {
   write_loglog_plot(plot, {"RMSE against render time: " + stem, "seconds", "RMSE"}, lines);
   if (results.size() == 2) {
     const Point& plain = results[1].back();
-    bool extrapolated = false;
-    const double t = seconds_to_reach(results[0], plain.error.rmse, extrapolated);
-    std::printf("NEE+MIS reaches the plain estimator's RMSE at %u spp (%.6g, %.3f s) in %.3f s%s: %.1fx less time\n",
-                plain.spp, plain.error.rmse, plain.seconds, t, extrapolated ? " (extrapolated as 1/sqrt(time))" : "",
-                plain.seconds / t);
+    const struct {
+      const char* name;
+      double ImageError::*metric;
+      double power;
+    } metrics[] = {{"RMSE", &ImageError::rmse, 1}, {"display RMSE", &ImageError::display_rmse, 1}, {"relMSE", &ImageError::rel_mse, 2}};
+    for (const auto& m : metrics) {
+      bool extrapolated = false;
+      const double target = plain.error.*m.metric;
+      const double t = seconds_to_reach(results[0], m.metric, m.power, target, extrapolated);
+      std::printf("NEE+MIS reaches the plain estimator's %s at %u spp (%.6g, %.3f s) in %.3f s%s: %.1fx less time\n",
+                  m.name, plain.spp, target, plain.seconds, t, extrapolated ? " (extrapolated)" : "", plain.seconds / t);
+    }
   }
   std::printf("wrote %s and %s\n", std::filesystem::absolute(csv).string().c_str(),
               std::filesystem::absolute(plot).string().c_str());

@@ -5,6 +5,7 @@
 // so a knob that changes the expected image (max_depth, Fresnel) shows its bias too.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "bench_common.h"
 #include "commands.h"
@@ -72,7 +73,8 @@ int run_bench_trade(const BenchTradeCommand& cmd) {
   if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) base.sampler = "stochastic";
   std::printf("tracer bench trade %s: %ux%u, %u spp budget; seconds are the median of %d renders\n",
               cmd.scene.c_str(), probe.settings.width, probe.settings.height, cmd.spp, kRepeats);
-  const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 16 * cmd.spp, cmd.threads);
+  const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 16 * cmd.spp, cmd.threads,
+                                    std::filesystem::path(cmd.scene).stem().string() + "-trade-ref.exr");
 
   std::printf("%-10s %-15s | %6s %9s %11s %11s | %9s %9s %11s\n", "knob", "setting", "spp", "seconds", "RMSE", "relMSE",
               "equal-time spp", "seconds", "RMSE");
