@@ -17,7 +17,11 @@ class DeviceScene {
         materials_(scene.materials),
         lights_(scene.lights),
         light_table_(scene.light_table),
-        light_of_prim_(scene.light_of_prim) {
+        light_of_prim_(scene.light_of_prim),
+        kd_nodes_(scene.kd_nodes),
+        kd_prims_(scene.kd_prims),
+        grid_cell_start_(scene.grid_cell_start),
+        grid_prims_(scene.grid_prims) {
     view_ = scene.view();
     view_.primitives = primitives_.get();
     view_.triangle_shading = triangle_shading_.get();
@@ -28,6 +32,10 @@ class DeviceScene {
     view_.lights = lights_.get();
     view_.light_table = light_table_.get();
     view_.light_of_prim = light_of_prim_.get();
+    view_.kd_nodes = kd_nodes_.get();
+    view_.kd_prims = kd_prims_.get();
+    view_.grid_cell_start = grid_cell_start_.get();
+    view_.grid_prims = grid_prims_.get();
   }
 
   const SceneView& view() const { return view_; }
@@ -37,7 +45,9 @@ class DeviceScene {
     return s.primitives.size() * sizeof(Primitive) + s.triangle_shading.size() * sizeof(TriangleShading) +
            (s.bounded.size() + s.unbounded.size()) * sizeof(uint32_t) + s.bvh_nodes.size() * sizeof(BvhNode) +
            s.materials.size() * sizeof(Material) + s.lights.size() * sizeof(PointLight) +
-           s.light_table.size() * sizeof(LightEntry) + s.light_of_prim.size() * sizeof(uint32_t);
+           s.light_table.size() * sizeof(LightEntry) + s.light_of_prim.size() * sizeof(uint32_t) +
+           s.kd_nodes.size() * sizeof(KdNode) +
+           (s.kd_prims.size() + s.grid_cell_start.size() + s.grid_prims.size()) * sizeof(uint32_t);
   }
 
  private:
@@ -49,6 +59,8 @@ class DeviceScene {
   DeviceBuffer<PointLight> lights_;
   DeviceBuffer<LightEntry> light_table_;
   DeviceBuffer<uint32_t> light_of_prim_;
+  DeviceBuffer<KdNode> kd_nodes_;
+  DeviceBuffer<uint32_t> kd_prims_, grid_cell_start_, grid_prims_;
   SceneView view_{};
 };
 

@@ -190,7 +190,6 @@ TEST(SamplingChi2, SphereLightIsUniformInItsCone) {
   const LightFixture fx(R"({"type": "sphere", "center": [0, 0, 0], "radius": 0.5, "material": "lamp"})");
   const Vec3 from = {0.4f, 1.2f, 2.0f};
   const double d2 = dot(from, from), cos_max = std::sqrt(1 - 0.25 / d2);
-  Stream s{3};
   const double p = direction_test(-from / std::sqrt(float(d2)), [&](float a, float b, float) {
     return sample_light(fx.view, 0, from, a, b).wi;
   }, [&](double c) { return (c - cos_max) / (1 - cos_max); }, cos_max);

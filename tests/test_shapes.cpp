@@ -4,7 +4,8 @@
 
 #include <random>
 
-#include "bvh_builder.h"
+#include "acceleration.h"
+#include "bounds.h"
 #include "kernel/optics.h"
 #include "kernel/ray_offset.h"
 #include "kernel/surface.h"

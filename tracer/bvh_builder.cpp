@@ -9,12 +9,6 @@ constexpr int kBins = 16;
 constexpr uint32_t kMaxLeafSize = 4;
 constexpr int kMaxBuildDepth = 60;  // traversal stacks hold 64 entries
 
-struct BuildItem {
-  Bounds bounds;
-  Vec3 centroid;
-  uint32_t id;
-};
-
 class BvhBuilder {
  public:
   explicit BvhBuilder(std::vector<BuildItem>& items) : items_(items) {}
@@ -115,59 +109,9 @@ class BvhBuilder {
 
 }  // namespace
 
-float Bounds::surface_area() const {
-  if (!(lo.x <= hi.x)) return 0.0f;
-  const Vec3 d = hi - lo;
-  return 2.0f * (d.x * d.y + d.y * d.z + d.z * d.x);
-}
-
-Bounds primitive_bounds(const Primitive& p) {
-  Bounds b;
-  switch (p.kind) {
-    case ShapeKind::Sphere: {
-      const Vec3 r = {p.radius, p.radius, p.radius};
-      b.grow(p.a - r);
-      b.grow(p.a + r);
-      break;
-    }
-    case ShapeKind::Triangle:
-      b.grow(p.a);
-      b.grow(p.b);
-      b.grow(p.c);
-      break;
-    case ShapeKind::Quad:
-      b.grow(p.a);
-      b.grow(p.a + p.b);
-      b.grow(p.a + p.c);
-      b.grow(p.a + p.b + p.c);
-      break;
-    case ShapeKind::Plane: return b;  // unbounded: never in the BVH
-  }
-  // Corners such as a + b + c are rounded: pad by a few ulps of the coordinates so that a
-  // box always contains every point its primitive's intersection test can report.
-  const float m = max_of(max_component(max_of(b.lo, -b.lo)), max_component(max_of(b.hi, -b.hi)));
-  const float pad = m * 0x1p-20f + 0x1p-120f;
-  b.lo = b.lo - Vec3{pad, pad, pad};
-  b.hi = b.hi + Vec3{pad, pad, pad};
-  return b;
-}
-
-void build_acceleration(Scene& scene) {
-  std::vector<BuildItem> items;
-  scene.bounded.clear();
-  scene.unbounded.clear();
-  scene.bvh_nodes.clear();
-  for (uint32_t id = 0; id < scene.primitives.size(); ++id) {
-    const Primitive& p = scene.primitives[id];
-    if (p.kind == ShapeKind::Plane) {
-      scene.unbounded.push_back(id);
-      continue;
-    }
-    const Bounds b = primitive_bounds(p);
-    items.push_back({b, (b.lo + b.hi) * 0.5f, id});
-  }
-  if (!items.empty() && scene.settings.accel == AccelKind::Bvh) scene.bvh_nodes = BvhBuilder(items).build();
-  for (const BuildItem& it : items) scene.bounded.push_back(it.id);
+std::vector<BvhNode> build_sah_bvh(std::vector<BuildItem>& items) {
+  if (items.empty()) return {};
+  return BvhBuilder(items).build();
 }
 
 }  // namespace tracer

@@ -33,7 +33,8 @@ int main(int argc, char** argv) {
   r->add_option("--integrator", render.overrides.integrator, "whitted, path, normals, albedo or depth");
   r->add_option("--max-depth", render.overrides.max_depth, "maximum ray depth");
   r->add_option("--sampler", render.overrides.sampler, "center, grid, stochastic or stratified");
-  r->add_option("--accel", render.overrides.accel, "bvh or none");
+  r->add_option("--accel", render.overrides.accel, "bvh (default), kdtree, kdtree-median, grid, lbvh or none");
+  r->add_option("--grid-resolution", render.overrides.grid_resolution, "grid: cells along the longest axis (default: about 3 per primitive)");
   r->add_option("--threads", render.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
   r->add_option("--device", render.device, "cpu or cuda");
   r->add_option("--nee", render.nee, "path: next-event estimation with MIS, on (default) or off (the plain estimator)")

@@ -13,6 +13,15 @@ SceneView Scene::view() const {
   v.unbounded_count = static_cast<uint32_t>(unbounded.size());
   v.bvh_nodes = bvh_nodes.data();
   v.bvh_node_count = static_cast<uint32_t>(bvh_nodes.size());
+  v.kd_nodes = kd_nodes.data();
+  v.kd_node_count = static_cast<uint32_t>(kd_nodes.size());
+  v.kd_prims = kd_prims.data();
+  v.kd_lo = kd_lo;
+  v.kd_hi = kd_hi;
+  v.kd_pad = kd_pad;
+  v.grid = grid;
+  v.grid_cell_start = grid_cell_start.data();
+  v.grid_prims = grid_prims.data();
   v.materials = materials.data();
   v.lights = lights.data();
   v.light_count = static_cast<uint32_t>(lights.size());

@@ -16,7 +16,13 @@ struct Scene {
   std::vector<TriangleShading> triangle_shading;
   std::vector<uint32_t> bounded;    // BVH order after build_acceleration()
   std::vector<uint32_t> unbounded;
-  std::vector<BvhNode> bvh_nodes;
+  std::vector<BvhNode> bvh_nodes;   // bvh and lbvh
+  std::vector<KdNode> kd_nodes;     // kdtree and kdtree-median
+  std::vector<uint32_t> kd_prims;
+  Vec3 kd_lo{0, 0, 0}, kd_hi{0, 0, 0};
+  float kd_pad = 0.0f;
+  GridInfo grid{};
+  std::vector<uint32_t> grid_cell_start, grid_prims;
   std::vector<Material> materials;
   std::vector<std::string> material_names;
   std::vector<PointLight> lights;
@@ -41,6 +47,7 @@ struct RenderOverrides {
   std::optional<bool> nee;          // path: next-event estimation (`--nee on|off`)
   std::optional<uint32_t> rr_depth; // path: Russian roulette depth (`--rr-depth`)
   std::optional<FresnelKind> fresnel;  // every dielectric's Fresnel model (`bench trade`)
+  std::optional<uint32_t> grid_resolution;  // `--grid-resolution`
   std::optional<uint64_t> seed;
   std::optional<std::string> integrator, sampler, accel;
 };

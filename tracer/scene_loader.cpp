@@ -3,7 +3,7 @@
 #include <chrono>
 #include <filesystem>
 
-#include "bvh_builder.h"
+#include "acceleration.h"
 #include "camera_setup.h"
 #include "json_reader.h"
 #include "light_table.h"
@@ -313,8 +313,6 @@ IntegratorKind parse_integrator(const std::string& name, const std::string& wher
 }
 
 AccelKind parse_accel(const std::string& name, const std::string& where) {
-  if (name == "kdtree" || name == "kdtree-median" || name == "grid" || name == "lbvh")
-    throw InputError(where + ": not supported yet: accel \"" + name + "\"");
   return parse_kind<AccelKind>("accel", name, where);
 }
 
@@ -336,7 +334,7 @@ void read_render(const Json* value, const std::string& file, const RenderOverrid
   rs.seed = obj.find("seed") ? obj.unsigned_integer("seed") : 0;
   rs.nee = obj.boolean_or("nee", true) ? 1u : 0u;
   rs.rr_depth = read_count(obj, "rr_depth", 3);
-  if (obj.find("grid_resolution")) not_supported(obj, "grid_resolution", "the uniform grid accelerator");
+  rs.grid_resolution = read_count(obj, "grid_resolution", 0);
   obj.finish();
   rs.width = read_count(film, "width", 0);
   rs.height = read_count(film, "height", 0);
@@ -351,6 +349,10 @@ void read_render(const Json* value, const std::string& file, const RenderOverrid
   rs.effects = ov.effects.value_or(kEffectAll);
   if (ov.nee) rs.nee = *ov.nee ? 1u : 0u;
   if (ov.rr_depth) rs.rr_depth = *ov.rr_depth;
+  if (ov.grid_resolution) rs.grid_resolution = *ov.grid_resolution;
+  if (rs.grid_resolution > 1024)
+    throw InputError((ov.grid_resolution ? cli + " --grid-resolution" : file + ": render.grid_resolution") +
+                     ": must be at most 1024 cells along the longest axis");
   if (ov.sampler) sampler = *ov.sampler;
   if (ov.integrator) integrator = *ov.integrator;
   if (ov.accel) accel = *ov.accel;

@@ -12,7 +12,7 @@ const std::map<std::string, std::vector<std::string>>& accepted_scene_types() {
       {"background", {"constant", "gradient"}},
       {"integrator", {"whitted", "normals", "albedo", "depth", "path"}},
       {"sampler", {"center", "grid", "stochastic", "stratified"}},
-      {"accel", {"bvh", "none"}},
+      {"accel", {"bvh", "none", "kdtree", "kdtree-median", "grid", "lbvh"}},
   };
   return types;
 }

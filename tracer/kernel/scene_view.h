@@ -1,11 +1,13 @@
-// The scene as kernel code sees it: plain pointers to flat arrays, filled on the host
-// (and, later, on the device). Closest-hit and any-hit queries dispatch on the
-// acceleration structure with a switch; every structure returns the same hit, because the
-// closest hit is the minimum of (t, primitive id) compared lexicographically (DESIGN.md rule 4).
+// The scene as kernel code sees it: plain pointers to flat arrays, filled on the host or
+// copied to the device, and the primitive test every acceleration structure calls
+// (kernel/trace.h dispatches the queries). The closest hit is the minimum of
+// (t, primitive id) compared lexicographically (DESIGN.md rule 4).
 #pragma once
 #include "bvh_node.h"
 #include "camera.h"
 #include "features.h"
+#include "grid.h"
+#include "kd_node.h"
 #include "material.h"
 #include "plane.h"
 #include "primitive.h"
@@ -16,7 +18,7 @@
 
 namespace tracer {
 
-enum class AccelKind : uint32_t { Bvh, None };
+enum class AccelKind : uint32_t { Bvh, None, Kdtree, KdtreeMedian, Grid, Lbvh };
 enum class IntegratorKind : uint32_t { Whitted, Normals, Albedo, Depth, Path };
 enum class BackgroundKind : uint32_t { Constant, Gradient };
 
@@ -59,6 +61,7 @@ struct RenderSettings {
   uint32_t effects;  // EffectBit mask; kEffectAll unless a benchmark says otherwise
   uint32_t nee;      // path: next-event estimation with MIS (1) or the plain estimator (0)
   uint32_t rr_depth; // path: Russian roulette from this many bounces on
+  uint32_t grid_resolution;  // grid: cells along the longest axis; 0 picks by density
 };
 
 struct SceneView {
@@ -69,8 +72,16 @@ struct SceneView {
   uint32_t bounded_count;
   const uint32_t* unbounded;  // ids of planes, tested for every ray
   uint32_t unbounded_count;
-  const BvhNode* bvh_nodes;
+  const BvhNode* bvh_nodes;        // bvh and lbvh
   uint32_t bvh_node_count;
+  const KdNode* kd_nodes;          // kdtree and kdtree-median
+  uint32_t kd_node_count;
+  const uint32_t* kd_prims;
+  Vec3 kd_lo, kd_hi;               // the kd-tree's box
+  float kd_pad;                    // as GridInfo::pad
+  GridInfo grid;
+  const uint32_t* grid_cell_start;
+  const uint32_t* grid_prims;
   const Material* materials;
   const PointLight* lights;
   uint32_t light_count;
@@ -106,112 +117,6 @@ TRACER_HD void test_primitive(const SceneView& scene, uint32_t id, const Ray& ra
     case ShapeKind::Quad: hit = intersect_quad(p.a, p.b, p.c, ray, 0.0f, best.t, t, b1, b2); break;
   }
   if (hit && (t < best.t || id < best.prim)) best = {t, id, b1, b2};
-}
-
-// Closest hit with t in (0, tmax].
-TRACER_HD Hit trace_closest(const SceneView& scene, const Ray& ray, float tmax) {
-  Hit best = {tmax, kNoHit, 0.0f, 0.0f};
-  const RayShear shear = make_ray_shear(ray.dir);
-  for (uint32_t i = 0; i < scene.unbounded_count; ++i)
-    test_primitive(scene, scene.unbounded[i], ray, shear, best);
-  switch (scene.settings.accel) {
-    case AccelKind::None:
-      for (uint32_t i = 0; i < scene.bounded_count; ++i)
-        test_primitive(scene, scene.bounded[i], ray, shear, best);
-      break;
-    case AccelKind::Bvh: {
-      if (scene.bvh_node_count == 0) break;
-      const Vec3 inv = inverse_direction(ray.dir);
-      uint32_t stack[64];
-      int top = 0;
-      uint32_t node = 0;
-      float t_enter;
-      if (!ray_box(scene.bvh_nodes[0].lo, scene.bvh_nodes[0].hi, ray.origin, inv, 0.0f, best.t, t_enter))
-        break;
-      for (;;) {
-        const BvhNode& n = scene.bvh_nodes[node];
-        if (n.count > 0) {
-          for (uint32_t i = 0; i < n.count; ++i)
-            test_primitive(scene, scene.bounded[n.first + i], ray, shear, best);
-        } else {
-          // Visit the nearer child first; a child is pruned only when it starts strictly
-          // beyond the best hit, so a tie at equal t can still be won by a smaller id.
-          float t_left, t_right;
-          const BvhNode& l = scene.bvh_nodes[n.first];
-          const BvhNode& r = scene.bvh_nodes[n.first + 1];
-          const bool hit_l = ray_box(l.lo, l.hi, ray.origin, inv, 0.0f, best.t, t_left);
-          const bool hit_r = ray_box(r.lo, r.hi, ray.origin, inv, 0.0f, best.t, t_right);
-          if (hit_l && hit_r) {
-            const bool left_first = t_left <= t_right;
-            stack[top++] = left_first ? n.first + 1 : n.first;
-            node = left_first ? n.first : n.first + 1;
-            continue;
-          }
-          if (hit_l || hit_r) {
-            node = hit_l ? n.first : n.first + 1;
-            continue;
-          }
-        }
-        // Pop the next node that can still hold a hit no farther than the best.
-        bool found = false;
-        while (top > 0) {
-          node = stack[--top];
-          const BvhNode& c = scene.bvh_nodes[node];
-          if (ray_box(c.lo, c.hi, ray.origin, inv, 0.0f, best.t, t_enter)) {
-            found = true;
-            break;
-          }
-        }
-        if (!found) break;
-      }
-      break;
-    }
-  }
-  return best;
-}
-
-// Any hit with t in (0, tmax): the shadow-ray query. The answer is a property of the set
-// of primitives, so the order of visits cannot change it.
-TRACER_HD bool trace_any(const SceneView& scene, const Ray& ray, float tmax) {
-  // Ask for t <= the float just below tmax: a hit exactly at the light does not occlude.
-  const float limit = float_of_bits(bits_of(tmax) - 1u);
-  Hit probe = {limit, kNoHit, 0.0f, 0.0f};
-  const RayShear shear = make_ray_shear(ray.dir);
-  for (uint32_t i = 0; i < scene.unbounded_count; ++i) {
-    test_primitive(scene, scene.unbounded[i], ray, shear, probe);
-    if (probe.prim != kNoHit) return true;
-  }
-  switch (scene.settings.accel) {
-    case AccelKind::None:
-      for (uint32_t i = 0; i < scene.bounded_count; ++i) {
-        test_primitive(scene, scene.bounded[i], ray, shear, probe);
-        if (probe.prim != kNoHit) return true;
-      }
-      return false;
-    case AccelKind::Bvh: {
-      if (scene.bvh_node_count == 0) return false;
-      const Vec3 inv = inverse_direction(ray.dir);
-      uint32_t stack[64];
-      int top = 0;
-      stack[top++] = 0;
-      while (top > 0) {
-        const BvhNode& n = scene.bvh_nodes[stack[--top]];
-        float t_enter;
-        if (!ray_box(n.lo, n.hi, ray.origin, inv, 0.0f, limit, t_enter)) continue;
-        if (n.count > 0) {
-          for (uint32_t i = 0; i < n.count; ++i) {
-            test_primitive(scene, scene.bounded[n.first + i], ray, shear, probe);
-            if (probe.prim != kNoHit) return true;
-          }
-        } else {
-          stack[top++] = n.first + 1;
-          stack[top++] = n.first;
-        }
-      }
-      return false;
-    }
-  }
-  return false;
 }
 
 }  // namespace tracer

@@ -1,7 +1,7 @@
 // From a hit to the local surface: position, geometric and shading normals, uv.
 #pragma once
 #include "detmath.h"
-#include "scene_view.h"
+#include "trace.h"
 
 namespace tracer {
 

@@ -8,6 +8,7 @@ namespace tracer {
 struct Vec3 {
   float x, y, z;
   TRACER_HD float operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+  TRACER_HD float& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
 };
 
 TRACER_HD Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }

@@ -1,0 +1,138 @@
+// DESIGN.md rule 4 made real: every acceleration structure returns the same closest hit,
+// bit for bit, and the same any-hit answer. Ray by ray over every shipped scene, with rays
+// aimed at shared edges and vertices (ties at equal t) and along cell boundaries; and image
+// by image, every golden rendered with every structure hashes to its golden.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "golden_check.h"
+#include "kernel/trace.h"
+#include "scene_loader.h"
+#include "scene_types.h"
+#include "test_util.h"
+
+namespace tracer {
+namespace {
+
+struct Stream {
+  uint64_t state;
+  float next() {
+    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return static_cast<float>((z ^ (z >> 31)) >> 40) * 0x1p-24f;
+  }
+};
+
+const std::vector<std::string>& structures() { return accepted_scene_types().at("accel"); }
+
+// Random rays through the scene's box, and rays aimed at primitives' vertices and edge
+// midpoints (where neighbours tie) from random origins.
+std::vector<Ray> probe_rays(const Scene& scene) {
+  Stream s{5};
+  Vec3 lo = {kInfinity, kInfinity, kInfinity}, hi = -lo;
+  for (const Primitive& p : scene.primitives)
+    if (p.kind != ShapeKind::Plane) lo = min_of(lo, min_of(p.a, p.c)), hi = max_of(hi, max_of(p.a, p.c));
+  if (!(lo.x <= hi.x)) lo = {-1, -1, -1}, hi = {1, 1, 1};
+  const Vec3 size = hi - lo;
+  const auto point = [&] { return lo - size * 0.25f + Vec3{s.next() * size.x, s.next() * size.y, s.next() * size.z} * 1.5f; };
+  std::vector<Ray> rays;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 o = point(), t = point();
+    if (!(length(t - o) > 0)) continue;
+    rays.push_back({o, normalize(t - o)});
+  }
+  for (const Primitive& p : scene.primitives) {
+    if (p.kind != ShapeKind::Triangle && p.kind != ShapeKind::Quad) continue;
+    const Vec3 b = p.kind == ShapeKind::Quad ? p.a + p.b : p.b, c = p.kind == ShapeKind::Quad ? p.a + p.c : p.c;
+    for (const Vec3 target : {p.a, b, c, (p.a + b) * 0.5f, (b + c) * 0.5f, (c + p.a) * 0.5f}) {
+      const Vec3 o = point();
+      if (length(target - o) > 0) rays.push_back({o, normalize(target - o)});
+    }
+  }
+  return rays;
+}
+
+TEST(AccelIdentity, EveryStructureGivesTheSameHitsInEveryShippedScene) {
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(test::source_path("scenes"))) {
+    if (entry.path().extension() != ".json") continue;
+    ++scenes;
+    const std::string path = entry.path().string();
+    std::vector<Scene> built;
+    for (const std::string& accel : structures()) {
+      RenderOverrides ov;
+      ov.accel = accel;
+      built.push_back(load_scene(path, ov));
+    }
+    const std::vector<Ray> rays = probe_rays(built[0]);
+    size_t hits = 0;
+    for (const Ray& ray : rays) {
+      const Hit reference = trace_closest(built[0].view(), ray, kInfinity);
+      hits += reference.prim != kNoHit;
+      const float shadow_tmax = reference.prim != kNoHit ? reference.t * 1.5f : 1e3f;
+      const bool reference_any = trace_any(built[0].view(), ray, shadow_tmax);
+      for (size_t k = 1; k < built.size(); ++k) {
+        const Hit h = trace_closest(built[k].view(), ray, kInfinity);
+        ASSERT_EQ(std::memcmp(&h, &reference, sizeof(Hit)), 0)
+            << path << ", " << structures()[k] << ": prim " << h.prim << " t " << h.t << " against bvh's prim "
+            << reference.prim << " t " << reference.t;
+        ASSERT_EQ(trace_any(built[k].view(), ray, shadow_tmax), reference_any) << path << ", " << structures()[k];
+      }
+    }
+    EXPECT_GT(hits, rays.size() / 10) << path;
+  }
+  EXPECT_GE(scenes, 10);
+}
+
+// A grid whose cell boundaries fall on the edges of a tiled floor, probed by rays along
+// those boundaries and through the shared corners.
+TEST(AccelIdentity, HitsOnCellBoundariesAndStraddlingPrimitives) {
+  std::string shapes;
+  for (int z = 0; z < 8; ++z)
+    for (int x = 0; x < 8; ++x)
+      shapes += R"({"type": "quad", "corner": [)" + std::to_string(x) + ", 0, " + std::to_string(z) +
+                R"(], "u": [0, 0, 1], "v": [1, 0, 0], "material": "m"},)";
+  shapes += R"({"type": "box", "min": [1.5, 0, 1.5], "max": [6.5, 2, 2.5], "material": "m"},
+               {"type": "sphere", "center": [4, 1, 5], "radius": 2.5, "material": "m"})";
+  const std::string json = R"({"format": "tracer-scene/1", "camera": {"from": [4, 6, -6], "to": [4, 0, 4], "vfov": 50},
+    "film": {"width": 8, "height": 8}, "render": {"grid_resolution": 8},
+    "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}}, "shapes": [)" + shapes + "]}";
+  std::vector<Scene> built;
+  for (const std::string& accel : structures()) {
+    RenderOverrides ov;
+    ov.accel = accel;
+    built.push_back(test::scene_from(json, ov));
+  }
+  std::vector<Ray> rays;
+  for (int i = 0; i <= 8; ++i)
+    for (int j = 0; j <= 8; ++j) {
+      const Vec3 corner = {float(i), 0.0f, float(j)};
+      rays.push_back({corner + Vec3{0, 3, 0}, {0, -1, 0}});                      // straight down onto a shared corner
+      rays.push_back({corner + Vec3{0.5f, 3, 0}, normalize(Vec3{0, -1, 0.3f})});  // down along a boundary plane
+      rays.push_back({Vec3{-1, 0.5f, float(j)}, {1, 0, 0}});                       // along a boundary, through the box
+    }
+  for (const Ray& ray : rays) {
+    const Hit reference = trace_closest(built[0].view(), ray, kInfinity);
+    for (size_t k = 1; k < built.size(); ++k) {
+      const Hit h = trace_closest(built[k].view(), ray, kInfinity);
+      ASSERT_EQ(std::memcmp(&h, &reference, sizeof(Hit)), 0) << structures()[k] << ": prim " << h.prim << " against " << reference.prim;
+    }
+  }
+  EXPECT_GT(built[4].grid.n[0], 1u) << "the grid test needs cells";
+}
+
+// Whole images: each golden rendered with each structure hashes to the golden.
+TEST(AccelIdentity, EveryGoldenWithEveryStructure) {
+  const GoldenManifest manifest = read_manifest(TRACER_SOURCE_DIR);
+  for (const GoldenEntry& entry : manifest.entries)
+    for (const std::string& accel : structures()) {
+      GoldenEntry e = entry;
+      e.options.accel = accel;
+      EXPECT_EQ(render_golden(manifest, e, 0).hash, entry.hash) << entry.name << " with " << accel;
+    }
+}
+
+}  // namespace
+}  // namespace tracer
