@@ -59,7 +59,20 @@ struct BenchTradeCommand {
   int threads = 0;
 };
 
+struct BenchRaysCommand {
+  std::string scene, accel;
+  uint32_t incoherent = 1u << 22, grid_resolution = 0;
+  int threads = 0;
+};
+
+struct GenerateCommand {
+  std::string kind, output;
+  uint32_t triangles = 100000;
+};
+
 int run_render(const RenderCommand& cmd);
+int run_bench_rays(const BenchRaysCommand& cmd);
+int run_generate(const GenerateCommand& cmd);
 int run_bench_converge(const BenchConvergeCommand& cmd);
 int run_bench_trade(const BenchTradeCommand& cmd);
 int run_merge(const MergeCommand& cmd);

@@ -114,6 +114,20 @@ int main(int argc, char** argv) {
   bt->add_option("--ref-spp", trade.ref_spp, "reference samples per pixel (default 16 x --spp)");
   add_bench_size_options(bt, trade.width, trade.height, trade.threads);
 
+  BenchRaysCommand bench_rays;
+  CLI::App* br = b->add_subcommand("rays", "build time, memory and Mrays/s of each acceleration structure");
+  br->add_option("scene", bench_rays.scene, "scene file (JSON) or OBJ mesh")->required();
+  br->add_option("--accel", bench_rays.accel, "comma-separated structures (default bvh,lbvh,kdtree,kdtree-median,grid)");
+  br->add_option("--rays", bench_rays.incoherent, "incoherent rays (default 2^22)");
+  br->add_option("--grid-resolution", bench_rays.grid_resolution, "grid cells along the longest axis (default: by density)");
+  br->add_option("--threads", bench_rays.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
+
+  GenerateCommand generate;
+  CLI::App* gen = app.add_subcommand("generate", "write a deterministic procedural mesh as OBJ");
+  gen->add_option("kind", generate.kind, "terrain, sphere, boxes, cubes or mixed")->required();
+  gen->add_option("--triangles", generate.triangles, "target triangle count (default 100000)");
+  gen->add_option("-o,--output", generate.output, "OBJ file")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -131,6 +145,8 @@ int main(int argc, char** argv) {
     if (*bd) return run_bench_device(bench_device);
     if (*bc) return run_bench_converge(converge);
     if (*bt) return run_bench_trade(trade);
+    if (*br) return run_bench_rays(bench_rays);
+    if (*gen) return run_generate(generate);
     return run_compare(compare);
   } catch (const std::exception& e) {  // InputError, DeviceUnavailable, CUDA errors, I/O
     std::fprintf(stderr, "error: %s\n", e.what());
