@@ -13,6 +13,7 @@ packages=(
   chromium                                # opens the golden report headless in a test
   git                                     # golden update's check for uncommitted edits
   fonts-dejavu-core                       # the font of the bench converge plot
+  libembree-dev                           # the Embree row of bench rays (benchmark only)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -56,5 +56,37 @@ TEST(Bench, TradeHasARowPerKnobSetting) {
   EXPECT_NE(output.find("measures the path integrator"), std::string::npos) << output;
 }
 
+TEST(Bench, RaysGivesEveryStructureTheSameHits) {
+  const auto dir = test::temp_dir("bench-rays");
+  const std::string obj = (dir / "cubes.obj").string();
+  std::string output;
+  ASSERT_EQ(test::run_tracer("generate cubes --triangles 600 -o " + obj, &output), 0) << output;
+  ASSERT_EQ(test::run_tracer("bench rays " + obj + " --rays 4096 --threads 1 --accel bvh,lbvh,kdtree,kdtree-median,grid,none", &output), 0)
+      << output;
+  for (const char* accel : {"bvh ", "lbvh ", "kdtree ", "kdtree-median ", "grid ", "none "}) {
+    const size_t row = output.find(std::string("\n") + accel);
+    ASSERT_NE(row, std::string::npos) << accel << " in " << output;
+    EXPECT_NE(output.substr(row, output.find('\n', row + 1) - row).find(" same"), std::string::npos) << accel;
+  }
+  EXPECT_EQ(test::run_tracer("generate blob -o " + obj, &output), 2);
+  EXPECT_NE(output.find("unknown mesh kind"), std::string::npos) << output;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Bench, GeneratedMeshesAreDeterministic) {
+  const auto dir = test::temp_dir("generate");
+  for (const char* kind : {"terrain", "sphere", "boxes", "cubes", "mixed"}) {
+    const std::string a = (dir / "a.obj").string(), b = (dir / "b.obj").string();
+    ASSERT_EQ(test::run_tracer(std::string("generate ") + kind + " --triangles 3000 -o " + a), 0);
+    ASSERT_EQ(test::run_tracer(std::string("generate ") + kind + " --triangles 3000 -o " + b), 0);
+    std::stringstream sa, sb;
+    sa << std::ifstream(a).rdbuf();
+    sb << std::ifstream(b).rdbuf();
+    EXPECT_EQ(sa.str(), sb.str()) << kind;
+    EXPECT_GT(sa.str().size(), 100u) << kind;
+  }
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace tracer

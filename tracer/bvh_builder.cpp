@@ -84,7 +84,7 @@ class BvhBuilder {
       if (count <= 2 * kMaxLeafSize && best_cost + bounds.surface_area() >= leaf_cost)
         return make_leaf(node, begin, end);
       const float lo = centroids.lo[best_axis], extent = centroids.hi[best_axis] - lo;
-      const auto it = std::stable_partition(items_.begin() + begin, items_.begin() + end, [&](const BuildItem& it) {
+      const auto it = std::partition(items_.begin() + begin, items_.begin() + end, [&](const BuildItem& it) {
         return bin_of(it.centroid[best_axis], lo, extent) < best_split;
       });
       mid = static_cast<uint32_t>(it - items_.begin());

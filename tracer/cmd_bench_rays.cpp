@@ -15,6 +15,7 @@
 #include "bounds.h"
 #include "camera_setup.h"
 #include "commands.h"
+#include "embree_bench.h"
 #include "input_error.h"
 #include "json_reader.h"
 #include "kernel/philox.h"
@@ -31,7 +32,8 @@ namespace {
 constexpr uint32_t kCamera = 512;
 
 struct RaySets {
-  std::vector<Ray> primary, incoherent;
+  std::vector<Ray> primary, incoherent, shadow;
+  std::vector<float> shadow_tmax;
 };
 
 // An OBJ becomes a one-mesh scene; the camera frames the mesh in either case.
@@ -121,6 +123,8 @@ int run_bench_rays(const BenchRaysCommand& cmd) {
               "shadow", "hits (checksum)");
   RaySets rays;
   uint64_t reference = 0;
+  std::vector<Hit> reference_primary, reference_incoherent;
+  double bvh_rates[3] = {0, 0, 0};
   for (const std::string& accel : accels) {
     const Scene scene = load_bench_scene(cmd.scene, accel, cmd.grid_resolution);
     if (rays.primary.empty()) {
@@ -131,16 +135,24 @@ int run_bench_rays(const BenchRaysCommand& cmd) {
     std::vector<Hit> primary(rays.primary.size()), incoherent(rays.incoherent.size());
     const double mp = throughput(primary.size(), threads, [&](size_t i) { primary[i] = trace_closest(view, rays.primary[i], kInfinity); });
     const double mi = throughput(incoherent.size(), threads, [&](size_t i) { incoherent[i] = trace_closest(view, rays.incoherent[i], kInfinity); });
-    // Shadow rays from each primary hit toward a point above the scene.
-    const Vec3 light = scene.camera.origin + Vec3{0.0f, length(scene.camera.origin - scene.camera.focal_top_left), 0.0f};
-    std::vector<uint8_t> occluded(primary.size(), 0);
-    const double ms = throughput(primary.size(), threads, [&](size_t i) {
-      if (primary[i].prim == kNoHit) return;
-      const Surface s = surface_at(view, rays.primary[i], primary[i]);
-      const Vec3 to = light - s.p;
-      const Ray r = {offset_ray_origin(s.p, s.ng, normalize(to)), normalize(to)};
-      occluded[i] = trace_any(view, r, length(light - r.origin)) ? 1 : 0;
+    if (rays.shadow.empty()) {  // from each primary hit toward a point above the scene, once for all structures
+      const Vec3 light = scene.camera.origin + Vec3{0.0f, length(scene.camera.origin - scene.camera.focal_top_left), 0.0f};
+      for (size_t i = 0; i < primary.size(); ++i) {
+        if (primary[i].prim == kNoHit) continue;
+        const Surface s = surface_at(view, rays.primary[i], primary[i]);
+        const Vec3 dir = normalize(light - s.p);
+        const Ray r = {offset_ray_origin(s.p, s.ng, dir), dir};
+        rays.shadow.push_back(r);
+        rays.shadow_tmax.push_back(length(light - r.origin));
+      }
+      reference_primary = primary;
+      reference_incoherent = incoherent;
+    }
+    std::vector<uint8_t> occluded(rays.shadow.size(), 0);
+    const double ms = throughput(rays.shadow.size(), threads, [&](size_t i) {
+      occluded[i] = trace_any(view, rays.shadow[i], rays.shadow_tmax[i]) ? 1 : 0;
     });
+    if (accel == "bvh") bvh_rates[0] = mp, bvh_rates[1] = mi, bvh_rates[2] = ms;
     uint64_t sum = 0;
     for (const auto* hits : {&primary, &incoherent})
       for (const Hit& h : *hits) sum = mix(mix(sum, h.prim), bits_of(h.t));
@@ -150,6 +162,18 @@ int run_bench_rays(const BenchRaysCommand& cmd) {
                 acceleration_bytes(scene) / 1048576.0, node_count(scene), mp, mi, ms, static_cast<unsigned long long>(sum),
                 sum == reference ? "same" : "DIFFERENT");
     if (sum != reference) throw std::runtime_error(accel + ": hits differ from " + accels[0] + "'s (DESIGN.md rule 4)");
+  }
+  if (embree_available()) {
+    const Scene scene = load_bench_scene(cmd.scene, "none", 0);
+    const EmbreeRow e = embree_bench(scene, rays.primary, rays.incoherent, rays.shadow, rays.shadow_tmax,
+                                     reference_primary, reference_incoherent, threads);
+    std::printf("%-14s %10.3f %10.1f %10s | %10.2f %10.2f %10.2f | %.4f%% of closest hits on the same primitive\n",
+                "embree 3", e.build_seconds, e.megabytes, "-", e.primary, e.incoherent, e.shadow, 100.0 * e.same_primitive);
+    if (bvh_rates[0] > 0)
+      std::printf("%-14s %10s %10s %10s | %10.2f %10.2f %10.2f |\n", "bvh / embree", "", "", "", bvh_rates[0] / e.primary,
+                  bvh_rates[1] / e.incoherent, bvh_rates[2] / e.shadow);
+  } else {
+    std::printf("(no Embree row: this build has no Embree adapter; install libembree-dev and reconfigure)\n");
   }
   std::printf("throughput in Mrays/s\n");
   return 0;
