@@ -8,12 +8,12 @@ namespace tracer {
 
 TRACER_HD void traverse_bvh(const SceneView& scene, const Ray& ray, const RayShear& shear, Hit& best, bool any) {
   if (scene.bvh_node_count == 0) return;
-  const Vec3 inv = inverse_direction(ray.dir);
+  const RayBoxQuery q = make_ray_box_query(ray);
   uint32_t stack[64];
   int top = 0;
   uint32_t node = 0;
   float t_enter;
-  if (!ray_box(scene.bvh_nodes[0].lo, scene.bvh_nodes[0].hi, ray.origin, inv, 0.0f, best.t, t_enter)) return;
+  if (!ray_box(scene.bvh_nodes[0], q, 0.0f, best.t, t_enter)) return;
   for (;;) {
     const BvhNode& n = scene.bvh_nodes[node];
     if (n.count > 0) {
@@ -25,8 +25,8 @@ TRACER_HD void traverse_bvh(const SceneView& scene, const Ray& ray, const RayShe
       float t_left, t_right;
       const BvhNode& l = scene.bvh_nodes[n.first];
       const BvhNode& r = scene.bvh_nodes[n.first + 1];
-      const bool hit_l = ray_box(l.lo, l.hi, ray.origin, inv, 0.0f, best.t, t_left);
-      const bool hit_r = ray_box(r.lo, r.hi, ray.origin, inv, 0.0f, best.t, t_right);
+      const bool hit_l = ray_box(l, q, 0.0f, best.t, t_left);
+      const bool hit_r = ray_box(r, q, 0.0f, best.t, t_right);
       if (hit_l && hit_r) {
         const bool left_first = t_left <= t_right;
         stack[top++] = left_first ? n.first + 1 : n.first;
@@ -43,7 +43,7 @@ TRACER_HD void traverse_bvh(const SceneView& scene, const Ray& ray, const RayShe
     while (top > 0) {
       node = stack[--top];
       const BvhNode& c = scene.bvh_nodes[node];
-      if (ray_box(c.lo, c.hi, ray.origin, inv, 0.0f, best.t, t_enter)) {
+      if (ray_box(c, q, 0.0f, best.t, t_enter)) {
         found = true;
         break;
       }
