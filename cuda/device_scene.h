@@ -17,6 +17,8 @@ class DeviceScene {
         materials_(scene.materials),
         lights_(scene.lights),
         light_table_(scene.light_table),
+        textures_(scene.textures),
+        texels_(scene.texels),
         light_of_prim_(scene.light_of_prim),
         kd_nodes_(scene.kd_nodes),
         kd_prims_(scene.kd_prims),
@@ -31,6 +33,8 @@ class DeviceScene {
     view_.materials = materials_.get();
     view_.lights = lights_.get();
     view_.light_table = light_table_.get();
+    view_.textures = textures_.get();
+    view_.texels = texels_.get();
     view_.light_of_prim = light_of_prim_.get();
     view_.kd_nodes = kd_nodes_.get();
     view_.kd_prims = kd_prims_.get();
@@ -46,7 +50,7 @@ class DeviceScene {
            (s.bounded.size() + s.unbounded.size()) * sizeof(uint32_t) + s.bvh_nodes.size() * sizeof(BvhNode) +
            s.materials.size() * sizeof(Material) + s.lights.size() * sizeof(PointLight) +
            s.light_table.size() * sizeof(LightEntry) + s.light_of_prim.size() * sizeof(uint32_t) +
-           s.kd_nodes.size() * sizeof(KdNode) +
+           s.kd_nodes.size() * sizeof(KdNode) + s.textures.size() * sizeof(Texture) + s.texels.size() * sizeof(float) +
            (s.kd_prims.size() + s.grid_cell_start.size() + s.grid_prims.size()) * sizeof(uint32_t);
   }
 
@@ -58,6 +62,8 @@ class DeviceScene {
   DeviceBuffer<Material> materials_;
   DeviceBuffer<PointLight> lights_;
   DeviceBuffer<LightEntry> light_table_;
+  DeviceBuffer<Texture> textures_;
+  DeviceBuffer<float> texels_;
   DeviceBuffer<uint32_t> light_of_prim_;
   DeviceBuffer<KdNode> kd_nodes_;
   DeviceBuffer<uint32_t> kd_prims_, grid_cell_start_, grid_prims_;

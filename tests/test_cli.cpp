@@ -59,7 +59,7 @@ std::vector<BadInput> bad_inputs() {
       {"ResolutionTooLargeOnCommandLine", g, "--height 20000", "--height: must be in [1, 16384]"},
       {"UnknownMaterial", replace(g, "\"material\": \"m\"}]", "\"material\": \"x\"}]"), "", "shapes[0].material: unknown material \"x\""},
       {"GridNeedsSquareSpp", g, "--sampler grid --spp 3", "needs a square spp"},
-      {"TextureNotYet", replace(g, "\"albedo\": [0.5, 0.5, 0.5]", "\"albedo\": {\"texture\": \"a.png\"}"), "", "materials.m.albedo: not supported yet"},
+      {"TextureMissing", replace(g, "\"albedo\": [0.5, 0.5, 0.5]", "\"albedo\": {\"texture\": \"a.png\"}"), "", "materials.m.albedo.texture: image"},
       {"UnknownIntegrator", g, "--integrator photons", "unknown integrator \"photons\""},
       {"UnknownAccel", g, "--accel octree", "unknown accel \"octree\""},
       {"MaxDepthTooLarge", g, "--max-depth 65", "--max-depth: must be at most 64"},

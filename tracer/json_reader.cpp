@@ -110,7 +110,7 @@ Vec3 JsonObject::vec3_or(const std::string& key, Vec3 fallback) {
 Vec3 JsonObject::color(const std::string& key) {
   const Json& v = get(key);
   if (v.is_object() && (v.contains("texture") || v.contains("checker")))
-    fail(key, "not supported yet: textured colours (textures arrive in a later release)");
+    fail(key, "a texture or checker can replace a material's colour only; this colour must be [r, g, b]");
   const Vec3 c = read_vec3(v, child(key), file_);
   if (c.x < 0.0f || c.y < 0.0f || c.z < 0.0f) fail(key, "colour components must be >= 0");
   return c;

@@ -25,6 +25,8 @@ SceneView Scene::view() const {
   v.materials = materials.data();
   v.lights = lights.data();
   v.light_count = static_cast<uint32_t>(lights.size());
+  v.textures = textures.data();
+  v.texels = texels.data();
   v.light_table = light_table.data();
   v.light_entry_count = static_cast<uint32_t>(light_table.size());
   v.light_of_prim = light_of_prim.data();

@@ -24,6 +24,8 @@ struct Scene {
   GridInfo grid{};
   std::vector<uint32_t> grid_cell_start, grid_prims;
   std::vector<Material> materials;
+  std::vector<Texture> textures;   // kernel/texture.h
+  std::vector<float> texels;       // image textures' linear RGB
   std::vector<std::string> material_names;
   std::vector<PointLight> lights;
   std::vector<LightEntry> light_table;  // path integrator's lights (light_table.h)

@@ -11,6 +11,7 @@
 #include "mesh.h"
 #include "scene_types.h"
 #include "text_file.h"
+#include "texture_loader.h"
 #include "transform.h"
 
 namespace tracer {
@@ -31,33 +32,36 @@ std::string read_type(JsonObject& obj, const std::string& category) {
   return type;
 }
 
-Material read_material(const Json& value, const std::string& path, const std::string& file, std::string& type) {
+Material read_material(const Json& value, const std::string& path, const std::string& file, std::string& type,
+                       TextureLoader& textures) {
   JsonObject obj(value, path, file);
   Material m{};
   m.ior = 1.0f;
   m.shininess = 1.0f;
+  for (uint32_t& t : m.texture) t = kNoTexture;
   type = read_type(obj, "material");
   if (type == "lambert") {
     m.kind = MaterialKind::Lambert;
-    m.albedo = obj.color("albedo");
+    m.albedo = textures.colour(obj, "albedo", m.texture[kSlotAlbedo]);
   } else if (type == "metal") {
     m.kind = MaterialKind::Metal;
-    m.albedo = obj.color("albedo");
+    m.albedo = textures.colour(obj, "albedo", m.texture[kSlotAlbedo]);
     m.roughness = obj.number_or("roughness", 0.0f);
     if (!(m.roughness >= 0.0f && m.roughness <= 1.0f)) obj.fail("roughness", "must be in [0, 1]");
   } else if (type == "dielectric") {
     m.kind = MaterialKind::Dielectric;
     m.ior = obj.number("ior");
     if (!(m.ior > 0.0f)) obj.fail("ior", "must be > 0");
-    m.tint = obj.color_or("tint", {1.0f, 1.0f, 1.0f});
+    m.tint = textures.colour_or(obj, "tint", {1.0f, 1.0f, 1.0f}, m.texture[kSlotTint]);
     const std::string fresnel = obj.string_or("fresnel", "schlick");
     if (fresnel == "exact") m.fresnel = FresnelKind::Exact;
     else if (fresnel != "schlick") obj.fail("fresnel", "expected \"schlick\" or \"exact\", got \"" + fresnel + "\"");
   } else if (type == "phong") {
     m.kind = MaterialKind::Phong;
-    m.albedo = obj.color("diffuse");
-    m.ambient = obj.color_or("ambient", m.albedo);
-    m.specular = obj.color_or("specular", {0.0f, 0.0f, 0.0f});
+    m.albedo = textures.colour(obj, "diffuse", m.texture[kSlotAlbedo]);
+    m.ambient = textures.colour_or(obj, "ambient", m.albedo, m.texture[kSlotAmbient]);
+    if (!obj.find("ambient")) m.texture[kSlotAmbient] = m.texture[kSlotAlbedo];  // ambient follows diffuse
+    m.specular = textures.colour_or(obj, "specular", {0.0f, 0.0f, 0.0f}, m.texture[kSlotSpecular]);
     m.shininess = obj.number_or("shininess", 1.0f);
     if (!(m.shininess >= 0.0f)) obj.fail("shininess", "must be >= 0");
     m.reflectivity = obj.number_or("reflectivity", 0.0f);
@@ -70,9 +74,9 @@ Material read_material(const Json& value, const std::string& path, const std::st
       if (obj.find(map)) not_supported(obj, map, "texture maps");
   } else if (type == "emissive") {
     m.kind = MaterialKind::Emissive;
-    m.radiance = obj.color("radiance");
+    m.radiance = textures.colour(obj, "radiance", m.texture[kSlotRadiance]);
     m.two_sided = obj.boolean_or("two_sided", false) ? 1u : 0u;
-    m.albedo = obj.color_or("albedo", {0.0f, 0.0f, 0.0f});  // an emitter that also reflects
+    m.albedo = textures.colour_or(obj, "albedo", {0.0f, 0.0f, 0.0f}, m.texture[kSlotAlbedo]);  // an emitter that also reflects
   }
   obj.finish();
   return m;
@@ -469,12 +473,13 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
 
   std::map<std::string, uint32_t> material_ids;
   std::vector<std::string> material_types;
+  TextureLoader textures(scene, std::filesystem::path(path).parent_path().string());
   JsonObject materials(top.get("materials"), "materials", path);
   for (const auto& item : top.get("materials").items()) {
     materials.find(item.key());
     material_ids[item.key()] = static_cast<uint32_t>(scene.materials.size());
     material_types.emplace_back();
-    scene.materials.push_back(read_material(item.value(), materials.child(item.key()), path, material_types.back()));
+    scene.materials.push_back(read_material(item.value(), materials.child(item.key()), path, material_types.back(), textures));
     scene.material_names.push_back(item.key());
   }
 
@@ -512,7 +517,8 @@ Scene load_scene(const std::string& path, const RenderOverrides& overrides) {
 
 std::vector<std::string> feature_names(uint32_t features) {
   static const char* names[] = {"sphere",     "plane",   "triangle", "quad",        "lambert",   "metal",
-                                "dielectric", "phong",   "emissive", "point-light", "thin-lens", "shading-normals"};
+                                "dielectric", "phong",   "emissive", "point-light", "thin-lens", "shading-normals",
+                                "textures"};
   std::vector<std::string> out;
   for (uint32_t i = 0; i < sizeof names / sizeof names[0]; ++i)
     if (features & (1u << i)) out.push_back(names[i]);

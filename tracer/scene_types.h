@@ -8,7 +8,8 @@
 
 namespace tracer {
 
-// Category ("shape", "material", "light", "background", "integrator", "sampler", "accel")
+// Category ("shape", "material", "light", "background", "integrator", "sampler", "accel",
+// "texture": a material colour given as an image or a checker)
 // to the names the loader accepts in it, in the order SCENE_FORMAT.md lists them.
 const std::map<std::string, std::vector<std::string>>& accepted_scene_types();
 

@@ -23,7 +23,7 @@ TRACER_HD Vec3 debug_view(const SceneView& scene, const Ray& ray) {
       return s.ns * 0.5f + Vec3{0.5f, 0.5f, 0.5f};
     }
     case IntegratorKind::Albedo:
-      return material_albedo(scene.materials[scene.primitives[hit.prim].material]);
+      return material_albedo(material_at(scene, surface_at(scene, ray, hit)));
     default:
       return {hit.t, hit.t, hit.t};
   }

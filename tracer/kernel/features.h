@@ -19,6 +19,7 @@ enum FeatureBit : uint32_t {
   kFeaturePointLight = 1u << 9,
   kFeatureThinLens = 1u << 10,
   kFeatureShadingNormals = 1u << 11,
+  kFeatureTextures = 1u << 12,
 };
 
 }  // namespace tracer

@@ -5,6 +5,7 @@
 // uniformly by area, spheres seen from outside uniformly in the cone they subtend.
 #pragma once
 #include "light_sources.h"
+#include "surface.h"
 #include "sampling.h"
 
 namespace tracer {
@@ -85,6 +86,7 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
   const Primitive& p = scene.primitives[entry.index];
   s.prim = entry.index;
   Vec3 point, ng;
+  float b1 = 0.0f, b2 = 0.0f;  // the sampled point's quad or triangle parameters, for its texture lookup
   switch (p.kind) {
     case ShapeKind::Sphere: {
       const Vec3 to_center = p.a - from;
@@ -105,10 +107,10 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
     }
     case ShapeKind::Quad:
       point = p.a + p.b * u1 + p.c * u2;
+      b1 = u1, b2 = u2;
       ng = normalize(cross(p.b, p.c));
       break;
     case ShapeKind::Triangle: {
-      float b1, b2;
       sample_triangle(u1, u2, b1, b2);
       point = p.a * (1.0f - b1 - b2) + p.b * b1 + p.c * b2;
       ng = normalize(cross(p.b - p.a, p.c - p.a));
@@ -123,7 +125,9 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
   const Material& m = scene.materials[p.material];
   const bool front = dot(s.wi, ng) < 0.0f;  // the light's front faces the shading point
   if (!front && !m.two_sided) return s;
-  s.radiance = m.radiance;
+  s.radiance = m.texture[kSlotRadiance] == kNoTexture
+                   ? m.radiance
+                   : material_at(scene, surface_at(scene, {from, s.wi}, {s.distance, entry.index, b1, b2})).radiance;
   s.pdf = light_pdf(scene, entry.index, from, s.wi, s.distance, ng);
   s.valid = s.pdf > 0.0f && s.pdf < kInfinity;
   return s;

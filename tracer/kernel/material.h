@@ -1,11 +1,15 @@
 // Materials as plain data: one struct for every kind, the fields a kind does not use are 0.
 #pragma once
+#include "texture.h"
 #include "vec3.h"
 
 namespace tracer {
 
 enum class MaterialKind : uint32_t { Lambert, Metal, Dielectric, Phong, Emissive };
 enum class FresnelKind : uint32_t { Schlick, Exact };
+
+// The colours of a material a texture may replace (Material::texture).
+enum ColourSlot : uint32_t { kSlotAlbedo, kSlotAmbient, kSlotSpecular, kSlotTint, kSlotRadiance, kColourSlots };
 
 struct Material {
   MaterialKind kind;
@@ -21,6 +25,7 @@ struct Material {
   float reflectivity;   // phong
   float transparency;   // phong
   float ior;            // dielectric, phong
+  uint32_t texture[kColourSlots];  // per ColourSlot: kNoTexture, or the texture replacing it
 };
 
 }  // namespace tracer

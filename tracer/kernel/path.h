@@ -38,7 +38,7 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, ui
       break;
     }
     const Surface s = surface_at(scene, ray, hit);
-    const Material& m = scene.materials[s.material];
+    const Material m = material_at(scene, s);
     const bool front = dot(ray.dir, s.ng) < 0.0f;
     if (m.kind == MaterialKind::Emissive && (front || m.two_sided)) {
       const float w = nee && !specular

@@ -83,6 +83,8 @@ struct SceneView {
   const uint32_t* grid_cell_start;
   const uint32_t* grid_prims;
   const Material* materials;
+  const Texture* textures;
+  const float* texels;            // image textures' linear RGB
   const PointLight* lights;
   uint32_t light_count;
   const LightEntry* light_table;  // path integrator: every light with its selection probability

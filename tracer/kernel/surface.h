@@ -1,6 +1,7 @@
 // From a hit to the local surface: position, geometric and shading normals, uv.
 #pragma once
 #include "detmath.h"
+#include "sampling.h"
 #include "trace.h"
 
 namespace tracer {
@@ -36,7 +37,10 @@ TRACER_HD Surface surface_at(const SceneView& scene, const Ray& ray, const Hit& 
       s.p = q - prim.b * dot(q - prim.a, prim.b);
       s.ng = prim.b;
       s.ns = s.ng;
-      s.u = s.v = 0.0f;
+      // planar coordinates in the frame of sampling.h's frame_around(normal)
+      const Frame f = frame_around(prim.b);
+      s.u = dot(s.p - prim.a, f.t);
+      s.v = dot(s.p - prim.a, f.b);
       break;
     }
     case ShapeKind::Quad:
@@ -73,6 +77,16 @@ TRACER_HD Surface surface_at(const SceneView& scene, const Ray& ray, const Hit& 
     }
   }
   return s;
+}
+
+// The material at a surface point: its textured colours looked up at (u, v).
+TRACER_HD Material material_at(const SceneView& scene, const Surface& s) {
+  Material m = scene.materials[s.material];
+  if (!(scene.features & kFeatureTextures)) return m;
+  Vec3* colour[kColourSlots] = {&m.albedo, &m.ambient, &m.specular, &m.tint, &m.radiance};
+  for (uint32_t k = 0; k < kColourSlots; ++k)
+    if (m.texture[k] != kNoTexture) *colour[k] = sample_texture(scene.textures, scene.texels, m.texture[k], s.u, s.v);
+  return m;
 }
 
 }  // namespace tracer

@@ -107,7 +107,7 @@ TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, R
       continue;
     }
     const Surface s = surface_at(scene, task.ray, hit);
-    const WhittedResponse w = whitted_response(scene.materials[s.material]);
+    const WhittedResponse w = whitted_response(material_at(scene, s));
     const bool front = dot(task.ray.dir, s.ng) < 0.0f;
     const Vec3 n = front ? s.ns : -s.ns;  // shading normal facing the incoming ray
     if (front || w.two_sided) radiance += task.weight * w.emission;

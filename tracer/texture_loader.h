@@ -1,0 +1,35 @@
+// Material colours that may be textures (SCENE_FORMAT.md): [r, g, b], {"texture": FILE,
+// optional "wrap": "repeat" (default) or "clamp"} with FILE relative to the scene file, or
+// {"checker": {"scale": S, "even": RGB, "odd": RGB}}. Each image file is read once with
+// OpenImageIO into scene.texels as linear RGB: 8- and 16-bit images are sRGB-decoded,
+// float images taken as they are; 1-channel images are grey, a 4th channel is ignored. The
+// colour itself is set to the texture's mean, the value light power and debug views use.
+#pragma once
+#include <map>
+#include <string>
+
+#include "json_reader.h"
+#include "scene.h"
+
+namespace tracer {
+
+class TextureLoader {
+ public:
+  TextureLoader(Scene& scene, std::string scene_dir) : scene_(scene), dir_(std::move(scene_dir)) {}
+
+  // `texture` becomes kNoTexture or the index of the colour's texture.
+  Vec3 colour(JsonObject& obj, const std::string& key, uint32_t& texture);
+  Vec3 colour_or(JsonObject& obj, const std::string& key, Vec3 fallback, uint32_t& texture);
+
+ private:
+  uint32_t image(JsonObject& spec, const std::string& file, TextureWrap wrap, Vec3& mean);
+
+  Scene& scene_;
+  std::string dir_;
+  std::map<std::pair<std::string, TextureWrap>, std::pair<uint32_t, Vec3>> loaded_;
+};
+
+// The sRGB transfer function's inverse (IEC 61966-2-1), with det_pow.
+float srgb_to_linear(float c);
+
+}  // namespace tracer
