@@ -6,9 +6,11 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "image_io.h"
+#include "kernel/surface.h"
 #include "input_error.h"
 #include "render_cpu.h"
 #include "test_util.h"
@@ -127,6 +129,34 @@ TEST(Textures, BadImagesAreErrorsNamingFileAndKey) {
       EXPECT_NE(std::string(e.what()).find(c.expected), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find("scene.json"), std::string::npos) << e.what();
     }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// The sphere's u wraps from 1 back to 0 where atan2(z, x) jumps from pi to -pi; with a
+// repeating texture the filter blends the last and first columns there: no crack.
+TEST(Textures, SphereUvSeamHasNoCrack) {
+  const auto dir = test::temp_dir("tex-seam");
+  Image img{64, 4, {}};
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const float c = 0.5f + 0.5f * std::sin(2.0f * float(M_PI) * (x + 0.5f) / 64.0f);
+      img.rgb.insert(img.rgb.end(), {c, c, c});
+    }
+  write_image(img, (dir / "periodic.exr").string());
+  const std::string json = R"({"format": "tracer-scene/1", "camera": {"from": [-3, 0, 0], "to": [0, 0, 0], "vfov": 40},
+    "film": {"width": 8, "height": 8}, "materials": {"m": {"type": "lambert", "albedo": {"texture": "periodic.exr"}}},
+    "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]})";
+  const Scene scene = load_scene_text(json, (dir / "s.json").string());
+  const SceneView view = scene.view();
+  for (const float y : {-0.5f, 0.0f, 0.5f}) {
+    // Two rays hitting the sphere on either side of the seam (x < 0, z = -+1e-4).
+    const Ray above = {{-3, y, 1e-4f}, {1, 0, 0}}, below = {{-3, y, -1e-4f}, {1, 0, 0}};
+    const Surface sa = surface_at(view, above, trace_closest(view, above, kInfinity));
+    const Surface sb = surface_at(view, below, trace_closest(view, below, kInfinity));
+    EXPECT_GT(std::abs(sa.u - sb.u), 0.99f) << "the two points straddle the seam";
+    const float ca = material_at(view, sa).albedo.x, cb = material_at(view, sb).albedo.x;
+    EXPECT_NEAR(ca, cb, 1e-3f) << "crack at the seam, y = " << y;
   }
   std::filesystem::remove_all(dir);
 }

@@ -402,13 +402,12 @@ void read_camera(const Json& value, const std::string& file, Scene& scene) {
   if (spec.aperture > 0.0f) scene.features |= kFeatureThinLens;
 }
 
-Background read_background(const Json* value, const std::string& file, std::string& type) {
-  Background bg{BackgroundKind::Constant, {0, 0, 0}, {0, 0, 0}};
+Background read_background(const Json* value, const std::string& file, std::string& type, TextureLoader& textures) {
+  Background bg{BackgroundKind::Constant, {0, 0, 0}, {0, 0, 0}, {kNoTexture, kNoTexture, kNoTexture, kNoTexture, kNoTexture, kNoTexture}};
   type = "constant";
   if (!value) return bg;
   JsonObject obj(*value, "background", file);
   type = obj.string("type");
-  if (type == "cubemap") not_supported(obj, "type", "cubemap backgrounds");
   read_type(obj, "background");
   if (type == "constant") {
     bg.radiance = obj.color("radiance");
@@ -416,6 +415,9 @@ Background read_background(const Json* value, const std::string& file, std::stri
     bg.kind = BackgroundKind::Gradient;
     bg.radiance = obj.color("zenith");
     bg.horizon = obj.color("horizon");
+  } else if (type == "cubemap") {
+    bg.kind = BackgroundKind::Cubemap;
+    textures.cube_faces(obj, bg.faces);
   }
   obj.finish();
   return bg;
@@ -466,14 +468,14 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
   JsonObject film(top.get("film"), "film", path);
   read_render(top.find("render"), path, overrides, scene, film);
   read_camera(top.get("camera"), path, scene);
+  TextureLoader textures(scene, std::filesystem::path(path).parent_path().string());
   std::string background_type;
-  scene.background = read_background(top.find("background"), path, background_type);
+  scene.background = read_background(top.find("background"), path, background_type, textures);
   scene.used_types.insert("background:" + background_type);
   scene.ambient = top.find("ambient") ? top.color("ambient") : Vec3{0, 0, 0};
 
   std::map<std::string, uint32_t> material_ids;
   std::vector<std::string> material_types;
-  TextureLoader textures(scene, std::filesystem::path(path).parent_path().string());
   JsonObject materials(top.get("materials"), "materials", path);
   for (const auto& item : top.get("materials").items()) {
     materials.find(item.key());

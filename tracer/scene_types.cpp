@@ -9,7 +9,7 @@ const std::map<std::string, std::vector<std::string>>& accepted_scene_types() {
       {"shape", {"sphere", "plane", "triangle", "quad", "box", "mesh"}},
       {"material", {"lambert", "metal", "dielectric", "phong", "emissive"}},
       {"light", {"point"}},
-      {"background", {"constant", "gradient"}},
+      {"background", {"constant", "gradient", "cubemap"}},
       {"integrator", {"whitted", "normals", "albedo", "depth", "path"}},
       {"sampler", {"center", "grid", "stochastic", "stratified"}},
       {"accel", {"bvh", "none", "kdtree", "kdtree-median", "grid", "lbvh"}},

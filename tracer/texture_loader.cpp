@@ -24,7 +24,7 @@ Vec3 TextureLoader::colour(JsonObject& obj, const std::string& key, uint32_t& te
     const std::string file = spec.string("texture");
     const std::string wrap = spec.string_or("wrap", "repeat");
     if (wrap != "repeat" && wrap != "clamp") spec.fail("wrap", "expected \"repeat\" or \"clamp\", got \"" + wrap + "\"");
-    texture = image(spec, file, wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat, mean);
+    texture = image(spec.child("texture"), file, wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat, mean);
     scene_.used_types.insert("texture:image");
   } else if (spec.find("checker")) {
     JsonObject checker(spec.get("checker"), spec.child("checker"), obj.file());
@@ -55,20 +55,41 @@ Vec3 TextureLoader::colour_or(JsonObject& obj, const std::string& key, Vec3 fall
   return obj.find(key) ? colour(obj, key, texture) : fallback;
 }
 
-uint32_t TextureLoader::image(JsonObject& spec, const std::string& file, TextureWrap wrap, Vec3& mean) {
+void TextureLoader::cube_faces(JsonObject& background, uint32_t faces[6]) {
+  const Json& list = background.get("faces");
+  if (!list.is_array() || list.size() != 6)
+    background.fail("faces", "expected six image files (+x, -x, +y, -y, +z, -z), got " + describe(list));
+  for (size_t i = 0; i < 6; ++i) {
+    const std::string where = background.child("faces") + "[" + std::to_string(i) + "]";
+    if (!list[i].is_string()) fail_at(background.file(), where, "expected an image file, got " + describe(list[i]));
+    Vec3 mean;
+    faces[i] = image(where, list[i].get<std::string>(), TextureWrap::Clamp, mean);
+    const Texture& t = scene_.textures[faces[i]];
+    const Texture& first = scene_.textures[faces[0]];
+    if (t.width != t.height)
+      fail_at(background.file(), where, "cube faces must be square, got " + std::to_string(t.width) + "x" + std::to_string(t.height));
+    if (t.width != first.width)
+      fail_at(background.file(), where, "cube faces must all be the same size: " + std::to_string(t.width) + " against " +
+                                             std::to_string(first.width) + " for faces[0]");
+  }
+  scene_.features |= kFeatureTextures;
+}
+
+uint32_t TextureLoader::image(const std::string& where, const std::string& file, TextureWrap wrap, Vec3& mean) {
   const std::string path = (std::filesystem::path(dir_) / file).string();
   const auto known = loaded_.find({path, wrap});
   if (known != loaded_.end()) {
     mean = known->second.second;
     return known->second.first;
   }
+  const std::string& scene_file = scene_.file;
   OIIO::ImageBuf buf(path);
-  if (!std::filesystem::is_regular_file(path)) spec.fail("texture", "image " + path + " does not exist");
-  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) spec.fail("texture", "cannot read image " + path + ": " + buf.geterror());
+  if (!std::filesystem::is_regular_file(path)) fail_at(scene_file, where, "image " + path + " does not exist");
+  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) fail_at(scene_file, where, "cannot read image " + path + ": " + buf.geterror());
   const OIIO::ImageSpec& s = buf.spec();
   if (s.nchannels != 1 && s.nchannels != 3 && s.nchannels != 4)
-    spec.fail("texture", path + ": expected 1, 3 or 4 channels, got " + std::to_string(s.nchannels));
-  if (s.width < 1 || s.height < 1) spec.fail("texture", path + ": empty image");
+    fail_at(scene_file, where, path + ": expected 1, 3 or 4 channels, got " + std::to_string(s.nchannels));
+  if (s.width < 1 || s.height < 1) fail_at(scene_file, where, path + ": empty image");
   const bool srgb = !buf.nativespec().format.is_floating_point();
   std::vector<float> pixels(size_t(s.width) * s.height * s.nchannels);
   buf.get_pixels(OIIO::ROI(s.x, s.x + s.width, s.y, s.y + s.height, 0, 1, 0, s.nchannels), OIIO::TypeDesc::FLOAT, pixels.data());

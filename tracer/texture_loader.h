@@ -21,8 +21,13 @@ class TextureLoader {
   Vec3 colour(JsonObject& obj, const std::string& key, uint32_t& texture);
   Vec3 colour_or(JsonObject& obj, const std::string& key, Vec3 fallback, uint32_t& texture);
 
+  // The six faces of a cubemap background (`faces`: +x, -x, +y, -y, +z, -z): square images
+  // of one size, clamped at their edges.
+  void cube_faces(JsonObject& background, uint32_t faces[6]);
+
  private:
-  uint32_t image(JsonObject& spec, const std::string& file, TextureWrap wrap, Vec3& mean);
+  // `where` is the key path errors name.
+  uint32_t image(const std::string& where, const std::string& file, TextureWrap wrap, Vec3& mean);
 
   Scene& scene_;
   std::string dir_;

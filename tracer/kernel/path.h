@@ -34,7 +34,7 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, ui
   for (uint32_t depth = 0;; ++depth) {
     const Hit hit = trace_closest(scene, ray, kInfinity);
     if (hit.prim == kNoHit) {
-      radiance += throughput * background_radiance(scene.background, ray.dir);
+      radiance += throughput * background_radiance(scene, ray.dir);
       break;
     }
     const Surface s = surface_at(scene, ray, hit);

@@ -20,7 +20,7 @@ namespace tracer {
 
 enum class AccelKind : uint32_t { Bvh, None, Kdtree, KdtreeMedian, Grid, Lbvh };
 enum class IntegratorKind : uint32_t { Whitted, Normals, Albedo, Depth, Path };
-enum class BackgroundKind : uint32_t { Constant, Gradient };
+enum class BackgroundKind : uint32_t { Constant, Gradient, Cubemap };
 
 struct PointLight {
   Vec3 position;
@@ -40,8 +40,9 @@ struct LightEntry {
 
 struct Background {
   BackgroundKind kind;
-  Vec3 radiance;  // constant; the zenith colour for gradient
-  Vec3 horizon;   // gradient only
+  Vec3 radiance;      // constant; the zenith colour for gradient
+  Vec3 horizon;       // gradient only
+  uint32_t faces[6];  // cubemap: textures of the faces +x, -x, +y, -y, +z, -z
 };
 
 // Whitted effects that can be switched off to measure their cost (`--effects`, `tracer

@@ -34,8 +34,8 @@ TRACER_HD Vec3 texel_at(const float* texels, const Texture& t, int x, int y) {
   return {p[0], p[1], p[2]};
 }
 
-// Bilinear filter: weights (1 - fx)(1 - fy), fx (1 - fy), (1 - fx) fy, fx fy of the four
-// texels around (u, v), added in that order.
+// Bilinear filter as two linear interpolations along x, then one along y, each a + (b - a) f:
+// a constant texture returns its value exactly, and a texel centre (f = 0) its texel.
 TRACER_HD Vec3 sample_texture(const Texture* textures, const float* texels, uint32_t index, float u, float v) {
   const Texture& t = textures[index];
   if (t.kind == TextureKind::Checker) {
@@ -59,8 +59,10 @@ TRACER_HD Vec3 sample_texture(const Texture* textures, const float* texels, uint
   const float x0 = floorf(x), y0 = floorf(y);
   const float fx = x - x0, fy = y - y0;
   const int ix = static_cast<int>(x0), iy = static_cast<int>(y0);
-  return texel_at(texels, t, ix, iy) * ((1.0f - fx) * (1.0f - fy)) + texel_at(texels, t, ix + 1, iy) * (fx * (1.0f - fy)) +
-         texel_at(texels, t, ix, iy + 1) * ((1.0f - fx) * fy) + texel_at(texels, t, ix + 1, iy + 1) * (fx * fy);
+  const Vec3 t00 = texel_at(texels, t, ix, iy), t10 = texel_at(texels, t, ix + 1, iy);
+  const Vec3 t01 = texel_at(texels, t, ix, iy + 1), t11 = texel_at(texels, t, ix + 1, iy + 1);
+  const Vec3 top = t00 + (t10 - t00) * fx, bottom = t01 + (t11 - t01) * fx;
+  return top + (bottom - top) * fy;
 }
 
 }  // namespace tracer

@@ -103,7 +103,7 @@ TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, R
     const WhittedTask task = stack[--top];
     const Hit hit = trace_closest(scene, task.ray, kInfinity);
     if (hit.prim == kNoHit) {
-      radiance += task.weight * background_radiance(scene.background, task.ray.dir);
+      radiance += task.weight * background_radiance(scene, task.ray.dir);
       continue;
     }
     const Surface s = surface_at(scene, task.ray, hit);
