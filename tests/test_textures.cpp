@@ -152,8 +152,8 @@ TEST(Textures, SphereUvSeamHasNoCrack) {
   for (const float y : {-0.5f, 0.0f, 0.5f}) {
     // Two rays hitting the sphere on either side of the seam (x < 0, z = -+1e-4).
     const Ray above = {{-3, y, 1e-4f}, {1, 0, 0}}, below = {{-3, y, -1e-4f}, {1, 0, 0}};
-    const Surface sa = surface_at(view, above, trace_closest(view, above, kInfinity));
-    const Surface sb = surface_at(view, below, trace_closest(view, below, kInfinity));
+    Surface sa = surface_at(view, above, trace_closest(view, above, kInfinity));
+    Surface sb = surface_at(view, below, trace_closest(view, below, kInfinity));
     EXPECT_GT(std::abs(sa.u - sb.u), 0.99f) << "the two points straddle the seam";
     const float ca = material_at(view, sa).albedo.x, cb = material_at(view, sb).albedo.x;
     EXPECT_NEAR(ca, cb, 1e-3f) << "crack at the seam, y = " << y;

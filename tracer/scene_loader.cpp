@@ -39,6 +39,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
   m.ior = 1.0f;
   m.shininess = 1.0f;
   for (uint32_t& t : m.texture) t = kNoTexture;
+  m.specular_map = m.normal_map = m.bump_map = kNoTexture;
   type = read_type(obj, "material");
   if (type == "lambert") {
     m.kind = MaterialKind::Lambert;
@@ -70,13 +71,17 @@ Material read_material(const Json& value, const std::string& path, const std::st
     if (!(m.transparency >= 0.0f && m.transparency <= 1.0f)) obj.fail("transparency", "must be in [0, 1]");
     m.ior = obj.number_or("ior", 1.0f);
     if (!(m.ior > 0.0f)) obj.fail("ior", "must be > 0");
-    for (const char* map : {"specular_map", "normal_map", "bump_map"})
-      if (obj.find(map)) not_supported(obj, map, "texture maps");
+    m.specular_map = textures.data_map(obj, "specular_map");
   } else if (type == "emissive") {
     m.kind = MaterialKind::Emissive;
     m.radiance = textures.colour(obj, "radiance", m.texture[kSlotRadiance]);
     m.two_sided = obj.boolean_or("two_sided", false) ? 1u : 0u;
     m.albedo = textures.colour_or(obj, "albedo", {0.0f, 0.0f, 0.0f}, m.texture[kSlotAlbedo]);  // an emitter that also reflects
+  }
+  if (type != "dielectric" && type != "emissive") {  // surfaces with a diffuse or glossy response
+    m.normal_map = textures.data_map(obj, "normal_map");
+    m.bump_map = textures.data_map(obj, "bump_map");
+    if (m.normal_map != kNoTexture && m.bump_map != kNoTexture) obj.fail("bump_map", "give a normal_map or a bump_map, not both");
   }
   obj.finish();
   return m;

@@ -13,7 +13,7 @@ const std::map<std::string, std::vector<std::string>>& accepted_scene_types() {
       {"integrator", {"whitted", "normals", "albedo", "depth", "path"}},
       {"sampler", {"center", "grid", "stochastic", "stratified"}},
       {"accel", {"bvh", "none", "kdtree", "kdtree-median", "grid", "lbvh"}},
-      {"texture", {"image", "checker"}},
+      {"texture", {"image", "checker", "specular_map", "normal_map", "bump_map"}},
   };
   return types;
 }

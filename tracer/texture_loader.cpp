@@ -75,9 +75,18 @@ void TextureLoader::cube_faces(JsonObject& background, uint32_t faces[6]) {
   scene_.features |= kFeatureTextures;
 }
 
-uint32_t TextureLoader::image(const std::string& where, const std::string& file, TextureWrap wrap, Vec3& mean) {
+uint32_t TextureLoader::data_map(JsonObject& obj, const std::string& key) {
+  if (!obj.find(key)) return kNoTexture;
+  Vec3 mean;
+  const uint32_t index = image(obj.child(key), obj.string(key), TextureWrap::Repeat, mean, true);
+  scene_.features |= kFeatureTextures;
+  scene_.used_types.insert("texture:" + key);
+  return index;
+}
+
+uint32_t TextureLoader::image(const std::string& where, const std::string& file, TextureWrap wrap, Vec3& mean, bool data) {
   const std::string path = (std::filesystem::path(dir_) / file).string();
-  const auto known = loaded_.find({path, wrap});
+  const auto known = loaded_.find({path, wrap, data});
   if (known != loaded_.end()) {
     mean = known->second.second;
     return known->second.first;
@@ -90,7 +99,7 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& file,
   if (s.nchannels != 1 && s.nchannels != 3 && s.nchannels != 4)
     fail_at(scene_file, where, path + ": expected 1, 3 or 4 channels, got " + std::to_string(s.nchannels));
   if (s.width < 1 || s.height < 1) fail_at(scene_file, where, path + ": empty image");
-  const bool srgb = !buf.nativespec().format.is_floating_point();
+  const bool srgb = !data && !buf.nativespec().format.is_floating_point();
   std::vector<float> pixels(size_t(s.width) * s.height * s.nchannels);
   buf.get_pixels(OIIO::ROI(s.x, s.x + s.width, s.y, s.y + s.height, 0, 1, 0, s.nchannels), OIIO::TypeDesc::FLOAT, pixels.data());
   Texture t{};
@@ -111,7 +120,7 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& file,
   mean = {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
   const uint32_t index = static_cast<uint32_t>(scene_.textures.size());
   scene_.textures.push_back(t);
-  loaded_[{path, wrap}] = {index, mean};
+  loaded_[{path, wrap, data}] = {index, mean};
   return index;
 }
 

@@ -6,6 +6,7 @@
 // colour itself is set to the texture's mean, the value light power and debug views use.
 #pragma once
 #include <map>
+#include <tuple>
 #include <string>
 
 #include "json_reader.h"
@@ -25,13 +26,17 @@ class TextureLoader {
   // of one size, clamped at their edges.
   void cube_faces(JsonObject& background, uint32_t faces[6]);
 
+  // A data map (normal, bump or specular map: `key` is an image file, read without sRGB
+  // decoding); kNoTexture when the key is absent.
+  uint32_t data_map(JsonObject& obj, const std::string& key);
+
  private:
   // `where` is the key path errors name.
-  uint32_t image(const std::string& where, const std::string& file, TextureWrap wrap, Vec3& mean);
+  uint32_t image(const std::string& where, const std::string& file, TextureWrap wrap, Vec3& mean, bool data = false);
 
   Scene& scene_;
   std::string dir_;
-  std::map<std::pair<std::string, TextureWrap>, std::pair<uint32_t, Vec3>> loaded_;
+  std::map<std::tuple<std::string, TextureWrap, bool>, std::pair<uint32_t, Vec3>> loaded_;
 };
 
 // The sRGB transfer function's inverse (IEC 61966-2-1), with det_pow.

@@ -125,9 +125,12 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
   const Material& m = scene.materials[p.material];
   const bool front = dot(s.wi, ng) < 0.0f;  // the light's front faces the shading point
   if (!front && !m.two_sided) return s;
-  s.radiance = m.texture[kSlotRadiance] == kNoTexture
-                   ? m.radiance
-                   : material_at(scene, surface_at(scene, {from, s.wi}, {s.distance, entry.index, b1, b2})).radiance;
+  if (m.texture[kSlotRadiance] == kNoTexture) {
+    s.radiance = m.radiance;
+  } else {
+    Surface at = surface_at(scene, {from, s.wi}, {s.distance, entry.index, b1, b2});
+    s.radiance = material_at(scene, at).radiance;
+  }
   s.pdf = light_pdf(scene, entry.index, from, s.wi, s.distance, ng);
   s.valid = s.pdf > 0.0f && s.pdf < kInfinity;
   return s;

@@ -26,6 +26,9 @@ struct Material {
   float transparency;   // phong
   float ior;            // dielectric, phong
   uint32_t texture[kColourSlots];  // per ColourSlot: kNoTexture, or the texture replacing it
+  uint32_t specular_map;           // phong: scales specular; kNoTexture when absent
+  uint32_t normal_map;             // tangent-space normals (2c - 1); kNoTexture when absent
+  uint32_t bump_map;               // heights; kNoTexture when absent
 };
 
 }  // namespace tracer

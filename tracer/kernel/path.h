@@ -37,8 +37,8 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, ui
       radiance += throughput * background_radiance(scene, ray.dir);
       break;
     }
-    const Surface s = surface_at(scene, ray, hit);
-    const Material m = material_at(scene, s);
+    Surface s = surface_at(scene, ray, hit);
+    const Material m = material_at(scene, s);  // may bend s.ns by a normal or bump map
     const bool front = dot(ray.dir, s.ng) < 0.0f;
     if (m.kind == MaterialKind::Emissive && (front || m.two_sided)) {
       const float w = nee && !specular

@@ -12,12 +12,14 @@ struct Surface {
   Vec3 ns;  // unit shading normal, on the same side as ng
   float u, v;
   uint32_t material;
+  uint32_t prim;
 };
 
 TRACER_HD Surface surface_at(const SceneView& scene, const Ray& ray, const Hit& hit) {
   const Primitive& prim = scene.primitives[hit.prim];
   Surface s;
   s.material = prim.material;
+  s.prim = hit.prim;
   // The hit point is re-derived from the primitive (barycentrics, planar coordinates, a
   // projection onto the surface) rather than taken as o + t d: the origin offset of
   // ray_offset.h assumes a point accurate to a few ulps of its coordinates.
@@ -79,13 +81,62 @@ TRACER_HD Surface surface_at(const SceneView& scene, const Ray& ray, const Hit& 
   return s;
 }
 
-// The material at a surface point: its textured colours looked up at (u, v).
-TRACER_HD Material material_at(const SceneView& scene, const Surface& s) {
+// Unit tangent along increasing u at the surface point, orthogonal to the shading normal
+// (Gram-Schmidt): from the triangle's uv derivatives, the quad's u edge, the sphere's
+// longitude direction, the plane's frame; frame_around(ns) where those degenerate.
+TRACER_HD Vec3 surface_tangent(const SceneView& scene, const Surface& s) {
+  const Primitive& p = scene.primitives[s.prim];
+  Vec3 t = {0.0f, 0.0f, 0.0f};
+  switch (p.kind) {
+    case ShapeKind::Quad: t = p.b; break;
+    case ShapeKind::Plane: t = frame_around(p.b).t; break;
+    case ShapeKind::Sphere: t = {-s.ng.z, 0.0f, s.ng.x}; break;  // d p / d u of u = atan2(z, x) / 2 pi
+    case ShapeKind::Triangle: {
+      t = p.b - p.a;  // barycentric u when there are no uvs
+      if (p.shading >= 0 && scene.triangle_shading[p.shading].has_uvs) {
+        const TriangleShading& sh = scene.triangle_shading[p.shading];
+        const float du1 = sh.u1 - sh.u0, dv1 = sh.v1 - sh.v0, du2 = sh.u2 - sh.u0, dv2 = sh.v2 - sh.v0;
+        const float det = du1 * dv2 - du2 * dv1;
+        if (det != 0.0f) t = ((p.b - p.a) * dv2 - (p.c - p.a) * dv1) / det;
+      }
+      break;
+    }
+  }
+  t = t - s.ns * dot(t, s.ns);
+  const float len = length(t);
+  return len > 0.0f ? t / len : frame_around(s.ns).t;
+}
+
+// The material at a surface point: its textured colours looked up at (u, v); a normal or
+// bump map bends s.ns. Unit map values that leave the normal unchanged (a normal map of
+// (0.5, 0.5, 1), a flat height field) leave it unchanged bit for bit.
+TRACER_HD Material material_at(const SceneView& scene, Surface& s) {
   Material m = scene.materials[s.material];
   if (!(scene.features & kFeatureTextures)) return m;
   Vec3* colour[kColourSlots] = {&m.albedo, &m.ambient, &m.specular, &m.tint, &m.radiance};
   for (uint32_t k = 0; k < kColourSlots; ++k)
     if (m.texture[k] != kNoTexture) *colour[k] = sample_texture(scene.textures, scene.texels, m.texture[k], s.u, s.v);
+  if (m.specular_map != kNoTexture) m.specular = m.specular * sample_texture(scene.textures, scene.texels, m.specular_map, s.u, s.v);
+  if (m.normal_map == kNoTexture && m.bump_map == kNoTexture) return m;
+  const Vec3 t = surface_tangent(scene, s), b = cross(s.ns, t);
+  Vec3 local = {0.0f, 0.0f, 1.0f};
+  if (m.normal_map != kNoTexture) {
+    local = sample_texture(scene.textures, scene.texels, m.normal_map, s.u, s.v) * 2.0f - Vec3{1.0f, 1.0f, 1.0f};
+  } else {
+    // Heights by central differences one texel apart; a height step of 1 across a texel
+    // tilts the normal by 45 degrees.
+    const Texture& h = scene.textures[m.bump_map];
+    const float du = 1.0f / static_cast<float>(h.width), dv = 1.0f / static_cast<float>(h.height);
+    const float hu = sample_texture(scene.textures, scene.texels, m.bump_map, s.u + du, s.v).x -
+                     sample_texture(scene.textures, scene.texels, m.bump_map, s.u - du, s.v).x;
+    const float hv = sample_texture(scene.textures, scene.texels, m.bump_map, s.u, s.v + dv).x -
+                     sample_texture(scene.textures, scene.texels, m.bump_map, s.u, s.v - dv).x;
+    local = {-0.5f * hu, -0.5f * hv, 1.0f};
+  }
+  if (local.x == 0.0f && local.y == 0.0f && local.z > 0.0f) return m;
+  const Vec3 n = t * local.x + b * local.y + s.ns * local.z;
+  const float len = length(n);
+  if (len > 0.0f && dot(n, s.ng) * dot(s.ns, s.ng) > 0.0f) s.ns = n / len;  // stays on the shading side
   return m;
 }
 

@@ -106,7 +106,7 @@ TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, R
       radiance += task.weight * background_radiance(scene, task.ray.dir);
       continue;
     }
-    const Surface s = surface_at(scene, task.ray, hit);
+    Surface s = surface_at(scene, task.ray, hit);
     const WhittedResponse w = whitted_response(material_at(scene, s));
     const bool front = dot(task.ray.dir, s.ng) < 0.0f;
     const Vec3 n = front ? s.ns : -s.ns;  // shading normal facing the incoming ray

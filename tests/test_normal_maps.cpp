@@ -1,0 +1,90 @@
+// Normal, bump and specular maps: maps that describe the unperturbed surface change nothing,
+// bit for bit; a tilted normal map tilts the Lambert cosine as predicted.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "image_io.h"
+#include "input_error.h"
+#include "render_cpu.h"
+#include "test_util.h"
+
+namespace tracer {
+namespace {
+
+// A quad facing +z under a point light, seen head-on, with `extra` material keys.
+std::string lit_quad(const std::string& extra, const std::string& integrator = "whitted") {
+  return R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
+    "film": {"width": 32, "height": 32}, "render": {"integrator": ")" + integrator + R"(", "sampler": "center", "max_depth": 1},
+    "materials": {"m": {"type": "phong", "diffuse": [0.6, 0.6, 0.6], "specular": [0.3, 0.3, 0.3], "shininess": 20)" + extra + R"(}},
+    "lights": [{"type": "point", "position": [0.7, 0.4, 1.5], "intensity": [3, 3, 3]}],
+    "shapes": [{"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "m"},
+               {"type": "sphere", "center": [0.5, -0.4, 0.3], "radius": 0.3, "material": "m"}]})";
+}
+
+Image constant_image(uint32_t n, float r, float g, float b) {
+  Image img{n, n, {}};
+  for (uint32_t i = 0; i < n * n; ++i) img.rgb.insert(img.rgb.end(), {r, g, b});
+  return img;
+}
+
+Image render_in(const std::filesystem::path& dir, const std::string& json) {
+  RenderStats stats;
+  return render_cpu(load_scene_text(json, (dir / "s.json").string()), 1, stats);
+}
+
+bool same_bits(const Image& a, const Image& b) {
+  return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)) == 0;
+}
+
+TEST(NormalMaps, FlatNormalMapAndConstantBumpMapChangeNothing) {
+  const auto dir = test::temp_dir("maps-flat");
+  write_image(constant_image(8, 0.5f, 0.5f, 1.0f), (dir / "flat.exr").string());
+  write_image(constant_image(8, 0.3f, 0.3f, 0.3f), (dir / "height.exr").string());
+  write_image(constant_image(8, 1.0f, 1.0f, 1.0f), (dir / "white.exr").string());
+  for (const char* integrator : {"whitted", "path", "normals"}) {
+    const Image plain = render_in(dir, lit_quad("", integrator));
+    EXPECT_TRUE(same_bits(plain, render_in(dir, lit_quad(R"(, "normal_map": "flat.exr")", integrator)))) << integrator;
+    EXPECT_TRUE(same_bits(plain, render_in(dir, lit_quad(R"(, "bump_map": "height.exr")", integrator)))) << integrator;
+    EXPECT_TRUE(same_bits(plain, render_in(dir, lit_quad(R"(, "specular_map": "white.exr")", integrator)))) << integrator;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// A normal map of (sin a, 0, cos a) in tangent space tilts the quad's normal toward +x
+// (its u direction) by a; with the light at (1, 0, 1) from the centre pixel the path
+// tracer's direct light there becomes albedo I (n . l) / (pi d^2) with the tilted n (a
+// tilt toward -x would give cos a - sin a instead of cos a + sin a).
+TEST(NormalMaps, TiltedNormalMapTiltsTheCosine) {
+  const auto dir = test::temp_dir("maps-tilt");
+  const float a = 0.5f;
+  write_image(constant_image(4, 0.5f + 0.5f * std::sin(a), 0.5f, 0.5f + 0.5f * std::cos(a)), (dir / "tilt.exr").string());
+  const std::string scene = R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
+    "film": {"width": 33, "height": 33}, "render": {"integrator": "path", "sampler": "center", "max_depth": 1},
+    "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5], "normal_map": "tilt.exr"}},
+    "lights": [{"type": "point", "position": [1, 0, 1], "intensity": [2, 2, 2]}],
+    "shapes": [{"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "m"}]})";
+  const Image img = render_in(dir, scene);
+  const float centre = img.rgb[3 * (16 * 33 + 16)];  // the point (0, 0, 0): d^2 = 2
+  const double n_x = 2.0 * (0.5 + 0.5 * std::sin(a)) - 1.0, n_z = 2.0 * (0.5 + 0.5 * std::cos(a)) - 1.0;
+  const double cos = (n_x + n_z) / std::sqrt(2.0) / std::sqrt(n_x * n_x + n_z * n_z);
+  const double expected = 0.5 / M_PI * 2.0 * cos / 2.0;
+  EXPECT_NEAR(centre, expected, 1e-5 * expected);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(NormalMaps, NormalAndBumpMapTogetherIsAnError) {
+  const auto dir = test::temp_dir("maps-both");
+  write_image(constant_image(4, 0.5f, 0.5f, 1.0f), (dir / "flat.exr").string());
+  try {
+    load_scene_text(lit_quad(R"(, "normal_map": "flat.exr", "bump_map": "flat.exr")"), (dir / "s.json").string());
+    ADD_FAILURE() << "accepted both maps";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("materials.m.bump_map: give a normal_map or a bump_map"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tracer
