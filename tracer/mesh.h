@@ -14,11 +14,22 @@ struct MeshTriangle {
   float uv[3][2];
   bool has_normals = false;
   bool has_uvs = false;
+  int32_t mtl = -1;  // the face's material in the OBJ's MTL file, or -1
+};
+
+// A material of an OBJ's MTL file, as written there (tracer/mtl_materials.cpp maps it).
+struct MtlMaterial {
+  std::string name;
+  Vec3 kd, ks, ke;
+  float ns = 0.0f, ni = 1.0f, d = 1.0f;
+  int illum = 0;
+  std::string map_kd, map_ks, map_bump, norm;  // file names relative to the OBJ
 };
 
 // Loads an OBJ file with tinyobjloader; polygons are fan-triangulated (v0, vk, vk+1).
 // `key_path` names the scene key that referred to the file, for error messages.
+// With `materials`, also returns the MTL materials (an error when the file names none).
 std::vector<MeshTriangle> load_obj(const std::string& path, const std::string& scene_file,
-                                   const std::string& key_path);
+                                   const std::string& key_path, std::vector<MtlMaterial>* materials = nullptr);
 
 }  // namespace tracer

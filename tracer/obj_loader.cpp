@@ -8,7 +8,7 @@
 namespace tracer {
 
 std::vector<MeshTriangle> load_obj(const std::string& path, const std::string& scene_file,
-                                   const std::string& key_path) {
+                                   const std::string& key_path, std::vector<MtlMaterial>* materials) {
   auto fail = [&](const std::string& message) -> void {
     throw InputError(scene_file + ": " + key_path + ": " + path + ": " + message);
   };
@@ -40,6 +40,7 @@ std::vector<MeshTriangle> load_obj(const std::string& path, const std::string& s
         const tinyobj::index_t corners[3] = {idx[0], idx[k], idx[k + 1]};
         MeshTriangle tri;
         tri.has_normals = tri.has_uvs = true;
+        tri.mtl = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
         for (int c = 0; c < 3; ++c) {
           const int vi = corners[c].vertex_index, ni = corners[c].normal_index,
                     ti = corners[c].texcoord_index;
@@ -64,6 +65,28 @@ std::vector<MeshTriangle> load_obj(const std::string& path, const std::string& s
     }
   }
   if (out.empty()) fail("no faces");
+  if (materials) {
+    const auto& mtl = reader.GetMaterials();
+    if (mtl.empty())
+      fail("the mesh has no \"material\" and its OBJ names no MTL materials" +
+           (reader.Warning().empty() ? std::string() : " (" + reader.Warning().substr(0, reader.Warning().find('\n')) + ")"));
+    for (const tinyobj::material_t& m : mtl) {
+      MtlMaterial out_m;
+      out_m.name = m.name;
+      out_m.kd = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
+      out_m.ks = {m.specular[0], m.specular[1], m.specular[2]};
+      out_m.ke = {m.emission[0], m.emission[1], m.emission[2]};
+      out_m.ns = m.shininess;
+      out_m.ni = m.ior;
+      out_m.d = m.dissolve;
+      out_m.illum = m.illum;
+      out_m.map_kd = m.diffuse_texname;
+      out_m.map_ks = m.specular_texname;
+      out_m.map_bump = m.bump_texname;
+      out_m.norm = m.normal_texname;
+      materials->push_back(out_m);
+    }
+  }
   return out;
 }
 

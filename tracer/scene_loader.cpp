@@ -9,6 +9,7 @@
 #include "light_table.h"
 #include "kernel/whitted.h"
 #include "mesh.h"
+#include "mtl_materials.h"
 #include "scene_types.h"
 #include "text_file.h"
 #include "texture_loader.h"
@@ -133,7 +134,8 @@ Transform read_transform(const Json& value, const std::string& path, const std::
 
 class SceneBuilder {
  public:
-  SceneBuilder(Scene& scene, const std::string& dir) : scene_(scene), dir_(dir) {}
+  SceneBuilder(Scene& scene, const std::string& dir, TextureLoader& textures)
+      : scene_(scene), dir_(dir), textures_(textures) {}
 
   void add_shape(const Json& value, const std::string& path,
                  const std::map<std::string, uint32_t>& material_ids,
@@ -142,17 +144,16 @@ class SceneBuilder {
     const std::string type = obj.string("type");
     if (!is_accepted_type("shape", type))
       obj.fail("type", "unknown shape type \"" + type + "\" (expected " + expected_types("shape") + ")");
+    const Json* tv = obj.find("transform");
+    const Transform xf = tv ? read_transform(*tv, obj.child("transform"), scene_.file) : Transform{};
     const Json* mat = obj.find("material");
-    if (!mat) {
-      if (type == "mesh") not_supported(obj, "material", "materials from the OBJ's MTL file; give the mesh a \"material\"");
-      obj.fail("material", "missing required key");
-    }
+    if (!mat && type == "mesh" && obj.find("file")) return add_mtl_mesh(obj, xf);
+    if (!mat) obj.fail("material", type == "mesh" ? "missing: give the mesh a \"material\", or a file whose MTL has them"
+                                                  : "missing required key");
     if (!mat->is_string()) obj.fail("material", "expected a material name, got " + describe(*mat));
     const auto it = material_ids.find(mat->get<std::string>());
     if (it == material_ids.end()) obj.fail("material", "unknown material \"" + mat->get<std::string>() + "\"");
     const uint32_t material = it->second;
-    const Json* tv = obj.find("transform");
-    const Transform xf = tv ? read_transform(*tv, obj.child("transform"), scene_.file) : Transform{};
 
     if (type == "sphere") {
       const float radius = obj.number("radius");
@@ -170,15 +171,17 @@ class SceneBuilder {
       if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) obj.fail("max", "must exceed min on every axis");
       add_box(obj, lo, hi, xf, material);
     } else if (type == "triangle") {
-      add_triangles(obj, {inline_triangle(obj)}, xf, material);
+      add_triangles(obj, {inline_triangle(obj)}, xf, {material});
     } else if (type == "mesh") {
       if (obj.find("file")) {
         const std::string rel = obj.string("file");
         for (const char* k : {"positions", "indices", "normals", "uvs"})
           if (obj.find(k)) obj.fail(k, "a mesh has either \"file\" or inline data, not both");
-        add_triangles(obj, load_obj((std::filesystem::path(dir_) / rel).string(), scene_.file, obj.child("file")), xf, material);
+        const auto tris = load_obj((std::filesystem::path(dir_) / rel).string(), scene_.file, obj.child("file"));
+        add_triangles(obj, tris, xf, std::vector<uint32_t>(tris.size(), material));
       } else {
-        add_triangles(obj, inline_mesh(obj), xf, material);
+        const auto tris = inline_mesh(obj);
+        add_triangles(obj, tris, xf, std::vector<uint32_t>(tris.size(), material));
       }
     }
     obj.finish();
@@ -188,6 +191,37 @@ class SceneBuilder {
   }
 
  private:
+  // A mesh whose faces take the materials of its OBJ's MTL file (mtl_materials.h); faces
+  // with no usemtl get a grey lambert.
+  void add_mtl_mesh(JsonObject& obj, const Transform& xf) {
+    const std::filesystem::path file = std::filesystem::path(dir_) / obj.string("file");
+    for (const char* k : {"positions", "indices", "normals", "uvs"})
+      if (obj.find(k)) obj.fail(k, "a mesh has either \"file\" or inline data, not both");
+    std::vector<MtlMaterial> mtls;
+    const auto tris = load_obj(file.string(), scene_.file, obj.child("file"), &mtls);
+    const uint32_t base = static_cast<uint32_t>(scene_.materials.size());
+    for (const MtlMaterial& mtl : mtls) {
+      std::string type;
+      scene_.materials.push_back(material_from_mtl(mtl, textures_, file.parent_path().string(), obj.child("file"), type));
+      scene_.material_names.push_back(file.filename().string() + ":" + mtl.name);
+      scene_.used_types.insert("material:" + type);
+    }
+    Material grey{};
+    grey.kind = MaterialKind::Lambert;
+    grey.albedo = {0.5f, 0.5f, 0.5f};
+    for (uint32_t& t : grey.texture) t = kNoTexture;
+    grey.specular_map = grey.normal_map = grey.bump_map = kNoTexture;
+    const uint32_t fallback = static_cast<uint32_t>(scene_.materials.size());
+    scene_.materials.push_back(grey);
+    scene_.material_names.push_back(file.filename().string() + ":(no usemtl)");
+    std::vector<uint32_t> materials;
+    for (const MeshTriangle& t : tris) materials.push_back(t.mtl >= 0 ? base + static_cast<uint32_t>(t.mtl) : fallback);
+    add_triangles(obj, tris, xf, materials);
+    obj.finish();
+    ++scene_.shape_counts["mesh"];
+    scene_.used_types.insert("shape:mesh");
+  }
+
   void add(const Primitive& p) {
     if (!is_finite(p.a) || !is_finite(p.b) || !is_finite(p.c) || !is_finite(p.radius))
       throw InputError(scene_.file + ": a transformed shape has non-finite coordinates");
@@ -274,8 +308,12 @@ class SceneBuilder {
     return tris;
   }
 
-  void add_triangles(JsonObject& obj, const std::vector<MeshTriangle>& tris, const Transform& xf, uint32_t material) {
-    for (const MeshTriangle& t : tris) {
+  // One material per triangle.
+  void add_triangles(JsonObject& obj, const std::vector<MeshTriangle>& tris, const Transform& xf,
+                     const std::vector<uint32_t>& materials) {
+    for (size_t i = 0; i < tris.size(); ++i) {
+      const MeshTriangle& t = tris[i];
+      const uint32_t material = materials[i];
       int32_t shading = -1;
       if (t.has_normals || t.has_uvs) {
         TriangleShading sh{};
@@ -301,6 +339,7 @@ class SceneBuilder {
 
   Scene& scene_;
   std::string dir_;
+  TextureLoader& textures_;
 };
 
 // The enum value of a name is its index in the loader's table (scene_types.cpp), which
@@ -498,7 +537,7 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
 
   const Json& shapes = top.get("shapes");
   if (!shapes.is_array()) top.fail("shapes", "expected an array, got " + describe(shapes));
-  SceneBuilder builder(scene, std::filesystem::path(path).parent_path().string());
+  SceneBuilder builder(scene, std::filesystem::path(path).parent_path().string(), textures);
   for (size_t i = 0; i < shapes.size(); ++i)
     builder.add_shape(shapes[i], "shapes[" + std::to_string(i) + "]", material_ids, material_types);
   top.finish();

@@ -75,6 +75,12 @@ void TextureLoader::cube_faces(JsonObject& background, uint32_t faces[6]) {
   scene_.features |= kFeatureTextures;
 }
 
+uint32_t TextureLoader::image_file(const std::string& where, const std::string& path, bool data, Vec3& mean) {
+  scene_.features |= kFeatureTextures;
+  if (!data) scene_.used_types.insert("texture:image");
+  return image(where, path, TextureWrap::Repeat, mean, data);
+}
+
 uint32_t TextureLoader::data_map(JsonObject& obj, const std::string& key) {
   if (!obj.find(key)) return kNoTexture;
   Vec3 mean;
