@@ -20,11 +20,6 @@ namespace {
 
 constexpr uint32_t kMaxResolution = 16384;
 
-// Later issues own these keys; until then a scene that uses them fails loudly.
-[[noreturn]] void not_supported(JsonObject& obj, const std::string& key, const std::string& what) {
-  obj.fail(key, "not supported yet: " + what);
-}
-
 // Reads the `type` key of a section and checks it against the loader's table.
 std::string read_type(JsonObject& obj, const std::string& category) {
   const std::string type = obj.string("type");

@@ -8,6 +8,10 @@
 
 namespace tracer {
 
+std::string TextureLoader::resolve(const std::string& file) const {
+  return (std::filesystem::path(dir_) / file).string();
+}
+
 float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : det_pow((c + 0.055f) / 1.055f, 2.4f); }
 
 Vec3 TextureLoader::colour(JsonObject& obj, const std::string& key, uint32_t& texture) {
@@ -24,7 +28,7 @@ Vec3 TextureLoader::colour(JsonObject& obj, const std::string& key, uint32_t& te
     const std::string file = spec.string("texture");
     const std::string wrap = spec.string_or("wrap", "repeat");
     if (wrap != "repeat" && wrap != "clamp") spec.fail("wrap", "expected \"repeat\" or \"clamp\", got \"" + wrap + "\"");
-    texture = image(spec.child("texture"), file, wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat, mean);
+    texture = image(spec.child("texture"), resolve(file), wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat, mean);
     scene_.used_types.insert("texture:image");
   } else if (spec.find("checker")) {
     JsonObject checker(spec.get("checker"), spec.child("checker"), obj.file());
@@ -63,7 +67,7 @@ void TextureLoader::cube_faces(JsonObject& background, uint32_t faces[6]) {
     const std::string where = background.child("faces") + "[" + std::to_string(i) + "]";
     if (!list[i].is_string()) fail_at(background.file(), where, "expected an image file, got " + describe(list[i]));
     Vec3 mean;
-    faces[i] = image(where, list[i].get<std::string>(), TextureWrap::Clamp, mean);
+    faces[i] = image(where, resolve(list[i].get<std::string>()), TextureWrap::Clamp, mean);
     const Texture& t = scene_.textures[faces[i]];
     const Texture& first = scene_.textures[faces[0]];
     if (t.width != t.height)
@@ -84,14 +88,13 @@ uint32_t TextureLoader::image_file(const std::string& where, const std::string& 
 uint32_t TextureLoader::data_map(JsonObject& obj, const std::string& key) {
   if (!obj.find(key)) return kNoTexture;
   Vec3 mean;
-  const uint32_t index = image(obj.child(key), obj.string(key), TextureWrap::Repeat, mean, true);
+  const uint32_t index = image(obj.child(key), resolve(obj.string(key)), TextureWrap::Repeat, mean, true);
   scene_.features |= kFeatureTextures;
   scene_.used_types.insert("texture:" + key);
   return index;
 }
 
-uint32_t TextureLoader::image(const std::string& where, const std::string& file, TextureWrap wrap, Vec3& mean, bool data) {
-  const std::string path = (std::filesystem::path(dir_) / file).string();
+uint32_t TextureLoader::image(const std::string& where, const std::string& path, TextureWrap wrap, Vec3& mean, bool data) {
   const auto known = loaded_.find({path, wrap, data});
   if (known != loaded_.end()) {
     mean = known->second.second;

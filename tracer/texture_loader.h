@@ -30,12 +30,14 @@ class TextureLoader {
   // decoding); kNoTexture when the key is absent.
   uint32_t data_map(JsonObject& obj, const std::string& key);
 
-  // An image given by path (MTL maps); `where` names the scene key in errors.
+  // An image given by a path usable as it is (MTL maps, resolved against the OBJ's
+  // directory); `where` names the scene key in errors.
   uint32_t image_file(const std::string& where, const std::string& path, bool data, Vec3& mean);
 
  private:
-  // `where` is the key path errors name.
-  uint32_t image(const std::string& where, const std::string& file, TextureWrap wrap, Vec3& mean, bool data = false);
+  // `where` is the key path errors name; `path` is resolved already.
+  uint32_t image(const std::string& where, const std::string& path, TextureWrap wrap, Vec3& mean, bool data = false);
+  std::string resolve(const std::string& file) const;  // relative to the scene file
 
   Scene& scene_;
   std::string dir_;
