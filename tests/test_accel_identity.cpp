@@ -15,15 +15,7 @@
 namespace tracer {
 namespace {
 
-struct Stream {
-  uint64_t state;
-  float next() {
-    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return static_cast<float>((z ^ (z >> 31)) >> 40) * 0x1p-24f;
-  }
-};
+using Stream = test::InputStream;
 
 const std::vector<std::string>& structures() { return accepted_scene_types().at("accel"); }
 

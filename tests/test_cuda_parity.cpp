@@ -29,15 +29,9 @@ namespace {
     }                                                                        \
   } while (0)
 
-// splitmix64: a fixed stream of test inputs.
-struct Inputs {
-  uint64_t state;
-  uint64_t next() {
-    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
+// The fixed input stream, in the shapes the parity tests need.
+struct Inputs : test::InputStream {
+  uint64_t next() { return next_bits(); }
   float bits() { return float_of_bits(static_cast<uint32_t>(next())); }
   float uniform(float lo, float hi) { return lo + (hi - lo) * static_cast<float>(next() >> 40) * 0x1p-24f; }
   Vec3 in_box(float lo, float hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }

@@ -19,15 +19,7 @@ namespace {
 constexpr double kSignificance = 1e-3;
 constexpr int kSamples = 400000;
 
-struct Stream {  // splitmix64 to uniform floats in [0, 1)
-  uint64_t state;
-  float next() {
-    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return static_cast<float>((z ^ (z >> 31)) >> 40) * 0x1p-24f;
-  }
-};
+using Stream = test::InputStream;
 
 // Regularised upper incomplete gamma Q(a, x): series below a + 1, continued fraction above.
 double gamma_q(double a, double x) {

@@ -12,6 +12,18 @@
 
 namespace tracer::test {
 
+// A fixed stream of test inputs (splitmix64): the same numbers on every run and machine.
+struct InputStream {
+  uint64_t state;
+  uint64_t next_bits() {
+    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  float next() { return static_cast<float>(next_bits() >> 40) * 0x1p-24f; }  // uniform in [0, 1)
+};
+
 inline std::filesystem::path temp_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("tracer-test-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);

@@ -90,7 +90,7 @@ TRACER_HD Vec3 surface_tangent(const SceneView& scene, const Surface& s) {
   switch (p.kind) {
     case ShapeKind::Quad: t = p.b; break;
     case ShapeKind::Plane: t = frame_around(p.b).t; break;
-    case ShapeKind::Sphere: t = {-s.ng.z, 0.0f, s.ng.x}; break;  // d p / d u of u = atan2(z, x) / 2 pi
+    case ShapeKind::Sphere: t = {-s.ng.z, 0.0f, s.ng.x}; break;  // along the longitude, the sphere map's u
     case ShapeKind::Triangle: {
       t = p.b - p.a;  // barycentric u when there are no uvs
       if (p.shading >= 0 && scene.triangle_shading[p.shading].has_uvs) {
