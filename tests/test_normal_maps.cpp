@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "image_io.h"
+#include "mesh_tangents.h"
 #include "input_error.h"
 #include "render_cpu.h"
 #include "test_util.h"
@@ -84,6 +85,29 @@ TEST(NormalMaps, NormalAndBumpMapTogetherIsAnError) {
     EXPECT_NE(std::string(e.what()).find("materials.m.bump_map: give a normal_map or a bump_map"), std::string::npos) << e.what();
   }
   std::filesystem::remove_all(dir);
+}
+
+// Two triangles of a quad whose u runs along -x: every corner's tangent is -x. A third
+// triangle reuses the position (0, 0, 0) with another uv (a seam) and keeps its own, +z.
+TEST(NormalMaps, VertexTangentsFollowTheUvDirection) {
+  const auto tri = [](Vec3 a, Vec3 b, Vec3 c, float ua, float va, float ub, float vb, float uc, float vc) {
+    MeshTriangle t{};
+    t.p[0] = a, t.p[1] = b, t.p[2] = c;
+    t.uv[0][0] = ua, t.uv[0][1] = va, t.uv[1][0] = ub, t.uv[1][1] = vb, t.uv[2][0] = uc, t.uv[2][1] = vc;
+    t.has_uvs = true;
+    return t;
+  };
+  std::vector<MeshTriangle> mesh = {tri({0, 0, 0}, {-1, 0, 0}, {-1, 0, 1}, 0, 0, 1, 0, 1, 1),
+                                    tri({0, 0, 0}, {-1, 0, 1}, {0, 0, 1}, 0, 0, 1, 1, 0, 1),
+                                    tri({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 5, 0, 6, 0, 5, 1)};
+  compute_vertex_tangents(mesh);
+  for (int t = 0; t < 2; ++t)
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_TRUE(mesh[t].has_tangents);
+      EXPECT_NEAR(mesh[t].tangent[c].x, -1.0f, 1e-6f) << t << "," << c;
+      EXPECT_NEAR(mesh[t].tangent[c].z, 0.0f, 1e-6f) << t << "," << c;
+    }
+  EXPECT_NEAR(mesh[2].tangent[0].z, 1.0f, 1e-6f) << "the seam vertex keeps its own tangent";
 }
 
 }  // namespace

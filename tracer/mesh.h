@@ -14,6 +14,8 @@ struct MeshTriangle {
   float uv[3][2];
   bool has_normals = false;
   bool has_uvs = false;
+  bool has_tangents = false;  // per-vertex tangents (mesh_tangents.h)
+  Vec3 tangent[3];
   int32_t mtl = -1;  // the face's material in the OBJ's MTL file, or -1
 };
 

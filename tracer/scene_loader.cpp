@@ -9,6 +9,7 @@
 #include "light_table.h"
 #include "kernel/whitted.h"
 #include "mesh.h"
+#include "mesh_tangents.h"
 #include "mtl_materials.h"
 #include "scene_types.h"
 #include "text_file.h"
@@ -304,8 +305,9 @@ class SceneBuilder {
   }
 
   // One material per triangle.
-  void add_triangles(JsonObject& obj, const std::vector<MeshTriangle>& tris, const Transform& xf,
+  void add_triangles(JsonObject& obj, std::vector<MeshTriangle> tris, const Transform& xf,
                      const std::vector<uint32_t>& materials) {
+    compute_vertex_tangents(tris);
     for (size_t i = 0; i < tris.size(); ++i) {
       const MeshTriangle& t = tris[i];
       const uint32_t material = materials[i];
@@ -324,6 +326,12 @@ class SceneBuilder {
           sh.u0 = t.uv[0][0], sh.v0 = t.uv[0][1], sh.u1 = t.uv[1][0], sh.v1 = t.uv[1][1];
           sh.u2 = t.uv[2][0], sh.v2 = t.uv[2][1];
           sh.has_uvs = 1;
+        }
+        if (t.has_tangents) {
+          sh.t0 = xf.vector(t.tangent[0]);
+          sh.t1 = xf.vector(t.tangent[1]);
+          sh.t2 = xf.vector(t.tangent[2]);
+          sh.has_tangents = 1;
         }
         shading = static_cast<int32_t>(scene_.triangle_shading.size());
         scene_.triangle_shading.push_back(sh);

@@ -22,7 +22,8 @@ struct Primitive {
 struct TriangleShading {
   Vec3 n0, n1, n2;
   float u0, v0, u1, v1, u2, v2;
-  uint32_t has_normals, has_uvs;
+  Vec3 t0, t1, t2;  // per-vertex tangents, when has_tangents
+  uint32_t has_normals, has_uvs, has_tangents;
 };
 
 }  // namespace tracer

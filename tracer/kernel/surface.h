@@ -11,6 +11,7 @@ struct Surface {
   Vec3 ng;  // unit geometric normal, outward as the shape (or its vertex normals) define it
   Vec3 ns;  // unit shading normal, on the same side as ng
   float u, v;
+  float bary1, bary2;  // triangles: the hit's barycentric weights of v1 and v2
   uint32_t material;
   uint32_t prim;
 };
@@ -20,6 +21,8 @@ TRACER_HD Surface surface_at(const SceneView& scene, const Ray& ray, const Hit& 
   Surface s;
   s.material = prim.material;
   s.prim = hit.prim;
+  s.bary1 = hit.b1;
+  s.bary2 = hit.b2;
   // The hit point is re-derived from the primitive (barycentrics, planar coordinates, a
   // projection onto the surface) rather than taken as o + t d: the origin offset of
   // ray_offset.h assumes a point accurate to a few ulps of its coordinates.
@@ -93,7 +96,11 @@ TRACER_HD Vec3 surface_tangent(const SceneView& scene, const Surface& s) {
     case ShapeKind::Sphere: t = {-s.ng.z, 0.0f, s.ng.x}; break;  // along the longitude, the sphere map's u
     case ShapeKind::Triangle: {
       t = p.b - p.a;  // barycentric u when there are no uvs
-      if (p.shading >= 0 && scene.triangle_shading[p.shading].has_uvs) {
+      if (p.shading >= 0 && scene.triangle_shading[p.shading].has_tangents) {
+        const TriangleShading& sh = scene.triangle_shading[p.shading];
+        const float b1 = s.bary1, b2 = s.bary2;
+        t = sh.t0 * (1.0f - b1 - b2) + sh.t1 * b1 + sh.t2 * b2;
+      } else if (p.shading >= 0 && scene.triangle_shading[p.shading].has_uvs) {
         const TriangleShading& sh = scene.triangle_shading[p.shading];
         const float du1 = sh.u1 - sh.u0, dv1 = sh.v1 - sh.v0, du2 = sh.u2 - sh.u0, dv2 = sh.v2 - sh.v0;
         const float det = du1 * dv2 - du2 * dv1;
