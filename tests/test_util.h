@@ -4,9 +4,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "scene_loader.h"
 
@@ -36,6 +38,17 @@ inline Scene scene_from(const std::string& json, const RenderOverrides& ov = {})
 }
 
 inline std::string source_path(const std::string& rel) { return std::string(TRACER_SOURCE_DIR) + "/" + rel; }
+
+// The scene files every test may use: each .json under scenes/ except scenes/large/, whose
+// meshes ci/generate-meshes.sh writes at set-up (test_scene_loader.cpp checks those).
+inline std::vector<std::filesystem::path> shipped_scenes() {
+  std::vector<std::filesystem::path> out;
+  const std::filesystem::path large = std::filesystem::path(source_path("scenes")) / "large";
+  for (const auto& e : std::filesystem::recursive_directory_iterator(source_path("scenes")))
+    if (e.path().extension() == ".json" && e.path().parent_path() != large) out.push_back(e.path());
+  std::sort(out.begin(), out.end());
+  return out;
+}
 
 // Runs a shell command; returns its exit code and captures stderr+stdout.
 inline int run_command(const std::string& command, std::string* output = nullptr) {

@@ -77,7 +77,14 @@ std::string largest_mesh_scene(const std::string& dir, uint64_t& triangles) {
   std::string best;
   triangles = 0;
   for (const std::string& p : paths) {
-    const uint64_t n = triangle_count(load_scene(p));
+    uint64_t n = 0;
+    try {
+      n = triangle_count(load_scene(p));
+    } catch (const InputError& e) {  // scenes/large/ before ci/generate-meshes.sh ran
+      if (std::string(e.what()).find("no such file") == std::string::npos) throw;
+      std::printf("(skipping %s: %s)\n", p.c_str(), e.what());
+      continue;
+    }
     if (n > triangles) best = p, triangles = n;
   }
   if (best.empty()) throw InputError(dir + ": no scene with a triangle mesh");
