@@ -26,6 +26,17 @@ double mrays(size_t n, std::chrono::steady_clock::time_point start) {
   return static_cast<double>(n) / std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / 1e6;
 }
 
+// Our ray as Embree's, over (0, tfar].
+RTCRay to_rtc(const Ray& r, float tfar) {
+  RTCRay ray{};
+  ray.org_x = r.origin.x, ray.org_y = r.origin.y, ray.org_z = r.origin.z;
+  ray.dir_x = r.dir.x, ray.dir_y = r.dir.y, ray.dir_z = r.dir.z;
+  ray.tnear = 0.0f;
+  ray.tfar = tfar;
+  ray.mask = 0xffffffffu;
+  return ray;
+}
+
 }  // namespace
 
 bool embree_available() { return true; }
@@ -74,12 +85,7 @@ EmbreeRow embree_bench(const Scene& scene, const std::vector<Ray>& primary, cons
       RTCIntersectContext context;
       rtcInitIntersectContext(&context);
       RTCRayHit rh{};
-      const Ray& r = rays[i];
-      rh.ray.org_x = r.origin.x, rh.ray.org_y = r.origin.y, rh.ray.org_z = r.origin.z;
-      rh.ray.dir_x = r.dir.x, rh.ray.dir_y = r.dir.y, rh.ray.dir_z = r.dir.z;
-      rh.ray.tnear = 0.0f;
-      rh.ray.tfar = kInfinity;
-      rh.ray.mask = 0xffffffffu;
+      rh.ray = to_rtc(rays[i], kInfinity);
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
       rtcIntersect1(rtc, &context, &rh);
       prim[i] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kNoHit : ids[rh.hit.primID];
@@ -97,13 +103,7 @@ EmbreeRow embree_bench(const Scene& scene, const std::vector<Ray>& primary, cons
   for (int64_t i = 0; i < static_cast<int64_t>(shadow.size()); ++i) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRay ray{};
-    const Ray& r = shadow[i];
-    ray.org_x = r.origin.x, ray.org_y = r.origin.y, ray.org_z = r.origin.z;
-    ray.dir_x = r.dir.x, ray.dir_y = r.dir.y, ray.dir_z = r.dir.z;
-    ray.tnear = 0.0f;
-    ray.tfar = float_of_bits(bits_of(shadow_tmax[i]) - 1u);
-    ray.mask = 0xffffffffu;
+    RTCRay ray = to_rtc(shadow[i], float_of_bits(bits_of(shadow_tmax[i]) - 1u));
     rtcOccluded1(rtc, &context, &ray);
   }
   row.shadow = mrays(shadow.size(), t0);
