@@ -20,6 +20,7 @@ class DeviceScene {
         textures_(scene.textures),
         texels_(scene.texels),
         light_of_prim_(scene.light_of_prim),
+        sky_cells_(scene.sky_cells),
         kd_nodes_(scene.kd_nodes),
         kd_prims_(scene.kd_prims),
         grid_cell_start_(scene.grid_cell_start),
@@ -36,6 +37,7 @@ class DeviceScene {
     view_.textures = textures_.get();
     view_.texels = texels_.get();
     view_.light_of_prim = light_of_prim_.get();
+    view_.sky_cells = sky_cells_.get();
     view_.kd_nodes = kd_nodes_.get();
     view_.kd_prims = kd_prims_.get();
     view_.grid_cell_start = grid_cell_start_.get();
@@ -50,6 +52,7 @@ class DeviceScene {
            (s.bounded.size() + s.unbounded.size()) * sizeof(uint32_t) + s.bvh_nodes.size() * sizeof(BvhNode) +
            s.materials.size() * sizeof(Material) + s.lights.size() * sizeof(PointLight) +
            s.light_table.size() * sizeof(LightEntry) + s.light_of_prim.size() * sizeof(uint32_t) +
+           s.sky_cells.size() * sizeof(SkyCell) +
            s.kd_nodes.size() * sizeof(KdNode) + s.textures.size() * sizeof(Texture) + s.texels.size() * sizeof(float) +
            (s.kd_prims.size() + s.grid_cell_start.size() + s.grid_prims.size()) * sizeof(uint32_t);
   }
@@ -65,6 +68,7 @@ class DeviceScene {
   DeviceBuffer<Texture> textures_;
   DeviceBuffer<float> texels_;
   DeviceBuffer<uint32_t> light_of_prim_;
+  DeviceBuffer<SkyCell> sky_cells_;
   DeviceBuffer<KdNode> kd_nodes_;
   DeviceBuffer<uint32_t> kd_prims_, grid_cell_start_, grid_prims_;
   SceneView view_{};

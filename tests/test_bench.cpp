@@ -48,10 +48,14 @@ TEST(Bench, TradeHasARowPerKnobSetting) {
   std::string output;
   ASSERT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/cornell-box-path.json") +
                                  " --width 12 --height 8 --spp 4 --ref-spp 8 --threads 1", &output), 0) << output;
+  for (const char* row : {"nee          off", "sampler      stratified", "fresnel      exact", "rr_depth     off", "max_depth    16"})
+    EXPECT_NE(output.find(row), std::string::npos) << row << " in " << output;
+  EXPECT_EQ(output.find("sky_sampling"), std::string::npos) << "no cube-map sky, no sky knob: " << output;
+  ASSERT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/features/sun-sky.json") +
+                                 " --width 12 --height 8 --spp 4 --ref-spp 8 --threads 1", &output), 0) << output;
+  EXPECT_NE(output.find("sky_sampling off"), std::string::npos) << output;
   std::filesystem::current_path(cwd);
   std::filesystem::remove_all(dir);
-  for (const char* row : {"nee        off", "sampler    stratified", "fresnel    exact", "rr_depth   off", "max_depth  16"})
-    EXPECT_NE(output.find(row), std::string::npos) << row << " in " << output;
   EXPECT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/features/shadows.json"), &output), 2);
   EXPECT_NE(output.find("measures the path integrator"), std::string::npos) << output;
 }

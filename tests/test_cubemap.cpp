@@ -1,6 +1,7 @@
 // Cube-map backgrounds: each direction picks the face and (u, v) of the documented
 // convention, neighbouring faces meet without cracks, a constant-colour cube map renders
-// exactly like the constant background, and bad faces are errors naming the key.
+// exactly like the constant background when only BSDF rays find it (sky sampling off), and
+// bad faces are errors naming the key.
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imagebuf.h>
@@ -34,22 +35,9 @@ TEST(Cubemap, FaceAndCoordinatesOfTheAxesAndEdges) {
   }
 }
 
-// Writes six faces, each of `size` x `size` texels of one colour (or of `colours[i]`).
-std::string write_faces(const std::filesystem::path& dir, int size, const float colours[6][3]) {
-  std::string list;
-  for (int i = 0; i < 6; ++i) {
-    Image img{uint32_t(size), uint32_t(size), {}};
-    for (int p = 0; p < size * size; ++p) img.rgb.insert(img.rgb.end(), colours[i], colours[i] + 3);
-    const std::string name = "f" + std::to_string(i) + ".exr";
-    write_image(img, (dir / name).string());
-    list += (i ? ", \"" : "\"") + name + "\"";
-  }
-  return list;
-}
-
 std::string scene_with(const std::string& background) {
   return R"({"format": "tracer-scene/1", "camera": {"from": [0, 1, 3], "to": [0, 0.5, 0], "vfov": 80},
-    "film": {"width": 48, "height": 32}, "render": {"integrator": "path", "spp": 4, "max_depth": 3},
+    "film": {"width": 48, "height": 32}, "render": {"integrator": "path", "spp": 4, "max_depth": 3, "sky_sampling": false},
     "background": )" + background + R"(, "materials": {"m": {"type": "metal", "albedo": [0.9, 0.9, 0.9], "roughness": 0.3},
     "d": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
     "shapes": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.5, "material": "m"},
@@ -58,9 +46,7 @@ std::string scene_with(const std::string& background) {
 
 TEST(Cubemap, ConstantCubeMapEqualsTheConstantBackgroundBitForBit) {
   const auto dir = test::temp_dir("cube-constant");
-  const float c[6][3] = {{0.3f, 0.6f, 0.9f}, {0.3f, 0.6f, 0.9f}, {0.3f, 0.6f, 0.9f},
-                         {0.3f, 0.6f, 0.9f}, {0.3f, 0.6f, 0.9f}, {0.3f, 0.6f, 0.9f}};
-  const std::string faces = write_faces(dir, 8, c);
+  const std::string faces = test::write_cube_faces(dir, 8, [](int, int, int) { return Vec3{0.3f, 0.6f, 0.9f}; });
   const Scene cube = load_scene_text(scene_with(R"({"type": "cubemap", "faces": [)" + faces + "]}"), (dir / "s.json").string());
   const Scene constant = load_scene_text(scene_with(R"({"type": "constant", "radiance": [0.3, 0.6, 0.9]})"), (dir / "s.json").string());
   RenderStats s1, s2;
@@ -74,21 +60,11 @@ TEST(Cubemap, ConstantCubeMapEqualsTheConstantBackgroundBitForBit) {
 std::string write_direction_faces(const std::filesystem::path& dir, int n) {
   const Vec3 f[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   const Vec3 up[6] = {{0, 1, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}, {0, 1, 0}, {0, 1, 0}};
-  std::string list;
-  for (int i = 0; i < 6; ++i) {
+  return test::write_cube_faces(dir, n, [&](int i, int x, int y) {
     const Vec3 right = cross(f[i], up[i]);
-    Image img{uint32_t(n), uint32_t(n), {}};
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x) {
-        const float u = (x + 0.5f) / n, v = 1.0f - (y + 0.5f) / n;
-        const Vec3 c = normalize(f[i] + right * (2 * u - 1) + up[i] * (2 * v - 1)) * 0.5f + Vec3{0.5f, 0.5f, 0.5f};
-        img.rgb.insert(img.rgb.end(), {c.x, c.y, c.z});
-      }
-    const std::string name = "d" + std::to_string(i) + ".exr";
-    write_image(img, (dir / name).string());
-    list += (i ? ", \"" : "\"") + name + "\"";
-  }
-  return list;
+    const float u = (x + 0.5f) / n, v = 1.0f - (y + 0.5f) / n;
+    return normalize(f[i] + right * (2 * u - 1) + up[i] * (2 * v - 1)) * 0.5f + Vec3{0.5f, 0.5f, 0.5f};
+  });
 }
 
 // Every direction sees the colour of its own direction, to within the texel resolution:
@@ -122,8 +98,7 @@ TEST(Cubemap, FacesAreOrientedAndMeetWithoutCracks) {
 
 TEST(Cubemap, BadFacesAreErrors) {
   const auto dir = test::temp_dir("cube-bad");
-  const float c[6][3] = {};
-  const std::string faces = write_faces(dir, 4, c);
+  test::write_cube_faces(dir, 4, [](int, int, int) { return Vec3{0, 0, 0}; });
   write_image(Image{4, 2, std::vector<float>(24, 0.0f)}, (dir / "wide.exr").string());
   write_image(Image{8, 8, std::vector<float>(192, 0.0f)}, (dir / "big.exr").string());
   const struct {

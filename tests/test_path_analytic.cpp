@@ -75,6 +75,34 @@ TEST(PathAnalytic, PlaneUnderUniformSkyReflectsAlbedoTimesSky) {
   for (size_t i = 0; i < img.rgb.size(); ++i) ASSERT_NEAR(img.rgb[i], expected[i % 3], kFloatTolerance) << i;
 }
 
+// A Lambert plane under a cube-map sky that is dark but for its +y face of radiance L:
+// the face is a square of half-side 1 at height 1 above every point, whose form factor
+// is 4 (1/2pi) 2 (1/sqrt 2) atan(1/sqrt 2) (point to parallel rectangle, four corner
+// pieces), so the plane reflects a L F with F = 0.5541264; with the sky sampled as a light
+// and without (only BSDF rays find it).
+void plane_under_bright_top_face(bool sky_sampling) {
+  const auto dir = test::temp_dir("sky-top-face");
+  const std::string faces = test::write_cube_faces(dir, 4, [](int face, int, int) {
+    return face == 2 ? Vec3{2.0f, 2.0f, 2.0f} : Vec3{0.0f, 0.0f, 0.0f};
+  });
+  RenderOverrides ov;
+  ov.sky_sampling = sky_sampling;
+  RenderStats stats;
+  const Image img = render_cpu(load_scene_text(R"({"format": "tracer-scene/1", "camera": {"from": [0, 2, 0], "to": [0, 0, 0.01], "vfov": 60},
+    "film": {"width": 32, "height": 32}, "render": {"integrator": "path", "spp": 16, "sampler": "stochastic", "max_depth": 4},
+    "background": {"type": "cubemap", "faces": [)" + faces + R"(]},
+    "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
+    "shapes": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "m"}]})", (dir / "s.json").string(), ov), 0, stats);
+  std::filesystem::remove_all(dir);
+  EXPECT_EQ(stats.nonfinite_samples, 0u);
+  const MeanStat m = mean_of(img, 0);
+  EXPECT_NEAR(m.mean, 0.5 * 2.0 * 0.5541264, 5 * m.stderr_) << "stderr " << m.stderr_;
+  EXPECT_GT(m.stderr_, 0.0) << "the estimator has variance here";
+}
+
+TEST(PathAnalytic, PlaneUnderABrightCubeFaceWithSkySampling) { plane_under_bright_top_face(true); }
+TEST(PathAnalytic, PlaneUnderABrightCubeFaceWithoutSkySampling) { plane_under_bright_top_face(false); }
+
 // Inside a closed sphere of albedo a whose surface emits Le, every point sees
 // Le + a Le + a^2 Le + ... = Le / (1 - a); with a = 0.5, Le = 0.5: 1.
 void closed_emitting_sphere(bool nee) {

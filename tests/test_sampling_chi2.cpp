@@ -3,7 +3,8 @@
 // in closed form over the bin, bins expecting fewer than 5 samples are pooled, and the test
 // fails when the p-value of the chi-square statistic is below a significance of 1e-3. The
 // inputs are a fixed stream, so a result is repeatable. The light samplers' densities are
-// also checked against the light's solid angle: E[1 / pdf] over their samples.
+// also checked against the light's solid angle: E[1 / pdf] over their samples; the
+// cube-map sky's against the whole sphere.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -170,7 +171,7 @@ double mean_inverse_pdf(const LightFixture& fx, Vec3 from, Check check) {
   Stream s{9};
   double sum = 0;
   for (int i = 0; i < kSamples; ++i) {
-    const LightSample ls = sample_light(fx.view, 0, from, s.next(), s.next());
+    const LightSample ls = sample_light(fx.view, 0, from, s.next(), s.next(), 0.0f);
     EXPECT_TRUE(ls.valid);
     check(ls);
     sum += 1.0 / ls.pdf;
@@ -183,7 +184,7 @@ TEST(SamplingChi2, SphereLightIsUniformInItsCone) {
   const Vec3 from = {0.4f, 1.2f, 2.0f};
   const double d2 = dot(from, from), cos_max = std::sqrt(1 - 0.25 / d2);
   const double p = direction_test(-from / std::sqrt(float(d2)), [&](float a, float b, float) {
-    return sample_light(fx.view, 0, from, a, b).wi;
+    return sample_light(fx.view, 0, from, a, b, 0.0f).wi;
   }, [&](double c) { return (c - cos_max) / (1 - cos_max); }, cos_max);
   EXPECT_GT(p, kSignificance);
   const double omega = mean_inverse_pdf(fx, from, [](const LightSample&) {});
@@ -202,7 +203,7 @@ TEST(SamplingChi2, QuadAndTriangleLightsAreUniformByArea) {
     Stream s{5};
     double inverse_pdf = 0;
     for (int i = 0; i < kSamples; ++i) {
-      const LightSample ls = sample_light(fx.view, 0, from, s.next(), s.next());
+      const LightSample ls = sample_light(fx.view, 0, from, s.next(), s.next(), 0.0f);
       ASSERT_TRUE(ls.valid);
       inverse_pdf += 1.0 / ls.pdf;
       const Vec3 q = from + ls.wi * ls.distance;
@@ -228,6 +229,56 @@ TEST(SamplingChi2, QuadAndTriangleLightsAreUniformByArea) {
       }
     EXPECT_NEAR(inverse_pdf / kSamples, omega, 2e-3 * omega) << (triangle ? "triangle" : "quad");
   }
+}
+
+// A cube-map sky with a different level on each face and one bright texel: directions are
+// binned by quarter cells of the faces (2 x 2 per cell), each bin expecting the integral of
+// sky_direction_pdf over it (midpoint rule in face coordinates, dw = dA / r^3); E[1 / pdf]
+// is the whole sphere, 4 pi.
+TEST(SamplingChi2, CubeMapSkyCellsByTheirDensity) {
+  const auto dir = test::temp_dir("sky-chi2");
+  constexpr int kSize = 4, kBinsPerSide = 2 * kSize;
+  const std::string faces = test::write_cube_faces(dir, kSize, [](int face, int x, int y) {
+    const float level = face == 2 && x == 1 && y == 2 ? 40.0f : 0.2f + 0.2f * face;
+    return Vec3{level, level, level};
+  });
+  const Scene scene = load_scene_text(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
+      "film": {"width": 4, "height": 4}, "render": {"integrator": "path"},
+      "background": {"type": "cubemap", "faces": [)" + faces + R"(]}, "materials": {}, "shapes": []})",
+                                      (dir / "s.json").string());
+  std::filesystem::remove_all(dir);
+  const SceneView view = scene.view();
+  ASSERT_EQ(view.sky_light, 0u);
+  ASSERT_EQ(view.sky_cells_per_side, uint32_t(kSize));
+  std::vector<double> observed(6 * kBinsPerSide * kBinsPerSide, 0.0), expected(observed.size(), 0.0);
+  Stream s{17};
+  double inverse_pdf = 0, inverse_pdf2 = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    const LightSample ls = sample_light(view, view.sky_light, {0, 0, 0}, s.next(), s.next(), s.next());
+    ASSERT_TRUE(ls.valid);
+    ASSERT_NEAR(length(ls.wi), 1.0f, 1e-6f);
+    float u, v;
+    const uint32_t face = cube_face(ls.wi, u, v);
+    const int bx = std::min(kBinsPerSide - 1, int(u * kBinsPerSide)), by = std::min(kBinsPerSide - 1, int(v * kBinsPerSide));
+    observed[(face * kBinsPerSide + by) * kBinsPerSide + bx] += 1;
+    inverse_pdf += 1.0 / ls.pdf, inverse_pdf2 += 1.0 / (double(ls.pdf) * ls.pdf);
+  }
+  constexpr int kQuad = 8;  // midpoint-rule points per bin side
+  for (uint32_t face = 0; face < 6; ++face)
+    for (int by = 0; by < kBinsPerSide; ++by)
+      for (int bx = 0; bx < kBinsPerSide; ++bx) {
+        double p = 0;
+        for (int j = 0; j < kQuad; ++j)
+          for (int i = 0; i < kQuad; ++i) {
+            const double a = -1 + 2 * (bx + (i + 0.5) / kQuad) / kBinsPerSide, b = -1 + 2 * (by + (j + 0.5) / kQuad) / kBinsPerSide;
+            const double r2 = 1 + a * a + b * b, area = 4.0 / (kBinsPerSide * kBinsPerSide * kQuad * kQuad);
+            p += sky_direction_pdf(view, normalize(cube_direction(face, float(a), float(b)))) * area / (r2 * std::sqrt(r2));
+          }
+        expected[(face * kBinsPerSide + by) * kBinsPerSide + bx] = kSamples * p;
+      }
+  EXPECT_GT(chi2_p_value(observed, expected), kSignificance);
+  const double mean = inverse_pdf / kSamples, se = std::sqrt((inverse_pdf2 / kSamples - mean * mean) / kSamples);
+  EXPECT_NEAR(mean, 4 * M_PI, 5 * se) << "standard error " << se;
 }
 
 TEST(SamplingChi2, GammaQKnownValues) {

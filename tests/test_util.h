@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "image_io.h"
 #include "scene_loader.h"
 
 namespace tracer::test {
@@ -35,6 +36,25 @@ inline std::filesystem::path temp_dir(const std::string& name) {
 
 inline Scene scene_from(const std::string& json, const RenderOverrides& ov = {}) {
   return load_scene_text(json, "inline.json", ov);
+}
+
+// Writes six size x size cube faces f0.exr .. f5.exr (+x, -x, +y, -y, +z, -z) into dir,
+// texel (x, y) of face i coloured texel(i, x, y); returns the quoted names for "faces".
+template <class TexelColour>
+std::string write_cube_faces(const std::filesystem::path& dir, int size, TexelColour texel) {
+  std::string list;
+  for (int i = 0; i < 6; ++i) {
+    Image img{uint32_t(size), uint32_t(size), {}};
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        const Vec3 c = texel(i, x, y);
+        img.rgb.insert(img.rgb.end(), {c.x, c.y, c.z});
+      }
+    const std::string name = "f" + std::to_string(i) + ".exr";
+    write_image(img, (dir / name).string());
+    list += (i ? ", \"" : "\"") + name + "\"";
+  }
+  return list;
 }
 
 inline std::string source_path(const std::string& rel) { return std::string(TRACER_SOURCE_DIR) + "/" + rel; }

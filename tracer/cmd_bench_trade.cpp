@@ -1,5 +1,5 @@
 // `tracer bench trade SCENE`: for each knob of the path integrator (NEE, sampler, Fresnel
-// model, Russian roulette depth, max_depth), the time and the error of a render at a fixed
+// model, Russian roulette depth, max_depth, sky sampling under a cube-map sky), the time and the error of a render at a fixed
 // sample budget, and the error of a render given the baseline's time (its spp scaled by
 // the measured speed). Error is against one reference made with the scene's own settings,
 // so a knob that changes the expected image (max_depth, Fresnel) shows its bias too.
@@ -29,7 +29,7 @@ uint32_t nearest_square(double spp) {
   return n * n;
 }
 
-std::vector<Knob> knobs() {
+std::vector<Knob> knobs(bool cubemap_sky) {
   std::vector<Knob> k;
   const auto with = [](auto set) {
     RenderOverrides o;
@@ -39,6 +39,10 @@ std::vector<Knob> knobs() {
   k.push_back({"baseline", "scene settings", {}, false});
   k.push_back({"nee", "on", with([](RenderOverrides& o) { o.nee = true; }), false});
   k.push_back({"nee", "off", with([](RenderOverrides& o) { o.nee = false; }), false});
+  if (cubemap_sky) {
+    k.push_back({"sky_sampling", "on", with([](RenderOverrides& o) { o.sky_sampling = true; }), false});
+    k.push_back({"sky_sampling", "off", with([](RenderOverrides& o) { o.sky_sampling = false; }), false});
+  }
   k.push_back({"sampler", "stochastic", with([](RenderOverrides& o) { o.sampler = "stochastic"; }), false});
   k.push_back({"sampler", "stratified", with([](RenderOverrides& o) { o.sampler = "stratified"; }), true});
   k.push_back({"fresnel", "schlick", with([](RenderOverrides& o) { o.fresnel = FresnelKind::Schlick; }), false});
@@ -53,6 +57,7 @@ std::vector<Knob> knobs() {
 // Applies a knob's overrides on top of the common ones.
 RenderOverrides combine(RenderOverrides base, const RenderOverrides& knob) {
   if (knob.nee) base.nee = knob.nee;
+  if (knob.sky_sampling) base.sky_sampling = knob.sky_sampling;
   if (knob.sampler) base.sampler = knob.sampler;
   if (knob.fresnel) base.fresnel = knob.fresnel;
   if (knob.rr_depth) base.rr_depth = knob.rr_depth;
@@ -76,10 +81,10 @@ int run_bench_trade(const BenchTradeCommand& cmd) {
   const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 16 * cmd.spp, cmd.threads,
                                     std::filesystem::path(cmd.scene).stem().string() + "-trade-ref.exr");
 
-  std::printf("%-10s %-15s | %6s %9s %11s %11s | %9s %9s %11s\n", "knob", "setting", "spp", "seconds", "RMSE", "relMSE",
+  std::printf("%-12s %-15s | %6s %9s %11s %11s | %14s %9s %11s\n", "knob", "setting", "spp", "seconds", "RMSE", "relMSE",
               "equal-time spp", "seconds", "RMSE");
   double baseline_seconds = 0;
-  for (const Knob& knob : knobs()) {
+  for (const Knob& knob : knobs(probe.background.kind == BackgroundKind::Cubemap)) {
     RenderOverrides ov = combine(base, knob.overrides);
     ov.spp = knob.square_spp ? nearest_square(cmd.spp) : cmd.spp;
     const TimedRender fixed = timed_render(load_scene(cmd.scene, ov), cmd.threads, kRepeats);
@@ -89,7 +94,7 @@ int run_bench_trade(const BenchTradeCommand& cmd) {
     ov.spp = knob.square_spp ? nearest_square(scaled) : std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(scaled)));
     const TimedRender equal = timed_render(load_scene(cmd.scene, ov), cmd.threads, kRepeats);
     const ImageError equal_error = image_error(equal.image, ref);
-    std::printf("%-10s %-15s | %6u %9.3f %11.5g %11.5g | %9u %9.3f %11.5g\n", knob.name, knob.setting.c_str(),
+    std::printf("%-12s %-15s | %6u %9.3f %11.5g %11.5g | %14u %9.3f %11.5g\n", knob.name, knob.setting.c_str(),
                 knob.square_spp ? nearest_square(cmd.spp) : cmd.spp, fixed.seconds, fixed_error.rmse, fixed_error.rel_mse,
                 *ov.spp, equal.seconds, equal_error.rmse);
   }

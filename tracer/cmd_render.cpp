@@ -65,6 +65,7 @@ int run_render(const RenderCommand& cmd) {
   RenderOverrides overrides = cmd.overrides;
   if (!cmd.effects.empty()) overrides.effects = parse_effects(cmd.effects);
   if (!cmd.nee.empty()) overrides.nee = cmd.nee == "on";
+  if (!cmd.sky_sampling.empty()) overrides.sky_sampling = cmd.sky_sampling == "on";
   const std::string scene_text = read_text_file(cmd.scene, "scene file");
   const Scene scene = load_scene_text(scene_text, cmd.scene, overrides);  // loading includes the BVH build
   const double load_build_s = seconds_since(t_load);

@@ -17,6 +17,7 @@ struct RenderCommand {
   std::string device = "cpu";
   std::string effects;  // --effects list; empty: all
   std::string nee;      // --nee on|off; empty: the scene's render.nee (default on)
+  std::string sky_sampling;  // --sky-sampling on|off; empty: the scene's render.sky_sampling (default on)
   std::string samples;  // --samples A:B: write samples [A, B) to a partial file
   bool quiet = false;
 };

@@ -36,6 +36,7 @@ RenderOptions read_options(const Json& value, const std::string& path, const std
   if (obj.find("seed")) o.seed = obj.unsigned_integer("seed");
   if (obj.find("nee")) o.nee = obj.boolean_or("nee", true);
   if (obj.find("rr_depth")) o.rr_depth = read_u32(obj, "rr_depth");
+  if (obj.find("sky_sampling")) o.sky_sampling = obj.boolean_or("sky_sampling", true);
   obj.finish();
   return o;
 }

@@ -39,6 +39,8 @@ int main(int argc, char** argv) {
   r->add_option("--device", render.device, "cpu or cuda");
   r->add_option("--nee", render.nee, "path: next-event estimation with MIS, on (default) or off (the plain estimator)")
       ->check(CLI::IsMember({"on", "off"}));
+  r->add_option("--sky-sampling", render.sky_sampling, "path: sample a cube-map sky as a light, on (default) or off (only BSDF rays find it)")
+      ->check(CLI::IsMember({"on", "off"}));
   r->add_option("--rr-depth", render.overrides.rr_depth, "path: Russian roulette from this many bounces on (default 3)");
   r->add_option("--effects", render.effects, "Whitted effects to trace: all (default), none, or a list of shadows,reflections,refractions");
   r->add_option("--samples", render.samples, "A:B renders only samples [A, B) of every pixel into NAME.partial, for tracer merge");

@@ -20,6 +20,7 @@ RenderOverrides RenderOptions::overrides() const {
   o.seed = seed;
   o.nee = nee;
   o.rr_depth = rr_depth;
+  o.sky_sampling = sky_sampling;
   return o;
 }
 
@@ -35,6 +36,7 @@ nlohmann::ordered_json RenderOptions::to_json() const {
   if (max_depth) j["max_depth"] = *max_depth;
   if (nee) j["nee"] = *nee;
   if (rr_depth) j["rr_depth"] = *rr_depth;
+  if (sky_sampling) j["sky_sampling"] = *sky_sampling;
   return j;
 }
 
@@ -53,6 +55,7 @@ RenderOptions resolved_options(const Scene& scene) {
   if (rs.integrator == IntegratorKind::Path) {
     o.nee = rs.nee != 0;
     o.rr_depth = rs.rr_depth;
+    if (scene.background.kind == BackgroundKind::Cubemap) o.sky_sampling = rs.sky_sampling != 0;
   }
   return o;
 }

@@ -16,6 +16,7 @@ struct RenderOptions {
   std::optional<uint64_t> seed;
   std::optional<bool> nee;             // path integrator only; recorded when resolved
   std::optional<uint32_t> rr_depth;    // path integrator only; recorded when resolved
+  std::optional<bool> sky_sampling;    // path under a cube-map sky only; recorded when resolved
 
   bool complete() const;                     // the eight options every golden records are set
   RenderOverrides overrides() const;         // as command-line overrides of a scene

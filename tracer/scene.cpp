@@ -30,6 +30,9 @@ SceneView Scene::view() const {
   v.light_table = light_table.data();
   v.light_entry_count = static_cast<uint32_t>(light_table.size());
   v.light_of_prim = light_of_prim.data();
+  v.sky_cells = sky_cells.data();
+  v.sky_cells_per_side = sky_cells_per_side;
+  v.sky_light = sky_light;
   v.background = background;
   v.ambient = ambient;
   v.camera = camera;

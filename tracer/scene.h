@@ -30,6 +30,9 @@ struct Scene {
   std::vector<PointLight> lights;
   std::vector<LightEntry> light_table;  // path integrator's lights (light_table.h)
   std::vector<uint32_t> light_of_prim;  // per primitive: its light_table entry or kNoHit
+  std::vector<SkyCell> sky_cells;       // a sampled cube-map sky's cells (kernel/sky_sampling.h)
+  uint32_t sky_cells_per_side = 0;
+  uint32_t sky_light = kNoHit;          // the sky's light_table entry
   Background background{};
   Vec3 ambient{0.0f, 0.0f, 0.0f};
   Camera camera{};
@@ -47,6 +50,7 @@ struct RenderOverrides {
   std::optional<uint32_t> spp, width, height, max_depth;
   std::optional<uint32_t> effects;  // EffectBit mask (`--effects`); all effects when unset
   std::optional<bool> nee;          // path: next-event estimation (`--nee on|off`)
+  std::optional<bool> sky_sampling; // path: a cube-map sky sampled as a light (`--sky-sampling on|off`)
   std::optional<uint32_t> rr_depth; // path: Russian roulette depth (`--rr-depth`)
   std::optional<FresnelKind> fresnel;  // every dielectric's Fresnel model (`bench trade`)
   std::optional<uint32_t> grid_resolution;  // `--grid-resolution`

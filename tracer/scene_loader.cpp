@@ -384,6 +384,7 @@ void read_render(const Json* value, const std::string& file, const RenderOverrid
   rs.max_depth = read_count(obj, "max_depth", 5);
   rs.seed = obj.find("seed") ? obj.unsigned_integer("seed") : 0;
   rs.nee = obj.boolean_or("nee", true) ? 1u : 0u;
+  rs.sky_sampling = obj.boolean_or("sky_sampling", true) ? 1u : 0u;
   rs.rr_depth = read_count(obj, "rr_depth", 3);
   rs.grid_resolution = read_count(obj, "grid_resolution", 0);
   obj.finish();
@@ -399,6 +400,7 @@ void read_render(const Json* value, const std::string& file, const RenderOverrid
   if (ov.seed) rs.seed = *ov.seed;
   rs.effects = ov.effects.value_or(kEffectAll);
   if (ov.nee) rs.nee = *ov.nee ? 1u : 0u;
+  if (ov.sky_sampling) rs.sky_sampling = *ov.sky_sampling ? 1u : 0u;
   if (ov.rr_depth) rs.rr_depth = *ov.rr_depth;
   if (ov.grid_resolution) rs.grid_resolution = *ov.grid_resolution;
   if (rs.grid_resolution > 1024)

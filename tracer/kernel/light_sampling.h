@@ -1,12 +1,14 @@
 // Next-event estimation's light choice and light sampling for the path integrator. The
 // host builds a table of every light (point lights and emissive spheres, quads and
-// triangles; emissive planes are infinite and only found by chance) with a selection
-// probability proportional to its power (tracer/light_table.cpp). Shapes are sampled
-// uniformly by area, spheres seen from outside uniformly in the cone they subtend.
+// triangles; emissive planes are infinite and only found by chance; a cube-map sky when
+// render.sky_sampling is on) with a selection probability proportional to its power
+// (tracer/light_table.cpp). Shapes are sampled uniformly by area, spheres seen from outside
+// uniformly in the cone they subtend, the sky by its cells (kernel/sky_sampling.h).
 #pragma once
 #include "light_sources.h"
 #include "surface.h"
 #include "sampling.h"
+#include "sky_sampling.h"
 
 namespace tracer {
 
@@ -16,19 +18,12 @@ struct LightSample {
   Vec3 radiance;    // arriving at the shading point if unoccluded (point lights: I x falloff)
   float pdf;        // solid-angle density including the selection probability; the
                     // selection probability alone for a point light (delta)
-  uint32_t prim;    // the emitting primitive, or kNoHit for a point light
+  uint32_t prim;    // the emitting primitive, kNoHit for a point light, kSkyLight for the sky
   bool valid;
 };
 
-// The entry whose cdf interval holds u, by binary search.
 TRACER_HD uint32_t pick_light(const SceneView& scene, float u) {
-  uint32_t lo = 0, hi = scene.light_entry_count - 1;
-  while (lo < hi) {
-    const uint32_t mid = (lo + hi) / 2;
-    if (u < scene.light_table[mid].cdf) hi = mid;
-    else lo = mid + 1;
-  }
-  return lo;
+  return find_cdf_interval(scene.light_table, scene.light_entry_count, u);
 }
 
 TRACER_HD float primitive_area(const Primitive& p) {
@@ -68,9 +63,26 @@ TRACER_HD float light_pdf(const SceneView& scene, uint32_t prim, Vec3 from, Vec3
   return cos_l > 0.0f ? pmf * t * t / (cos_l * primitive_area(p)) : 0.0f;
 }
 
-TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index, Vec3 from, float u1, float u2) {
+// Solid-angle density with which NEE draws sky direction dir (selection probability included).
+TRACER_HD float sky_light_pdf(const SceneView& scene, Vec3 dir) {
+  if (scene.sky_light == kNoHit) return 0.0f;
+  return scene.light_table[scene.sky_light].pmf * sky_direction_pdf(scene, dir);
+}
+
+// A sample of light entry_index seen from `from`, by (u1, u2) and, for the sky's cell, cell_u.
+TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index, Vec3 from, float u1, float u2,
+                                   float cell_u) {
   const LightEntry& entry = scene.light_table[entry_index];
   LightSample s = {{0.0f, 0.0f, 0.0f}, 0.0f, {0.0f, 0.0f, 0.0f}, 0.0f, kNoHit, false};
+  if (entry.kind == LightKind::Sky) {
+    s.wi = sample_sky_direction(scene, cell_u, u1, u2);
+    s.distance = kInfinity;
+    s.radiance = background_radiance(scene, s.wi);
+    s.prim = kSkyLight;
+    s.pdf = sky_light_pdf(scene, s.wi);
+    s.valid = s.pdf > 0.0f && s.pdf < kInfinity;
+    return s;
+  }
   if (entry.kind == LightKind::Point) {
     const PointLight& light = scene.lights[entry.index];
     const Vec3 to_light = light.position - from;

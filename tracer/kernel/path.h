@@ -4,6 +4,7 @@
 // the other's density; emission reached by a BSDF sample after a specular bounce, or with
 // `nee` off (the plain estimator), counts fully. Russian roulette from rr_depth bounces on
 // survives with q = min(max throughput, 0.95) and divides by q, so it stays unbiased.
+// A cube-map sky sampled as a light (render.sky_sampling) is MIS-weighted like the shapes.
 // Random numbers per bounce b: four Philox pairs at dimensions kDimFirstFree + 4b + {0..3}.
 #pragma once
 #include "bsdf.h"
@@ -16,9 +17,10 @@
 namespace tracer {
 
 // Whether the shading point at s sees the sampled light (a point light within its
-// distance, an emitter as the closest hit along wi).
+// distance, the sky past everything, an emitter as the closest hit along wi).
 TRACER_HD bool light_visible(const SceneView& scene, const Surface& s, const LightSample& ls) {
   const Ray ray = {offset_ray_origin(s.p, s.ng, ls.wi), ls.wi};
+  if (ls.prim == kSkyLight) return !trace_any(scene, ray, kInfinity);
   if (ls.prim == kNoHit) return !trace_any(scene, ray, length(s.p + ls.wi * ls.distance - ray.origin));
   return trace_closest(scene, ray, kInfinity).prim == ls.prim;
 }
@@ -34,7 +36,10 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, ui
   for (uint32_t depth = 0;; ++depth) {
     const Hit hit = trace_closest(scene, ray, kInfinity);
     if (hit.prim == kNoHit) {
-      radiance += throughput * background_radiance(scene, ray.dir);
+      const float w = nee && !specular && scene.sky_light != kNoHit
+                          ? power_heuristic(bsdf_pdf, sky_light_pdf(scene, ray.dir))
+                          : 1.0f;
+      radiance += throughput * background_radiance(scene, ray.dir) * w;
       break;
     }
     Surface s = surface_at(scene, ray, hit);
@@ -50,14 +55,14 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, ui
     const Vec3 wo = -ray.dir;
     const Vec3 n = front ? s.ns : -s.ns;
     const uint32_t dim = kDimFirstFree + 4u * depth;
-    float light_u1, light_u2, pick_u, choice_u, dir_u1, dir_u2, rr_u, unused;
+    float light_u1, light_u2, pick_u, choice_u, dir_u1, dir_u2, rr_u, sky_cell_u;
     sample_uniform2(rs.seed, pixel, sample, dim, light_u1, light_u2);
     sample_uniform2(rs.seed, pixel, sample, dim + 1u, pick_u, choice_u);
     sample_uniform2(rs.seed, pixel, sample, dim + 2u, dir_u1, dir_u2);
-    sample_uniform2(rs.seed, pixel, sample, dim + 3u, rr_u, unused);
+    sample_uniform2(rs.seed, pixel, sample, dim + 3u, rr_u, sky_cell_u);
 
     if (nee && !is_specular(m)) {
-      const LightSample ls = sample_light(scene, pick_light(scene, pick_u), s.p, light_u1, light_u2);
+      const LightSample ls = sample_light(scene, pick_light(scene, pick_u), s.p, light_u1, light_u2, sky_cell_u);
       const Vec3 f = ls.valid ? eval_bsdf_cos(m, wo, ls.wi, n) : Vec3{0.0f, 0.0f, 0.0f};
       if (max_component(f) > 0.0f) {
         ++counts.shadow;

@@ -56,6 +56,18 @@ TRACER_HD void sample_triangle(float u1, float u2, float& b1, float& b2) {
   b2 = s * u2;
 }
 
+// The index of the first entry whose cdf exceeds u (entries[count - 1].cdf is 1), by
+// binary search: drawing an entry of a discrete distribution given a uniform u.
+template <class Entry> TRACER_HD uint32_t find_cdf_interval(const Entry* entries, uint32_t count, float u) {
+  uint32_t lo = 0, hi = count - 1;
+  while (lo < hi) {
+    const uint32_t mid = (lo + hi) / 2;
+    if (u < entries[mid].cdf) hi = mid;
+    else lo = mid + 1;
+  }
+  return lo;
+}
+
 // Power heuristic with beta = 2 (Veach 1997): the weight of a sample drawn with pdf `a`
 // when the other strategy would have drawn it with pdf `b`.
 TRACER_HD float power_heuristic(float a, float b) {

@@ -30,12 +30,18 @@ struct PointLight {
 };
 
 // An entry of the path integrator's light table (kernel/light_sampling.h).
-enum class LightKind : uint32_t { Point, Shape };
+enum class LightKind : uint32_t { Point, Shape, Sky };
 struct LightEntry {
   LightKind kind;
-  uint32_t index;  // into SceneView::lights, or the emitting primitive's id
+  uint32_t index;  // into SceneView::lights, or the emitting primitive's id; 0 for the sky
   float pmf;       // probability of choosing this light
   float cdf;       // sum of the pmfs up to and including this entry; 1 for the last
+};
+
+// A cell of a cube-map sky's sampling distribution (kernel/sky_sampling.h).
+struct SkyCell {
+  float pmf;  // probability of drawing the cell, a multiple of 2^-24
+  float cdf;  // sum of the pmfs up to and including this cell; 1 for the last
 };
 
 struct Background {
@@ -63,6 +69,7 @@ struct RenderSettings {
   uint32_t nee;      // path: next-event estimation with MIS (1) or the plain estimator (0)
   uint32_t rr_depth; // path: Russian roulette from this many bounces on
   uint32_t grid_resolution;  // grid: cells along the longest axis; 0 picks by density
+  uint32_t sky_sampling;     // path with NEE: a cube-map sky is a light of the table (1) or only found by BSDF rays (0)
 };
 
 struct SceneView {
@@ -91,6 +98,9 @@ struct SceneView {
   const LightEntry* light_table;  // path integrator: every light with its selection probability
   uint32_t light_entry_count;
   const uint32_t* light_of_prim;  // per primitive: its light_table entry, or kNoHit
+  const SkyCell* sky_cells;       // 6 faces x n x n, face-major then row-major; none when n is 0
+  uint32_t sky_cells_per_side;    // n
+  uint32_t sky_light;             // the sky's light_table entry, or kNoHit
   Background background;
   Vec3 ambient;
   Camera camera;
