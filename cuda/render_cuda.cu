@@ -11,7 +11,7 @@
 namespace tracer {
 namespace {
 
-enum Counter { kCamera, kSecondary, kShadow, kRejected, kCounterCount };
+enum Counter { kCamera, kSecondary, kShadow, kNonfinite, kOverflow, kCounterCount };
 
 __global__ void render_kernel(const SceneView scene, SampleRange range, FilmSum* film, unsigned long long* counters) {
   const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
@@ -23,7 +23,8 @@ __global__ void render_kernel(const SceneView scene, SampleRange range, FilmSum*
   atomicAdd(&counters[kCamera], static_cast<unsigned long long>(counts.camera));
   atomicAdd(&counters[kSecondary], static_cast<unsigned long long>(counts.secondary));
   atomicAdd(&counters[kShadow], static_cast<unsigned long long>(counts.shadow));
-  if (sum.rejected) atomicAdd(&counters[kRejected], static_cast<unsigned long long>(sum.rejected));
+  if (sum.nonfinite) atomicAdd(&counters[kNonfinite], static_cast<unsigned long long>(sum.nonfinite));
+  if (sum.overflow) atomicAdd(&counters[kOverflow], static_cast<unsigned long long>(sum.overflow));
 }
 
 // A CUDA event that is destroyed even when a later call throws.
@@ -84,7 +85,8 @@ FilmBuffer render_cuda_film(const Scene& scene, SampleRange range, RenderStats& 
   const std::vector<unsigned long long> c = counters.download();
   info.download_seconds = seconds_since(t);
   stats.rays = {c[kCamera], c[kSecondary], c[kShadow]};
-  stats.nonfinite_samples = c[kRejected];
+  stats.nonfinite_samples = c[kNonfinite];
+  stats.overflow_samples = c[kOverflow];
   return result;
 }
 

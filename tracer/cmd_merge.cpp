@@ -48,7 +48,7 @@ int run_merge(const MergeCommand& cmd) {
 
   FilmBuffer total = parts.front().second.film;
   total.range = {0, spp};
-  uint64_t rejected = 0;
+  uint64_t nonfinite = 0, overflow = 0;
   for (size_t k = 1; k < parts.size(); ++k) {
     const FilmBuffer& f = parts[k].second.film;
     for (size_t i = 0; i < total.pixels.size(); ++i) {
@@ -59,13 +59,15 @@ int run_merge(const MergeCommand& cmd) {
           throw InputError(parts[k].first + ": pixel " + std::to_string(i) +
                            " overflows the film when the parts are added; render fewer, brighter-clamped samples");
       }
-      s.rejected += f.pixels[i].rejected;
+      s.nonfinite += f.pixels[i].nonfinite;
+      s.overflow += f.pixels[i].overflow;
     }
   }
-  for (const FilmSum& s : total.pixels) rejected += s.rejected;
+  for (const FilmSum& s : total.pixels) nonfinite += s.nonfinite, overflow += s.overflow;
   write_image(resolve_film(total, spp), cmd.output);
-  std::printf("merged %zu parts, samples [0, %u), %llu rejected samples: wrote %s\n", parts.size(), spp,
-              static_cast<unsigned long long>(rejected), std::filesystem::absolute(cmd.output).string().c_str());
+  std::printf("merged %zu parts, samples [0, %u), %llu NaN/inf samples, %llu overflowing samples: wrote %s\n", parts.size(),
+              spp, static_cast<unsigned long long>(nonfinite), static_cast<unsigned long long>(overflow),
+              std::filesystem::absolute(cmd.output).string().c_str());
   return 0;
 }
 

@@ -88,7 +88,7 @@ int run_render(const RenderCommand& cmd) {
   const double render_s = seconds_since(t_render);
   if (partial) {
     part.header = {render_identity(scene), cmd.scene, OIIO::SHA1::digest(scene_text.data(), scene_text.size()), rs.spp,
-                   stats.nonfinite_samples};
+                   stats.nonfinite_samples, stats.overflow_samples};
     write_partial(output, part);
   } else {
     write_image(resolve_film(part.film, rs.spp), output);
@@ -116,6 +116,7 @@ int run_render(const RenderCommand& cmd) {
                  {"secondary", stats.rays.secondary}, {"total", rays}};
     j["mrays_per_second"] = mrays;
     j["nonfinite_samples"] = stats.nonfinite_samples;
+    j["overflow_samples"] = stats.overflow_samples;
     j["accel"] = {{"kind", rs.accel == AccelKind::Bvh ? "bvh" : "none"}, {"nodes", scene.bvh_nodes.size()}};
     j["features"] = feature_names(scene.features);
     write_text_atomically(cmd.stats, j.dump(2) + "\n");
@@ -127,6 +128,9 @@ int run_render(const RenderCommand& cmd) {
     std::fprintf(stderr, "%ux%u, %u spp, %.3f s, %.2fM rays, %.2f Mrays/s, %llu NaN/inf samples\n", rs.width,
                  rs.height, rs.spp, render_s, static_cast<double>(rays) / 1e6, mrays,
                  static_cast<unsigned long long>(stats.nonfinite_samples));
+  if (stats.overflow_samples > 0)
+    std::fprintf(stderr, "warning: %llu samples had radiance of 2^30 or more and were left out (film overflow)\n",
+                 static_cast<unsigned long long>(stats.overflow_samples));
   std::printf("wrote %s\n", std::filesystem::absolute(output).string().c_str());
   return 0;
 }

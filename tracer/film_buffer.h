@@ -31,10 +31,4 @@ inline Image resolve_film(const FilmBuffer& film, uint32_t spp) {
   return image;
 }
 
-inline uint64_t rejected_samples(const FilmBuffer& film) {
-  uint64_t n = 0;
-  for (const FilmSum& p : film.pixels) n += p.rejected;
-  return n;
-}
-
 }  // namespace tracer

@@ -41,6 +41,7 @@ GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& en
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.nonfinite_samples = stats.nonfinite_samples;
+  r.overflow_samples = stats.overflow_samples;
   r.hash = pixel_hash(r.image);
   r.options = resolved_options(scene);
   return r;
@@ -58,6 +59,7 @@ GoldenOutcome judge_golden(const GoldenManifest& manifest, const GoldenEntry& en
   GoldenOutcome o;
   o.name = entry.name;
   o.nonfinite_values = render.nonfinite_samples + count_nonfinite(render.image);
+  o.overflow_samples = render.overflow_samples;
   const std::string image_path = manifest.image_path(entry);
   const std::string update = "; run `tracer golden update --filter '^" + entry.name + "$'` to create it";
   if (entry.hash.empty()) return golden_error(entry, "new golden: the manifest has no hash yet" + update);
@@ -86,6 +88,9 @@ GoldenOutcome judge_golden(const GoldenManifest& manifest, const GoldenEntry& en
   if (o.nonfinite_values > 0) {
     o.status = GoldenStatus::Fail;
     o.message = std::to_string(o.nonfinite_values) + " NaN/inf samples or values in the new image";
+  } else if (o.overflow_samples > 0) {
+    o.status = GoldenStatus::Fail;
+    o.message = std::to_string(o.overflow_samples) + " samples of the new image beyond the film's range (2^30)";
   } else if (!o.metrics->same_size) {
     o.status = GoldenStatus::Fail;
     o.message = "size differs: new " + std::to_string(render.image.width) + "x" + std::to_string(render.image.height) +

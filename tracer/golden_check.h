@@ -15,6 +15,7 @@ namespace tracer {
 struct GoldenRender {
   Image image;
   uint64_t nonfinite_samples = 0;
+  uint64_t overflow_samples = 0;
   std::string hash;
   RenderOptions options;  // every option as the scene and the manifest resolved them
   double seconds = 0.0;
@@ -30,6 +31,7 @@ struct GoldenOutcome {
   std::optional<CompareResult> metrics;   // new against reference, when both exist
   std::optional<Image> reference;         // the golden image, when readable
   uint64_t nonfinite_values = 0;          // NaN/inf samples and pixel values of the new image
+  uint64_t overflow_samples = 0;          // samples of the new image beyond the film's range
 };
 
 enum class GoldenDevice { Cpu, Cuda };

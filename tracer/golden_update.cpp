@@ -86,6 +86,9 @@ std::vector<GoldenChange> update_goldens(const UpdateRequest& request) {
     if (p.render.nonfinite_samples > 0)
       throw InputError(entry.name + ": the new image has " + std::to_string(p.render.nonfinite_samples) +
                        " NaN/inf samples; a golden must be finite");
+    if (p.render.overflow_samples > 0)
+      throw InputError(entry.name + ": the new image has " + std::to_string(p.render.overflow_samples) +
+                       " samples beyond the film's range (2^30); a golden must not overflow");
     p.change.name = entry.name;
     const std::optional<Image> old = read_old_image(manifest.image_path(entry));
     if (entry.hash.empty())

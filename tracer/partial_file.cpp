@@ -22,7 +22,7 @@ void write_partial(const std::string& path, const Partial& partial) {
                  {"render", h.render},     {"spp", h.spp},
                  {"samples", {partial.film.range.begin, partial.film.range.end}},
                  {"width", partial.film.width}, {"height", partial.film.height},
-                 {"rejected", h.rejected}};
+                 {"nonfinite", h.nonfinite}, {"overflow", h.overflow}};
   const std::filesystem::path target(path);
   const std::filesystem::path temp = target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()));
   {
@@ -53,7 +53,8 @@ Partial read_partial(const std::string& path) {
   p.header.scene_sha1 = obj.string("scene_sha1");
   p.header.render = obj.get("render");
   p.header.spp = static_cast<uint32_t>(obj.unsigned_integer("spp"));
-  p.header.rejected = obj.unsigned_integer("rejected");
+  p.header.nonfinite = obj.unsigned_integer("nonfinite");
+  p.header.overflow = obj.unsigned_integer("overflow");
   p.film.width = static_cast<uint32_t>(obj.unsigned_integer("width"));
   p.film.height = static_cast<uint32_t>(obj.unsigned_integer("height"));
   const Json& samples = obj.get("samples");

@@ -17,7 +17,8 @@ struct PartialHeader {
   std::string scene;       // the scene path as given to render
   std::string scene_sha1;  // of the scene file's text; parts merge only when equal
   uint32_t spp = 0;        // the whole render's samples per pixel
-  uint64_t rejected = 0;   // samples the film rejected in this part (NaN, inf, overflow)
+  uint64_t nonfinite = 0;  // samples the film rejected in this part for NaN or inf
+  uint64_t overflow = 0;   // and for values beyond its range (2^30)
 };
 
 struct Partial {

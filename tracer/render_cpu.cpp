@@ -21,10 +21,10 @@ FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, R
   const uint32_t tiles_x = (w + kTile - 1) / kTile, tiles_y = (h + kTile - 1) / kTile;
   const int64_t tile_count = static_cast<int64_t>(tiles_x) * tiles_y;
   std::atomic<uint64_t> tiles_done{0};
-  uint64_t camera = 0, secondary = 0, shadow = 0, rejected = 0;
+  uint64_t camera = 0, secondary = 0, shadow = 0, nonfinite = 0, overflow = 0;
   const int nthreads = threads > 0 ? threads : omp_get_max_threads();
 
-#pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : camera, secondary, shadow, rejected)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : camera, secondary, shadow, nonfinite, overflow)
   for (int64_t tile = 0; tile < tile_count; ++tile) {
     const uint32_t x0 = static_cast<uint32_t>(tile % tiles_x) * kTile, y0 = static_cast<uint32_t>(tile / tiles_x) * kTile;
     RayCounts counts{};
@@ -32,7 +32,8 @@ FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, R
       for (uint32_t x = x0; x < std::min(x0 + kTile, w); ++x) {
         const FilmSum sum = render_pixel(view, x, y, range.begin, range.end, counts);
         film.pixels[static_cast<size_t>(y) * w + x] = sum;
-        rejected += sum.rejected;
+        nonfinite += sum.nonfinite;
+        overflow += sum.overflow;
       }
     }
     camera += counts.camera;
@@ -42,7 +43,8 @@ FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, R
     if (progress && omp_get_thread_num() == 0) progress(done, static_cast<uint64_t>(tile_count));
   }
   stats.rays = {camera, secondary, shadow};
-  stats.nonfinite_samples = rejected;
+  stats.nonfinite_samples = nonfinite;
+  stats.overflow_samples = overflow;
   return film;
 }
 

@@ -2,8 +2,8 @@
 // rounded to a multiple of 2^-32 and the integers are added; integer addition is
 // associative, so sums of sample ranges rendered apart (by threads, devices or machines)
 // add up to exactly the sum of all samples, and the merged image equals the whole render
-// bit for bit. A sample that is NaN, infinite, or would overflow the sum is rejected and
-// counted, never added.
+// bit for bit. A sample that is NaN or infinite, or one of 2^30 or more (or that would
+// overflow the sum), is rejected and counted as non-finite or as overflow, never added.
 #pragma once
 #include "vec3.h"
 
@@ -15,8 +15,8 @@ constexpr int64_t kFilmSumLimit = 0x3fffffffffffffffll;  // |sum| stays below 2^
 
 struct FilmSum {
   int64_t rgb[3];
-  uint32_t rejected;  // samples left out: NaN, inf or beyond the film's range
-  uint32_t padding;
+  uint32_t nonfinite;  // samples left out for a NaN or inf component
+  uint32_t overflow;   // samples left out for a finite component beyond the film's range
 };
 
 // Rounds to the nearest film unit, halves away from zero (only + - * and conversions).
@@ -30,14 +30,18 @@ TRACER_HD bool film_add(FilmSum& sum, Vec3 v) {
   const float c[3] = {v.x, v.y, v.z};
   int64_t units[3];
   for (int i = 0; i < 3; ++i) {
-    if (!(abs_of(c[i]) < static_cast<float>(kFilmSampleLimit))) {  // also catches NaN
-      ++sum.rejected;
+    if (!(c[i] - c[i] == 0.0f)) {  // NaN or inf
+      ++sum.nonfinite;
+      return false;
+    }
+    if (!(abs_of(c[i]) < static_cast<float>(kFilmSampleLimit))) {
+      ++sum.overflow;
       return false;
     }
     units[i] = to_film_units(c[i]);
     const int64_t next = sum.rgb[i] + units[i];  // |sum| < 2^62 and |units| < 2^62: no overflow
     if (next > kFilmSumLimit || next < -kFilmSumLimit) {
-      ++sum.rejected;
+      ++sum.overflow;
       return false;
     }
   }
