@@ -1,5 +1,5 @@
 // `tracer bench trade SCENE`: for each knob of the path integrator (NEE, sampler, Fresnel
-// model, Russian roulette depth, max_depth, sky sampling under a cube-map sky), the time and the error of a render at a fixed
+// model, Russian roulette depth, max_depth, sky sampling under a cube-map sky, triangle test), the time and the error of a render at a fixed
 // sample budget, and the error of a render given the baseline's time (its spp scaled by
 // the measured speed). Error is against one reference made with the scene's own settings,
 // so a knob that changes the expected image (max_depth, Fresnel) shows its bias too.
@@ -47,6 +47,8 @@ std::vector<Knob> knobs(bool cubemap_sky) {
   k.push_back({"sampler", "stratified", with([](RenderOverrides& o) { o.sampler = "stratified"; }), true});
   k.push_back({"fresnel", "schlick", with([](RenderOverrides& o) { o.fresnel = FresnelKind::Schlick; }), false});
   k.push_back({"fresnel", "exact", with([](RenderOverrides& o) { o.fresnel = FresnelKind::Exact; }), false});
+  k.push_back({"triangle", "watertight", with([](RenderOverrides& o) { o.triangle_test = "watertight"; }), false});
+  k.push_back({"triangle", "moller-trumbore", with([](RenderOverrides& o) { o.triangle_test = "moller-trumbore"; }), false});
   for (uint32_t d : {1u, 3u, 8u, 65u})
     k.push_back({"rr_depth", d == 65u ? "off" : std::to_string(d), with([d](RenderOverrides& o) { o.rr_depth = d; }), false});
   for (uint32_t d : {1u, 2u, 4u, 8u, 16u})
@@ -59,6 +61,7 @@ RenderOverrides combine(RenderOverrides base, const RenderOverrides& knob) {
   if (knob.nee) base.nee = knob.nee;
   if (knob.sky_sampling) base.sky_sampling = knob.sky_sampling;
   if (knob.sampler) base.sampler = knob.sampler;
+  if (knob.triangle_test) base.triangle_test = knob.triangle_test;
   if (knob.fresnel) base.fresnel = knob.fresnel;
   if (knob.rr_depth) base.rr_depth = knob.rr_depth;
   if (knob.max_depth) base.max_depth = knob.max_depth;

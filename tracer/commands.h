@@ -66,6 +66,12 @@ struct BenchRaysCommand {
   int threads = 0;
 };
 
+struct BenchWatertightCommand {
+  std::vector<std::string> meshes;  // closed OBJ meshes; none: a generated icosphere and cube (and the bunny)
+  uint32_t edge_points = 16;
+  int threads = 0;
+};
+
 struct GenerateCommand {
   std::string kind, output;
   uint32_t triangles = 100000;
@@ -73,6 +79,7 @@ struct GenerateCommand {
 
 int run_render(const RenderCommand& cmd);
 int run_bench_rays(const BenchRaysCommand& cmd);
+int run_bench_watertight(const BenchWatertightCommand& cmd);
 int run_generate(const GenerateCommand& cmd);
 int run_bench_converge(const BenchConvergeCommand& cmd);
 int run_bench_trade(const BenchTradeCommand& cmd);

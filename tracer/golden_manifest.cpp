@@ -37,6 +37,7 @@ RenderOptions read_options(const Json& value, const std::string& path, const std
   if (obj.find("nee")) o.nee = obj.boolean_or("nee", true);
   if (obj.find("rr_depth")) o.rr_depth = read_u32(obj, "rr_depth");
   if (obj.find("sky_sampling")) o.sky_sampling = obj.boolean_or("sky_sampling", true);
+  if (obj.find("triangle_test")) o.triangle_test = obj.string("triangle_test");
   obj.finish();
   return o;
 }

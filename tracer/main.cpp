@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   r->add_option("--max-depth", render.overrides.max_depth, "maximum ray depth");
   r->add_option("--sampler", render.overrides.sampler, "center, grid, stochastic or stratified");
   r->add_option("--accel", render.overrides.accel, "bvh (default), kdtree, kdtree-median, grid, lbvh or none");
+  r->add_option("--triangle-test", render.overrides.triangle_test, "watertight (default) or moller-trumbore");
   r->add_option("--grid-resolution", render.overrides.grid_resolution, "grid: cells along the longest axis (default: about 3 per primitive)");
   r->add_option("--threads", render.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
   r->add_option("--device", render.device, "cpu or cuda");
@@ -124,9 +125,15 @@ int main(int argc, char** argv) {
   br->add_option("--grid-resolution", bench_rays.grid_resolution, "grid cells along the longest axis (default: by density)");
   br->add_option("--threads", bench_rays.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
 
+  BenchWatertightCommand watertight;
+  CLI::App* bw = b->add_subcommand("watertight", "rays that escape closed meshes through cracks: watertight test vs Moller-Trumbore");
+  bw->add_option("meshes", watertight.meshes, "closed OBJ meshes (default: a generated icosphere and cube, and scenes/generated/bunny.obj)");
+  bw->add_option("--edge-points", watertight.edge_points, "points aimed at along every edge (default 16)");
+  bw->add_option("--threads", watertight.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
+
   GenerateCommand generate;
   CLI::App* gen = app.add_subcommand("generate", "write a deterministic procedural mesh as OBJ");
-  gen->add_option("kind", generate.kind, "terrain, sphere, boxes, cubes or mixed")->required();
+  gen->add_option("kind", generate.kind, "terrain, sphere, boxes, cubes, mixed, icosphere or cube")->required();
   gen->add_option("--triangles", generate.triangles, "target triangle count (default 100000)");
   gen->add_option("-o,--output", generate.output, "OBJ file")->required();
 
@@ -148,6 +155,7 @@ int main(int argc, char** argv) {
     if (*bc) return run_bench_converge(converge);
     if (*bt) return run_bench_trade(trade);
     if (*br) return run_bench_rays(bench_rays);
+    if (*bw) return run_bench_watertight(watertight);
     if (*gen) return run_generate(generate);
     return run_compare(compare);
   } catch (const std::exception& e) {  // InputError, DeviceUnavailable, CUDA errors, I/O

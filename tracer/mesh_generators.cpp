@@ -81,10 +81,58 @@ void cubes(std::vector<MeshTriangle>& out, uint32_t count) {
   }
 }
 
+// A closed icosphere of radius 1: the icosahedron with each triangle split into four,
+// `levels` times, midpoints pushed onto the sphere. Both triangles at an edge compute its
+// midpoint from the same two points (a + b is symmetric), so shared vertices are identical.
+void icosphere(std::vector<MeshTriangle>& out, uint32_t triangles) {
+  const float g = 1.6180339887f;  // the golden ratio
+  const Vec3 v[12] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  const int f[20][3] = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                        {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                        {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  std::vector<MeshTriangle> mesh;
+  for (const auto& t : f) mesh.push_back(triangle(normalize(v[t[0]]), normalize(v[t[1]]), normalize(v[t[2]])));
+  while (mesh.size() * 4 <= triangles) {
+    std::vector<MeshTriangle> finer;
+    for (const MeshTriangle& t : mesh) {
+      const Vec3 ab = normalize(t.p[0] + t.p[1]), bc = normalize(t.p[1] + t.p[2]), ca = normalize(t.p[2] + t.p[0]);
+      finer.push_back(triangle(t.p[0], ab, ca));
+      finer.push_back(triangle(ab, t.p[1], bc));
+      finer.push_back(triangle(ca, bc, t.p[2]));
+      finer.push_back(triangle(ab, bc, ca));
+    }
+    mesh.swap(finer);
+  }
+  out.insert(out.end(), mesh.begin(), mesh.end());
+}
+
+// The closed cube [-1, 1]^3, each face an n x n grid of quad pairs; every grid coordinate
+// comes from one expression, so faces meet at identical vertices.
+void grid_cube(std::vector<MeshTriangle>& out, uint32_t triangles) {
+  const uint32_t n = std::max(1u, static_cast<uint32_t>(std::lround(std::sqrt(triangles / 12.0))));
+  const auto c = [n](uint32_t k) { return -1.0f + 2.0f * static_cast<float>(k) / static_cast<float>(n); };
+  for (int axis = 0; axis < 3; ++axis)
+    for (const float side : {-1.0f, 1.0f}) {
+      const auto at = [&](uint32_t i, uint32_t j) {
+        Vec3 p{0, 0, 0};
+        p[axis] = side;
+        p[(axis + 1) % 3] = c(i);
+        p[(axis + 2) % 3] = c(j);
+        return p;
+      };
+      for (uint32_t j = 0; j < n; ++j)
+        for (uint32_t i = 0; i < n; ++i) {
+          if (side > 0) quad(out, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+          else quad(out, at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j));  // outward winding
+        }
+    }
+}
+
 }  // namespace
 
 const std::vector<std::string>& mesh_generator_kinds() {
-  static const std::vector<std::string> kinds = {"terrain", "sphere", "boxes", "cubes", "mixed"};
+  static const std::vector<std::string> kinds = {"terrain", "sphere", "boxes", "cubes", "mixed", "icosphere", "cube"};
   return kinds;
 }
 
@@ -100,6 +148,10 @@ std::vector<MeshTriangle> generate_mesh(const std::string& kind, uint32_t triang
     box(out, {0.6f, 0, -0.2f}, {1.4f, 0.6f, 0.6f});
   } else if (kind == "cubes") {
     cubes(out, std::max(1u, triangles / 12));
+  } else if (kind == "icosphere") {
+    icosphere(out, triangles);
+  } else if (kind == "cube") {
+    grid_cube(out, triangles);
   } else if (kind == "mixed") {
     sphere(out, triangles - triangles / 6, {0, 1.5f, 0}, 1.2f);
     cubes(out, std::max(1u, triangles / 6 / 12));

@@ -21,6 +21,7 @@ RenderOverrides RenderOptions::overrides() const {
   o.nee = nee;
   o.rr_depth = rr_depth;
   o.sky_sampling = sky_sampling;
+  o.triangle_test = triangle_test;
   return o;
 }
 
@@ -37,6 +38,7 @@ nlohmann::ordered_json RenderOptions::to_json() const {
   if (nee) j["nee"] = *nee;
   if (rr_depth) j["rr_depth"] = *rr_depth;
   if (sky_sampling) j["sky_sampling"] = *sky_sampling;
+  if (triangle_test) j["triangle_test"] = *triangle_test;
   return j;
 }
 
@@ -52,6 +54,7 @@ RenderOptions resolved_options(const Scene& scene) {
   o.height = rs.height;
   o.max_depth = rs.max_depth;
   o.seed = rs.seed;
+  if (rs.triangle_test == TriangleTest::MollerTrumbore) o.triangle_test = "moller-trumbore";
   if (rs.integrator == IntegratorKind::Path) {
     o.nee = rs.nee != 0;
     o.rr_depth = rs.rr_depth;

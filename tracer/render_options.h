@@ -17,6 +17,7 @@ struct RenderOptions {
   std::optional<bool> nee;             // path integrator only; recorded when resolved
   std::optional<uint32_t> rr_depth;    // path integrator only; recorded when resolved
   std::optional<bool> sky_sampling;    // path under a cube-map sky only; recorded when resolved
+  std::optional<std::string> triangle_test;  // recorded when resolved to moller-trumbore
 
   bool complete() const;                     // the eight options every golden records are set
   RenderOverrides overrides() const;         // as command-line overrides of a scene

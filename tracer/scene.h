@@ -54,6 +54,7 @@ struct RenderOverrides {
   std::optional<uint32_t> rr_depth; // path: Russian roulette depth (`--rr-depth`)
   std::optional<FresnelKind> fresnel;  // every dielectric's Fresnel model (`bench trade`)
   std::optional<uint32_t> grid_resolution;  // `--grid-resolution`
+  std::optional<std::string> triangle_test;  // watertight or moller-trumbore (`--triangle-test`)
   std::optional<uint64_t> seed;
   std::optional<std::string> integrator, sampler, accel;
 };

@@ -385,6 +385,7 @@ void read_render(const Json* value, const std::string& file, const RenderOverrid
   rs.seed = obj.find("seed") ? obj.unsigned_integer("seed") : 0;
   rs.nee = obj.boolean_or("nee", true) ? 1u : 0u;
   rs.sky_sampling = obj.boolean_or("sky_sampling", true) ? 1u : 0u;
+  std::string triangle_test = obj.string_or("triangle_test", "watertight");
   rs.rr_depth = read_count(obj, "rr_depth", 3);
   rs.grid_resolution = read_count(obj, "grid_resolution", 0);
   obj.finish();
@@ -406,6 +407,11 @@ void read_render(const Json* value, const std::string& file, const RenderOverrid
   if (rs.grid_resolution > 1024)
     throw InputError((ov.grid_resolution ? cli + " --grid-resolution" : file + ": render.grid_resolution") +
                      ": must be at most 1024 cells along the longest axis");
+  if (ov.triangle_test) triangle_test = *ov.triangle_test;
+  if (triangle_test != "watertight" && triangle_test != "moller-trumbore")
+    throw InputError((ov.triangle_test ? cli + " --triangle-test" : file + ": render.triangle_test") + ": unknown test \"" +
+                     triangle_test + "\" (expected watertight or moller-trumbore)");
+  rs.triangle_test = triangle_test == "watertight" ? TriangleTest::Watertight : TriangleTest::MollerTrumbore;
   if (ov.sampler) sampler = *ov.sampler;
   if (ov.integrator) integrator = *ov.integrator;
   if (ov.accel) accel = *ov.accel;

@@ -15,12 +15,14 @@
 #include "sampler.h"
 #include "sphere.h"
 #include "triangle.h"
+#include "triangle_moller_trumbore.h"
 
 namespace tracer {
 
 enum class AccelKind : uint32_t { Bvh, None, Kdtree, KdtreeMedian, Grid, Lbvh };
 enum class IntegratorKind : uint32_t { Whitted, Normals, Albedo, Depth, Path };
 enum class BackgroundKind : uint32_t { Constant, Gradient, Cubemap };
+enum class TriangleTest : uint32_t { Watertight, MollerTrumbore };
 
 struct PointLight {
   Vec3 position;
@@ -69,6 +71,7 @@ struct RenderSettings {
   uint32_t nee;      // path: next-event estimation with MIS (1) or the plain estimator (0)
   uint32_t rr_depth; // path: Russian roulette from this many bounces on
   uint32_t grid_resolution;  // grid: cells along the longest axis; 0 picks by density
+  TriangleTest triangle_test;  // watertight (default) or Moller-Trumbore, for the trade
   uint32_t sky_sampling;     // path with NEE: a cube-map sky is a light of the table (1) or only found by BSDF rays (0)
 };
 
@@ -125,7 +128,9 @@ TRACER_HD void test_primitive(const SceneView& scene, uint32_t id, const Ray& ra
     case ShapeKind::Sphere: hit = intersect_sphere(p.a, p.radius, ray, 0.0f, best.t, t); break;
     case ShapeKind::Plane: hit = intersect_plane(p.a, p.b, ray, 0.0f, best.t, t); break;
     case ShapeKind::Triangle:
-      hit = intersect_triangle(p.a, p.b, p.c, ray, shear, 0.0f, best.t, t, b0, b1, b2);
+      hit = scene.settings.triangle_test == TriangleTest::Watertight
+                ? intersect_triangle(p.a, p.b, p.c, ray, shear, 0.0f, best.t, t, b0, b1, b2)
+                : intersect_triangle_moller_trumbore(p.a, p.b, p.c, ray, 0.0f, best.t, t, b0, b1, b2);
       break;
     case ShapeKind::Quad: hit = intersect_quad(p.a, p.b, p.c, ray, 0.0f, best.t, t, b1, b2); break;
   }
