@@ -112,7 +112,7 @@ int self_hits(const Scene& scene, Vec3 aim_center, float aim_radius) {
     const Surface s = surface_at(view, ray, hit);
     const Vec3 n = dot(ray.dir, s.ng) < 0.0f ? s.ng : -s.ng;
     const Vec3 d = reflect(ray.dir, n);
-    const Ray out = {offset_ray_origin(s.p, s.ng, d), d};
+    const Ray out = {offset_ray_origin(s.p, s.ng, d, 1.0f), d};
     const Hit again = trace_closest(view, out, kInfinity);
     if (again.prim != kNoHit) ++bad;
   }

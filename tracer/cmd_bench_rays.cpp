@@ -141,7 +141,7 @@ int run_bench_rays(const BenchRaysCommand& cmd) {
         if (primary[i].prim == kNoHit) continue;
         const Surface s = surface_at(view, rays.primary[i], primary[i]);
         const Vec3 dir = normalize(light - s.p);
-        const Ray r = {offset_ray_origin(s.p, s.ng, dir), dir};
+        const Ray r = {offset_ray_origin(s.p, s.ng, dir, view.offset_scale), dir};
         rays.shadow.push_back(r);
         rays.shadow_tmax.push_back(length(light - r.origin));
       }

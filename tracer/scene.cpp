@@ -33,6 +33,7 @@ SceneView Scene::view() const {
   v.sky_cells = sky_cells.data();
   v.sky_cells_per_side = sky_cells_per_side;
   v.sky_light = sky_light;
+  v.offset_scale = offset_scale;
   v.background = background;
   v.ambient = ambient;
   v.camera = camera;

@@ -33,6 +33,7 @@ struct Scene {
   std::vector<SkyCell> sky_cells;       // a sampled cube-map sky's cells (kernel/sky_sampling.h)
   uint32_t sky_cells_per_side = 0;
   uint32_t sky_light = kNoHit;          // the sky's light_table entry
+  float offset_scale = 1.0f;            // kernel/ray_offset.h
   Background background{};
   Vec3 ambient{0.0f, 0.0f, 0.0f};
   Camera camera{};

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "acceleration.h"
+#include "bounds.h"
 #include "camera_setup.h"
 #include "json_reader.h"
 #include "light_table.h"
@@ -510,6 +511,23 @@ uint32_t shape_feature(ShapeKind kind) {
   return 0;
 }
 
+// kernel/ray_offset.h's scale: the smallest power of two at least the scene's size (its
+// geometry, camera and lights), at most 1.
+float ray_offset_scale(const Scene& scene) {
+  Bounds b;
+  for (const Primitive& p : scene.primitives) {
+    if (p.kind == ShapeKind::Plane) b.grow(p.a);
+    else b.grow(primitive_bounds(p));
+  }
+  b.grow(scene.camera.origin);
+  for (const PointLight& l : scene.lights) b.grow(l.position);
+  const Vec3 d = b.hi - b.lo;
+  const float size = std::max(d.x, std::max(d.y, d.z));
+  float scale = 1.0f;
+  while (scale * 0.5f >= size && scale > 0x1p-100f) scale *= 0.5f;
+  return scale;
+}
+
 }  // namespace
 
 Scene load_scene_text(const std::string& text, const std::string& path, const RenderOverrides& overrides) {
@@ -561,6 +579,7 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
   if (overrides.fresnel)
     for (Material& m : scene.materials)
       if (m.kind == MaterialKind::Dielectric) m.fresnel = *overrides.fresnel;
+  scene.offset_scale = ray_offset_scale(scene);
   build_light_table(scene);
   const auto build_start = std::chrono::steady_clock::now();
   build_acceleration(scene);

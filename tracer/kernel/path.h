@@ -19,7 +19,7 @@ namespace tracer {
 // Whether the shading point at s sees the sampled light (a point light within its
 // distance, the sky past everything, an emitter as the closest hit along wi).
 TRACER_HD bool light_visible(const SceneView& scene, const Surface& s, const LightSample& ls) {
-  const Ray ray = {offset_ray_origin(s.p, s.ng, ls.wi), ls.wi};
+  const Ray ray = {offset_ray_origin(s.p, s.ng, ls.wi, scene.offset_scale), ls.wi};
   if (ls.prim == kSkyLight) return !trace_any(scene, ray, kInfinity);
   if (ls.prim == kNoHit) return !trace_any(scene, ray, length(s.p + ls.wi * ls.distance - ray.origin));
   return trace_closest(scene, ray, kInfinity).prim == ls.prim;
@@ -83,7 +83,7 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, ui
       if (!(rr_u < q)) break;
       throughput = throughput / q;
     }
-    ray = {offset_ray_origin(s.p, s.ng, bs.wi), bs.wi};
+    ray = {offset_ray_origin(s.p, s.ng, bs.wi, scene.offset_scale), bs.wi};
     from = s.p;
     ++counts.secondary;
   }

@@ -104,6 +104,7 @@ struct SceneView {
   const SkyCell* sky_cells;       // 6 faces x n x n, face-major then row-major; none when n is 0
   uint32_t sky_cells_per_side;    // n
   uint32_t sky_light;             // the sky's light_table entry, or kNoHit
+  float offset_scale;             // ray offsets near the origin (kernel/ray_offset.h): a power of two <= 1
   Background background;
   Vec3 ambient;
   Camera camera;

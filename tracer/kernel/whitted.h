@@ -76,7 +76,7 @@ TRACER_HD Vec3 whitted_local(const SceneView& scene, const WhittedResponse& w, c
     const float cos_l = dot(n, l);
     if (!(cos_l > 0.0f)) continue;
     if (scene.settings.effects & kEffectShadows) {
-      const Vec3 origin = offset_ray_origin(s.p, s.ng, l);
+      const Vec3 origin = offset_ray_origin(s.p, s.ng, l, scene.offset_scale);
       ++counts.shadow;
       if (trace_any(scene, {origin, l}, length(light.position - origin))) continue;
     }
@@ -127,7 +127,7 @@ TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, R
         const Vec3 weight = task.weight * w.kt * (1.0f - f);
         if (max_component(weight) > 0.0f) {
           ++counts.secondary;
-          stack[top++] = {{offset_ray_origin(s.p, s.ng, refracted), refracted}, weight, task.depth + 1};
+          stack[top++] = {{offset_ray_origin(s.p, s.ng, refracted, scene.offset_scale), refracted}, weight, task.depth + 1};
         }
       } else {
         kr += w.kt;  // total internal reflection
@@ -137,7 +137,7 @@ TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, R
     if ((scene.settings.effects & kEffectReflection) && max_component(weight) > 0.0f) {
       const Vec3 reflected = reflect(task.ray.dir, n);
       ++counts.secondary;
-      stack[top++] = {{offset_ray_origin(s.p, s.ng, reflected), reflected}, weight, task.depth + 1};
+      stack[top++] = {{offset_ray_origin(s.p, s.ng, reflected, scene.offset_scale), reflected}, weight, task.depth + 1};
     }
   }
   return radiance;
