@@ -281,6 +281,27 @@ TEST(SamplingChi2, CubeMapSkyCellsByTheirDensity) {
   EXPECT_NEAR(mean, 4 * M_PI, 5 * se) << "standard error " << se;
 }
 
+// Faces of 384 texels give cells of 3 x 3 texels: a lone bright texel on a cell's edge, off
+// its centre and corners, still gives its cell a probability (the cell's weight is the
+// filtered sky's largest value over the cell, not a few points of it).
+TEST(SamplingChi2, CubeMapSkyCellSeesALoneTexelOffItsCentre) {
+  const auto dir = test::temp_dir("sky-lone-texel");
+  constexpr int kSize = 384;
+  const std::string faces = test::write_cube_faces(dir, kSize, [](int face, int x, int y) {
+    return face == 0 && x == 0 && y == 1 ? Vec3{100, 100, 100} : Vec3{0, 0, 0};
+  });
+  const Scene scene = load_scene_text(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
+      "film": {"width": 4, "height": 4}, "render": {"integrator": "path"},
+      "background": {"type": "cubemap", "faces": [)" + faces + R"(]}, "materials": {}, "shapes": []})",
+                                      (dir / "s.json").string());
+  std::filesystem::remove_all(dir);
+  const SceneView view = scene.view();
+  ASSERT_EQ(view.sky_light, 0u) << "the sky has a sampling distribution";
+  ASSERT_EQ(view.sky_cells_per_side, 128u);
+  const float u = 0.5f / kSize, v = 1.0f - 1.5f / kSize;  // texel (0, 1)'s centre
+  EXPECT_GT(sky_direction_pdf(view, normalize(cube_direction(0, 2 * u - 1, 2 * v - 1))), 0.0f);
+}
+
 TEST(SamplingChi2, GammaQKnownValues) {
   EXPECT_NEAR(gamma_q(1.0, 2.0), std::exp(-2.0), 1e-12);           // Q(1, x) = e^-x
   EXPECT_NEAR(gamma_q(0.5, 1.0), std::erfc(1.0), 1e-10);           // Q(1/2, x) = erfc(sqrt(x))

@@ -16,19 +16,25 @@ constexpr uint32_t kMaxSkyCellsPerSide = 128;
 // the sphere the cells' weights estimate, for the sky's power.
 double build_sky_cells(Scene& scene) {
   const SceneView view = scene.view();
-  const uint32_t n = std::min(scene.textures[scene.background.faces[0]].width, kMaxSkyCellsPerSide);
+  const uint32_t face_size = scene.textures[scene.background.faces[0]].width;
+  const uint32_t n = std::min(face_size, kMaxSkyCellsPerSide);
+  // The bilinear filter is bilinear between texel centres, so its largest value over a cell
+  // lies on the grid of half-texel steps: (2k + 1)^2 points for k texels per cell side.
+  const uint32_t steps = 2u * ((face_size + n - 1) / n);
   scene.sky_cells.assign(6u * n * n, SkyCell{0.0f, 0.0f});
   std::vector<double> weight(scene.sky_cells.size());
   double luminance_integral = 0.0;
   for (uint32_t face = 0; face < 6; ++face)
     for (uint32_t cy = 0; cy < n; ++cy)
       for (uint32_t cx = 0; cx < n; ++cx) {
-        float brightest = 0.0f;  // the centre and the four corners
-        for (const auto& [fx, fy] : {std::pair{0.5f, 0.5f}, {0.0f, 0.0f}, {1.0f, 0.0f}, {0.0f, 1.0f}, {1.0f, 1.0f}}) {
-          const float a = 2.0f * (static_cast<float>(cx) + fx) / static_cast<float>(n) - 1.0f;
-          const float b = 2.0f * (static_cast<float>(cy) + fy) / static_cast<float>(n) - 1.0f;
-          brightest = std::max(brightest, luminance(background_radiance(view, normalize(cube_direction(face, a, b)))));
-        }
+        float brightest = 0.0f;
+        for (uint32_t j = 0; j <= steps; ++j)
+          for (uint32_t i = 0; i <= steps; ++i) {
+            const float fx = static_cast<float>(i) / static_cast<float>(steps), fy = static_cast<float>(j) / static_cast<float>(steps);
+            const float a = 2.0f * (static_cast<float>(cx) + fx) / static_cast<float>(n) - 1.0f;
+            const float b = 2.0f * (static_cast<float>(cy) + fy) / static_cast<float>(n) - 1.0f;
+            brightest = std::max(brightest, luminance(background_radiance(view, normalize(cube_direction(face, a, b)))));
+          }
         const double a = 2.0 * (cx + 0.5) / n - 1.0, b = 2.0 * (cy + 0.5) / n - 1.0;
         const double solid_angle = 4.0 / (static_cast<double>(n) * n) / std::pow(1.0 + a * a + b * b, 1.5);
         weight[(face * n + cy) * n + cx] = brightest * solid_angle;

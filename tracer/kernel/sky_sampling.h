@@ -1,7 +1,7 @@
 // Importance sampling of a cube-map sky for next-event estimation. The host divides each
 // face into n x n cells (at most the face's texels) and gives each cell a probability
-// proportional to its largest luminance (centre and corners, so a bright texel's bilinear
-// spill is covered) times its solid angle; the cumulative sums are multiples of 2^-24, so
+// proportional to the largest luminance of the filtered sky over it (found on its grid of
+// half-texel steps, where the bilinear filter has its extremes) times its solid angle; the cumulative sums are multiples of 2^-24, so
 // the probability of drawing a cell with a 24-bit uniform is exactly its pmf. A direction
 // is uniform in its cell on the face (coordinates a, b in [-1, 1] at distance 1), whose
 // solid-angle density is pmf / (4 / n^2) * (1 + a^2 + b^2)^(3/2) (dA cos / r^2 = dA / r^3).
