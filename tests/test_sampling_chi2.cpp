@@ -231,6 +231,14 @@ TEST(SamplingChi2, QuadAndTriangleLightsAreUniformByArea) {
   }
 }
 
+// A path-traced scene of nothing but the cube-map sky whose faces were written into dir.
+Scene sky_only_scene(const std::filesystem::path& dir, const std::string& faces) {
+  return load_scene_text(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
+      "film": {"width": 4, "height": 4}, "render": {"integrator": "path"},
+      "background": {"type": "cubemap", "faces": [)" + faces + R"(]}, "materials": {}, "shapes": []})",
+                         (dir / "s.json").string());
+}
+
 // A cube-map sky with a different level on each face and one bright texel: directions are
 // binned by quarter cells of the faces (2 x 2 per cell), each bin expecting the integral of
 // sky_direction_pdf over it (midpoint rule in face coordinates, dw = dA / r^3); E[1 / pdf]
@@ -242,10 +250,7 @@ TEST(SamplingChi2, CubeMapSkyCellsByTheirDensity) {
     const float level = face == 2 && x == 1 && y == 2 ? 40.0f : 0.2f + 0.2f * face;
     return Vec3{level, level, level};
   });
-  const Scene scene = load_scene_text(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
-      "film": {"width": 4, "height": 4}, "render": {"integrator": "path"},
-      "background": {"type": "cubemap", "faces": [)" + faces + R"(]}, "materials": {}, "shapes": []})",
-                                      (dir / "s.json").string());
+  const Scene scene = sky_only_scene(dir, faces);
   std::filesystem::remove_all(dir);
   const SceneView view = scene.view();
   ASSERT_EQ(view.sky_light, 0u);
@@ -290,10 +295,7 @@ TEST(SamplingChi2, CubeMapSkyCellSeesALoneTexelOffItsCentre) {
   const std::string faces = test::write_cube_faces(dir, kSize, [](int face, int x, int y) {
     return face == 0 && x == 0 && y == 1 ? Vec3{100, 100, 100} : Vec3{0, 0, 0};
   });
-  const Scene scene = load_scene_text(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
-      "film": {"width": 4, "height": 4}, "render": {"integrator": "path"},
-      "background": {"type": "cubemap", "faces": [)" + faces + R"(]}, "materials": {}, "shapes": []})",
-                                      (dir / "s.json").string());
+  const Scene scene = sky_only_scene(dir, faces);
   std::filesystem::remove_all(dir);
   const SceneView view = scene.view();
   ASSERT_EQ(view.sky_light, 0u) << "the sky has a sampling distribution";
