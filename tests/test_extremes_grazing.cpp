@@ -53,11 +53,12 @@ TEST(ExtremesGrazing, SkimmingRaysHitOrMissWithoutNaN) {
     EXPECT_NEAR(t, 1.0f / c, 1e-3f / c) << c;  // height 1 over the plane, falling c per unit
     float b0, b1, b2;
     const Ray low = {{-1.0f, 1e-3f, 0.0f}, d};
-    if (intersect_triangle({-10, 0, -10}, {10, 0, -10}, {0, 0, 1e6f}, low, make_ray_shear(d), 0.0f, kInfinity, t, b0, b1, b2))
+    if (intersect_triangle({-10, 0, -10}, {10, 0, -10}, {0, 0, 1e6f}, low, make_ray_shear(d), 0.0f, kInfinity, t, b0, b1, b2)) {
       EXPECT_TRUE(std::isfinite(t) && std::isfinite(b0) && std::isfinite(b1) && std::isfinite(b2)) << c;
+    }
     // A ray passing the unit sphere at height 1 - c over its top.
     const Ray skim = {{-3.0f, 1.0f - c, 0.0f}, {1, 0, 0}};
-    if (intersect_sphere({0, 0, 0}, 1.0f, skim, 0.0f, kInfinity, t)) EXPECT_TRUE(std::isfinite(t) && t > 0.0f) << c;
+    if (intersect_sphere({0, 0, 0}, 1.0f, skim, 0.0f, kInfinity, t)) { EXPECT_TRUE(std::isfinite(t) && t > 0.0f) << c; }
   }
 }
 

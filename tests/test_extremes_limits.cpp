@@ -27,7 +27,7 @@ TEST(ExtremesLimits, EmitterOf1e30IsReportedAsOverflowNotNaN) {
     RenderStats stats;
     const Image img = render_cpu(test::scene_from(lamp_scene("1e30", integrator, 4, 24, 16)), 0, stats);
     EXPECT_EQ(stats.nonfinite_samples, 0u) << integrator;
-    if (std::string(integrator) == "path") EXPECT_GT(stats.overflow_samples, 0u) << integrator;
+    if (std::string(integrator) == "path") { EXPECT_GT(stats.overflow_samples, 0u) << integrator; }
     for (float v : img.rgb) EXPECT_TRUE(std::isfinite(v)) << integrator;
   }
 }
@@ -45,7 +45,7 @@ TEST(ExtremesLimits, MaxDepthZeroShowsOnlyEmitters) {
     int lamp = 0, dark = 0;
     for (float v : img.rgb) lamp += v == 2.0f, dark += v == 0.0f;
     EXPECT_GT(lamp, 0) << "max_depth " << depth;
-    if (depth == 0) EXPECT_EQ(lamp + dark, int(img.rgb.size())) << "only emitters at max_depth 0";
+    if (depth == 0) { EXPECT_EQ(lamp + dark, int(img.rgb.size())) << "only emitters at max_depth 0"; }
     else EXPECT_LT(lamp + dark, int(img.rgb.size())) << "the floor is lit at max_depth " << depth;
   }
 }

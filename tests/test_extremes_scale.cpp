@@ -35,14 +35,25 @@ std::string at(double x, double y, double z, double s, double offset) {
   return "[" + num(x * s + offset) + ", " + num(y * s + offset) + ", " + num(z * s + offset) + "]";
 }
 
+// A floor tilted to the normal (0.3, 1, 0.2), so its points do not round onto it exactly,
+// as a plane, a quad or a triangle, filling the view from above.
+std::string tilted_floor(const std::string& kind, double s, double offset) {
+  if (kind == "plane") return R"({"type": "plane", "point": )" + at(0, 0, 0, s, offset) + R"(, "normal": [0.3, 1, 0.2], "material": "floor"})";
+  // u = (1, -0.3, 0) and v = (0, -0.2, 1) lie in the floor; cross(v, u) points up.
+  if (kind == "quad")
+    return R"({"type": "quad", "corner": )" + at(-8, 4, -8, s, offset) + R"(, "u": )" + at(0, -3.2, 16, s, 0) +
+           R"(, "v": )" + at(16, -4.8, 0, s, 0) + R"(, "material": "floor"})";
+  return R"({"type": "triangle", "vertices": [)" + at(-8, 4, -8, s, offset) + ", " + at(-8, 0.8, 16, s, offset) + ", " +
+         at(16, -3.2, -8, s, offset) + R"(], "material": "floor"})";
+}
+
 // With occluders: a floor quad, a sphere and a triangle seen from the side. Without: only
-// an infinite floor plane, tilted so its points do not round onto it exactly, seen from
-// above, every pixel on it.
-std::string scene(double s, double offset, const std::string& integrator, bool occluders) {
+// the tilted floor of `floor_kind` seen from above, every pixel on it.
+std::string scene(double s, double offset, const std::string& integrator, bool occluders, const std::string& floor_kind = "plane") {
   const std::string shapes =
       (occluders ? R"({"type": "quad", "corner": )" + at(-2, 0, -2, s, offset) + R"(, "u": )" + at(0, 0, 4, s, 0) +
                        R"(, "v": )" + at(4, 0, 0, s, 0) + R"(, "material": "floor"})"
-                 : R"({"type": "plane", "point": )" + at(0, 0, 0, s, offset) + R"(, "normal": [0.3, 1, 0.2], "material": "floor"})") +
+                 : tilted_floor(floor_kind, s, offset)) +
       (occluders ? R"(, {"type": "sphere", "center": )" + at(-0.4, 0.5, 0, s, offset) + R"(, "radius": )" + num(0.5 * s) +
                        R"(, "material": "ball"}, {"type": "triangle", "vertices": [)" + at(0.3, 0.1, 0.3, s, offset) + ", " +
                        at(1.1, 0.1, 0.2, s, offset) + ", " + at(0.7, 0.9, -0.2, s, offset) + R"(], "material": "ball"})"
@@ -102,16 +113,18 @@ TEST(ExtremesScale, SceneFarFromTheOriginRendersTheSameImage) {
   EXPECT_LE(d.mean, 0.01);
 }
 
-// Every pixel sees the floor lit by the light; one that reads 0 was shadowed by the floor itself.
-TEST(ExtremesScale, LitPlaneHasNoAcneAtAnyScale) {
-  for (const char* integrator : {"whitted", "path"})
-    for (const double s : {1e-4, 1e-2, 1.0, 1e2, 1e4})
-      for (const double offset : {0.0, 1e5 * s}) {
-        const Image img = render(scene(s, offset, integrator, false));
-        int dark = 0;
-        for (size_t i = 0; i < img.rgb.size(); i += 3) dark += !(img.rgb[i] > 0.0f);
-        EXPECT_EQ(dark, 0) << integrator << " at scale " << s << ", offset " << offset;
-      }
+// Every pixel sees the floor lit by the light; one that reads 0 was shadowed by the floor
+// itself. The floor as a plane, a quad and a triangle, each with its own ray test.
+TEST(ExtremesScale, LitFloorHasNoAcneAtAnyScale) {
+  for (const char* kind : {"plane", "quad", "triangle"})
+    for (const char* integrator : {"whitted", "path"})
+      for (const double s : {1e-4, 1e-2, 1.0, 1e2, 1e4})
+        for (const double offset : {0.0, 1e5 * s}) {
+          const Image img = render(scene(s, offset, integrator, false, kind));
+          int dark = 0;
+          for (size_t i = 0; i < img.rgb.size(); i += 3) dark += !(img.rgb[i] > 0.0f);
+          EXPECT_EQ(dark, 0) << kind << ", " << integrator << " at scale " << s << ", offset " << offset;
+        }
 }
 
 }  // namespace

@@ -117,6 +117,7 @@ int run_render(const RenderCommand& cmd) {
     j["mrays_per_second"] = mrays;
     j["nonfinite_samples"] = stats.nonfinite_samples;
     j["overflow_samples"] = stats.overflow_samples;
+    j["degenerate_triangles"] = scene.degenerate_triangles;
     j["accel"] = {{"kind", rs.accel == AccelKind::Bvh ? "bvh" : "none"}, {"nodes", scene.bvh_nodes.size()}};
     j["features"] = feature_names(scene.features);
     write_text_atomically(cmd.stats, j.dump(2) + "\n");
@@ -128,6 +129,9 @@ int run_render(const RenderCommand& cmd) {
     std::fprintf(stderr, "%ux%u, %u spp, %.3f s, %.2fM rays, %.2f Mrays/s, %llu NaN/inf samples\n", rs.width,
                  rs.height, rs.spp, render_s, static_cast<double>(rays) / 1e6, mrays,
                  static_cast<unsigned long long>(stats.nonfinite_samples));
+  if (!cmd.quiet && scene.degenerate_triangles > 0)
+    std::fprintf(stderr, "note: %u mesh triangles of zero area were left out (they have no normal)\n",
+                 scene.degenerate_triangles);
   if (stats.overflow_samples > 0)
     std::fprintf(stderr, "warning: %llu samples had radiance of 2^30 or more and were left out (film overflow)\n",
                  static_cast<unsigned long long>(stats.overflow_samples));
@@ -146,6 +150,7 @@ int run_info(const std::string& scene_path) {
   for (const Primitive& p : scene.primitives) ++by_kind[static_cast<int>(p.kind)];
   std::printf("\nprimitives %zu (spheres %u, planes %u, triangles %u, quads %u)\n", scene.primitives.size(),
               by_kind[0], by_kind[1], by_kind[2], by_kind[3]);
+  if (scene.degenerate_triangles > 0) std::printf("left out   %u mesh triangles of zero area\n", scene.degenerate_triangles);
   std::printf("materials  %zu, point lights %zu\n", scene.materials.size(), scene.lights.size());
   std::printf("features  ");
   for (const std::string& f : feature_names(scene.features)) std::printf(" %s", f.c_str());

@@ -40,6 +40,7 @@ struct Scene {
   RenderSettings settings{};
   uint32_t features = 0;
   std::map<std::string, uint32_t> shape_counts;  // by the scene file's shape type
+  uint32_t degenerate_triangles = 0;             // mesh triangles of zero area, left out
   std::set<std::string> used_types;              // "shape:box", "sampler:grid": scene_types.h
   double build_seconds = 0.0;                    // acceleration-structure build time
 

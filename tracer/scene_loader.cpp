@@ -22,6 +22,14 @@ namespace {
 
 constexpr uint32_t kMaxResolution = 16384;
 
+// Whether normalize(cross(e1, e2)), as surface.h computes a triangle's or quad's normal,
+// is a finite unit vector: false for zero area (collinear or coincident corners) and for
+// cross products whose squared length under- or overflows a float.
+bool has_unit_normal(Vec3 e1, Vec3 e2) {
+  const Vec3 n = normalize(cross(e1, e2));
+  return is_finite(n) && length(n) > 0.5f;
+}
+
 // Reads the `type` key of a section and checks it against the loader's table.
 std::string read_type(JsonObject& obj, const std::string& category) {
   const std::string type = obj.string("type");
@@ -226,7 +234,7 @@ class SceneBuilder {
   }
 
   void add_quad(JsonObject& obj, Vec3 corner, Vec3 u, Vec3 v, uint32_t material) {
-    if (!(length(cross(u, v)) > 0.0f)) obj.fail("", "zero-area quad (u and v are parallel or zero)");
+    if (!has_unit_normal(u, v)) obj.fail("", "zero-area quad (u and v are parallel or zero, or its normal under- or overflows a float)");
     add({ShapeKind::Quad, material, -1, 0.0f, corner, u, v});
   }
 
@@ -309,8 +317,14 @@ class SceneBuilder {
   void add_triangles(JsonObject& obj, std::vector<MeshTriangle> tris, const Transform& xf,
                      const std::vector<uint32_t>& materials) {
     compute_vertex_tangents(tris);
+    const bool single = obj.string("type") == "triangle";
+    size_t kept = 0;
     for (size_t i = 0; i < tris.size(); ++i) {
       const MeshTriangle& t = tris[i];
+      const Vec3 a = xf.point(t.p[0]), b = xf.point(t.p[1]), c = xf.point(t.p[2]);
+      // A triangle without a geometric normal (surface.h) can never be shaded: left out.
+      if (!has_unit_normal(b - a, c - a)) continue;
+      ++kept;
       const uint32_t material = materials[i];
       int32_t shading = -1;
       if (t.has_normals || t.has_uvs) {
@@ -337,8 +351,10 @@ class SceneBuilder {
         shading = static_cast<int32_t>(scene_.triangle_shading.size());
         scene_.triangle_shading.push_back(sh);
       }
-      add({ShapeKind::Triangle, material, shading, 0.0f, xf.point(t.p[0]), xf.point(t.p[1]), xf.point(t.p[2])});
+      add({ShapeKind::Triangle, material, shading, 0.0f, a, b, c});
     }
+    if (kept == 0) obj.fail(single ? "vertices" : obj.find("file") ? "file" : "indices", single ? "zero-area triangle (its vertices are collinear or coincide)" : "every triangle of the mesh has zero area");
+    scene_.degenerate_triangles += static_cast<uint32_t>(tris.size() - kept);
   }
 
   Scene& scene_;

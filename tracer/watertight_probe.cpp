@@ -76,7 +76,7 @@ std::vector<Vec3> inside_points(const Scene& mesh) {
         const Vec3 o = centre + Vec3{step.x * dx, step.y * dy, step.z * dz};
         const Vec3 axes[3] = {normalize(Vec3{1, 0.01f, 0.02f}), normalize(Vec3{0.02f, 1, 0.01f}), normalize(Vec3{0.01f, 0.02f, 1})};
         bool odd = true;
-        for (const Vec3& d : axes) odd = odd && crossings(mesh, {o, d}) % 2 == 1;
+        for (const Vec3& d : axes) odd = odd && crossings(mesh, {o, d}) % 2 == 1 && crossings(mesh, {o, -d}) % 2 == 1;
         if (odd) inside.push_back(o);
       }
   if (inside.empty()) throw InputError(mesh.file + ": found no point inside the mesh near the centre of its bounds");

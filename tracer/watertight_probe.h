@@ -22,7 +22,8 @@ struct WatertightProbe {
 Scene load_probe_mesh(const std::string& obj_path, const std::string& triangle_test);
 
 // Origins: the centre of the mesh's bounds and points around it at 1/8 of its size, kept
-// when a ray along each axis crosses the mesh an odd number of times (inside). Throws
+// when rays both ways along each axis cross the mesh an odd number of times (inside; one
+// way only would take a point just beside an open sheet for an inside one). Throws
 // InputError when none is inside.
 std::vector<Vec3> inside_points(const Scene& mesh);
 

@@ -53,13 +53,17 @@ TRACER_HD bool intersect_triangle(Vec3 v0, Vec3 v1, Vec3 v2, const Ray& ray, con
   const float t_scaled = u * az + v * bz + w * cz;
   const float t = t_scaled / det;
   if (!(t > tmin && t <= tmax)) return false;
-  // Reject t not conservatively above 0 (pbrt-v4 section 6.8.6's bound on t's error).
+  // Reject t not conservatively above 0 (pbrt-v4 section 6.8.6's bound on t's error). The
+  // sheared x' = x - sx z carries the error of its two terms, gamma(3) (|x'| + 2 |sx z|);
+  // pbrt bounds |sx z| by the scaled |z / d_z|, which for a ray nearly in a sliver's plane
+  // is 1e5 times too loose and rejected its true hits (tests/test_extremes_degenerate.cpp).
   const float max_zt = max_of(abs_of(az), max_of(abs_of(bz), abs_of(cz)));
   const float max_xt = max_of(abs_of(ax), max_of(abs_of(bx), abs_of(cx)));
   const float max_yt = max_of(abs_of(ay), max_of(abs_of(by), abs_of(cy)));
+  const float max_z = max_of(abs_of(a[s.kz]), max_of(abs_of(b[s.kz]), abs_of(c[s.kz])));
   const float delta_z = error_gamma(3) * max_zt;
-  const float delta_x = error_gamma(5) * (max_xt + max_zt);
-  const float delta_y = error_gamma(5) * (max_yt + max_zt);
+  const float delta_x = error_gamma(5) * (max_xt + 2.0f * abs_of(s.sx) * max_z);
+  const float delta_y = error_gamma(5) * (max_yt + 2.0f * abs_of(s.sy) * max_z);
   const float delta_e = 2.0f * (error_gamma(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
   const float max_e = max_of(abs_of(u), max_of(abs_of(v), abs_of(w)));
   const float delta_t =
