@@ -11,12 +11,17 @@ TRACER_HD Vec3 reflect(Vec3 d, Vec3 n) { return d - n * (2.0f * dot(d, n)); }
 
 // Refraction of unit d through a surface with unit normal n facing against d, relative
 // index eta = n_incident / n_transmitted. Returns false on total internal reflection,
-// i.e. when eta^2 (1 - cos_i^2) > 1 (sin of the transmitted angle above 1).
+// i.e. when cos_t^2 = 1 - eta^2 (1 - cos_i^2) < 0. Evaluated in double as
+// (1 - eta^2) + eta^2 cos_i^2, whose first two products are exact: cos_t^2 comes out
+// correctly rounded near the critical angle too, and eta = 1 gives cos_t = cos_i exactly.
+// In float, 1 - cos_i^2 rounds to 1 below cos_i = 2^-12, which made cos_t 0 and IOR-1
+// glass reflect totally at its silhouette.
 TRACER_HD bool refract(Vec3 d, Vec3 n, float eta, Vec3& out, float& cos_t) {
   const float cos_i = -dot(d, n);
-  const float sin2_t = eta * eta * (1.0f - cos_i * cos_i);
-  if (sin2_t > 1.0f) return false;
-  cos_t = det_sqrt(1.0f - sin2_t);
+  const double eta2 = static_cast<double>(eta) * eta;
+  const double cos2_t = (1.0 - eta2) + eta2 * (static_cast<double>(cos_i) * cos_i);
+  if (cos2_t < 0.0) return false;
+  cos_t = det_sqrt(static_cast<float>(cos2_t));
   out = d * eta + n * (eta * cos_i - cos_t);
   return true;
 }
