@@ -89,16 +89,18 @@ int run_bench_trade(const BenchTradeCommand& cmd) {
   double baseline_seconds = 0;
   for (const Knob& knob : knobs(probe.background.kind == BackgroundKind::Cubemap)) {
     RenderOverrides ov = combine(base, knob.overrides);
-    ov.spp = knob.square_spp ? nearest_square(cmd.spp) : cmd.spp;
+    // the stratified sampler, the knob's or the scene's own, needs n x n samples
+    const bool square = knob.square_spp || (!knob.overrides.sampler && probe.settings.sampler == SamplerKind::Stratified);
+    ov.spp = square ? nearest_square(cmd.spp) : cmd.spp;
     const TimedRender fixed = timed_render(load_scene(cmd.scene, ov), cmd.threads, kRepeats);
     const ImageError fixed_error = image_error(fixed.image, ref);
     if (baseline_seconds == 0) baseline_seconds = fixed.seconds;
     const double scaled = static_cast<double>(*ov.spp) * baseline_seconds / fixed.seconds;
-    ov.spp = knob.square_spp ? nearest_square(scaled) : std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(scaled)));
+    ov.spp = square ? nearest_square(scaled) : std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(scaled)));
     const TimedRender equal = timed_render(load_scene(cmd.scene, ov), cmd.threads, kRepeats);
     const ImageError equal_error = image_error(equal.image, ref);
     std::printf("%-12s %-15s | %6u %9.3f %11.5g %11.5g | %14u %9.3f %11.5g\n", knob.name, knob.setting.c_str(),
-                knob.square_spp ? nearest_square(cmd.spp) : cmd.spp, fixed.seconds, fixed_error.rmse, fixed_error.rel_mse,
+                square ? nearest_square(cmd.spp) : cmd.spp, fixed.seconds, fixed_error.rmse, fixed_error.rel_mse,
                 *ov.spp, equal.seconds, equal_error.rmse);
   }
   return 0;
