@@ -54,6 +54,10 @@ TEST(Bench, TradeHasARowPerKnobSetting) {
   ASSERT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/features/sun-sky.json") +
                                  " --width 12 --height 8 --spp 4 --ref-spp 8 --threads 1", &output), 0) << output;
   EXPECT_NE(output.find("sky_sampling off"), std::string::npos) << output;
+  // A scene of its own with the stratified sampler keeps every row's spp square.
+  ASSERT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/features/ior-one.json") +
+                                 " --width 12 --height 8 --spp 4 --ref-spp 16 --threads 1", &output), 0) << output;
+  EXPECT_NE(output.find("fresnel      schlick"), std::string::npos) << output;
   std::filesystem::current_path(cwd);
   std::filesystem::remove_all(dir);
   EXPECT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/features/shadows.json"), &output), 2);
