@@ -8,6 +8,7 @@
 #include "golden_check.h"
 #include "render_cpu.h"
 #include "test_util.h"
+#include "text_file.h"
 
 namespace tracer {
 namespace {
@@ -48,6 +49,27 @@ TEST(ExtremesLimits, MaxDepthZeroShowsOnlyEmitters) {
     if (depth == 0) { EXPECT_EQ(lamp + dark, int(img.rgb.size())) << "only emitters at max_depth 0"; }
     else EXPECT_LT(lamp + dark, int(img.rgb.size())) << "the floor is lit at max_depth " << depth;
   }
+}
+
+// A pixel's film sum holds below 2^62 units of 2^-32, a radiance total below 2^30: with a
+// sky of 1024 (2^42 units a sample) the first 2^20 - 1 samples fit and every later one is
+// counted as overflow, exactly; `tracer render` says so in its warning.
+TEST(ExtremesLimits, FilmCapacityIsReachedAndCountedExactly) {
+  const uint32_t spp = 1u << 21;
+  const std::string json = R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 1], "to": [0, 0, 0], "vfov": 30},
+    "film": {"width": 1, "height": 1}, "render": {"integrator": "path", "spp": )" + std::to_string(spp) + R"(, "sampler": "stochastic"},
+    "background": {"type": "constant", "radiance": [1024, 1024, 1024]}, "materials": {}, "shapes": []})";
+  RenderStats stats;
+  const Image img = render_cpu(test::scene_from(json), 0, stats);
+  EXPECT_EQ(stats.nonfinite_samples, 0u);
+  EXPECT_EQ(stats.overflow_samples, spp - ((1u << 20) - 1));
+  EXPECT_EQ(img.rgb[0], static_cast<float>(1024.0 * ((1u << 20) - 1) / spp));  // rejected samples count as 0
+  const auto dir = test::temp_dir("film-capacity");
+  write_text_atomically((dir / "bright.json").string(), json);
+  std::string output;
+  ASSERT_EQ(test::run_tracer("render " + (dir / "bright.json").string() + " -o " + (dir / "bright.exr").string() + " --quiet", &output), 0) << output;
+  EXPECT_NE(output.find("warning: " + std::to_string(spp - ((1u << 20) - 1)) + " samples were left out (film overflow)"), std::string::npos) << output;
+  std::filesystem::remove_all(dir);
 }
 
 TEST(ExtremesLimits, OneByOneAndOneByFourThousandImages) {

@@ -133,7 +133,9 @@ int run_render(const RenderCommand& cmd) {
     std::fprintf(stderr, "note: %u mesh triangles of zero area were left out (they have no normal)\n",
                  scene.degenerate_triangles);
   if (stats.overflow_samples > 0)
-    std::fprintf(stderr, "warning: %llu samples had radiance of 2^30 or more and were left out (film overflow)\n",
+    std::fprintf(stderr,
+                 "warning: %llu samples were left out (film overflow): a sample of 2^30 or more, or a pixel's sum "
+                 "over its samples reaching 2^30 (lower spp x radiance)\n",
                  static_cast<unsigned long long>(stats.overflow_samples));
   std::printf("wrote %s\n", std::filesystem::absolute(output).string().c_str());
   return 0;

@@ -15,7 +15,7 @@ namespace tracer {
 struct RenderStats {
   RayCounts rays{};
   uint64_t nonfinite_samples = 0;  // rejected by the film: a NaN or inf component
-  uint64_t overflow_samples = 0;   // rejected by the film: a component of 2^30 or more
+  uint64_t overflow_samples = 0;   // rejected by the film: a component, or the pixel's sum, of 2^30 or more
 };
 
 using ProgressCallback = std::function<void(uint64_t done, uint64_t total)>;
