@@ -104,13 +104,17 @@ uint32_t material_feature(MaterialKind kind) {
   return 0;
 }
 
-Transform read_transform(const Json& value, const std::string& path, const std::string& file) {
+// Also records each step's kind in `used_types` ("transform:rotate").
+Transform read_transform(const Json& value, const std::string& path, const std::string& file,
+                         std::set<std::string>& used_types) {
   if (!value.is_array()) fail_at(file, path, "expected an array of transform steps, got " + describe(value));
   Transform total;
   for (size_t i = 0; i < value.size(); ++i) {
     const std::string item_path = path + "[" + std::to_string(i) + "]";
     JsonObject step(value[i], item_path, file);
-    if (value[i].size() != 1) step.fail("", "each step has exactly one of translate, scale, rotate, rotate_xyz");
+    if (value[i].size() != 1 || !is_accepted_type("transform", value[i].begin().key()))
+      step.fail("", "each step has exactly one of " + expected_types("transform"));
+    used_types.insert("transform:" + value[i].begin().key());
     Transform t;
     if (step.find("translate")) {
       t = Transform::translation(step.vec3("translate"));
@@ -150,7 +154,7 @@ class SceneBuilder {
     if (!is_accepted_type("shape", type))
       obj.fail("type", "unknown shape type \"" + type + "\" (expected " + expected_types("shape") + ")");
     const Json* tv = obj.find("transform");
-    const Transform xf = tv ? read_transform(*tv, obj.child("transform"), scene_.file) : Transform{};
+    const Transform xf = tv ? read_transform(*tv, obj.child("transform"), scene_.file, scene_.used_types) : Transform{};
     const Json* mat = obj.find("material");
     if (!mat && type == "mesh" && obj.find("file")) return add_mtl_mesh(obj, xf);
     if (!mat) obj.fail("material", type == "mesh" ? "missing: give the mesh a \"material\", or a file whose MTL has them"

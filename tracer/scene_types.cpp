@@ -14,6 +14,7 @@ const std::map<std::string, std::vector<std::string>>& accepted_scene_types() {
       {"sampler", {"center", "grid", "stochastic", "stratified"}},
       {"accel", {"bvh", "none", "kdtree", "kdtree-median", "grid", "lbvh"}},
       {"texture", {"image", "checker", "specular_map", "normal_map", "bump_map"}},
+      {"transform", {"translate", "scale", "rotate", "rotate_xyz"}},
   };
   return types;
 }

@@ -9,7 +9,8 @@
 namespace tracer {
 
 // Category ("shape", "material", "light", "background", "integrator", "sampler", "accel",
-// "texture": a material colour given as an image or a checker)
+// "texture": a material colour given as an image or a checker, or a map; "transform": a
+// step of a shape's transform list)
 // to the names the loader accepts in it, in the order SCENE_FORMAT.md lists them.
 const std::map<std::string, std::vector<std::string>>& accepted_scene_types();
 
