@@ -1,5 +1,5 @@
-// The coverage rule: every shape, material, light, background, integrator, sampler and
-// accelerator type that the scene loader accepts is drawn by at least one golden of
+// The coverage rule: every shape, material, light, background, integrator, sampler,
+// accelerator, texture and transform type that the scene loader accepts is drawn by at least one golden of
 // golden/manifest.json. A type added to the loader without a golden fails here, by name.
 #include <gtest/gtest.h>
 

@@ -357,7 +357,8 @@ class SceneBuilder {
       }
       add({ShapeKind::Triangle, material, shading, 0.0f, a, b, c});
     }
-    if (kept == 0) obj.fail(single ? "vertices" : obj.find("file") ? "file" : "indices", single ? "zero-area triangle (its vertices are collinear or coincide)" : "every triangle of the mesh has zero area");
+    if (kept == 0 && single) obj.fail("vertices", "zero-area triangle (its vertices are collinear or coincide)");
+    if (kept == 0) obj.fail(obj.find("file") ? "file" : "indices", "every triangle of the mesh has zero area");
     scene_.degenerate_triangles += static_cast<uint32_t>(tris.size() - kept);
   }
 
