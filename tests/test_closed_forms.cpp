@@ -22,14 +22,7 @@ struct Dir {
 
 Dir unit_dir(const Ray& r) { return {r.dir.x, r.dir.y, r.dir.z}; }
 
-// Distance along the ray to a sphere, or -1.
-double hit_sphere(const Ray& r, Dir c, double radius) {
-  const double ox = r.origin.x - c.x, oy = r.origin.y - c.y, oz = r.origin.z - c.z;
-  const Dir d = unit_dir(r);
-  const double b = ox * d.x + oy * d.y + oz * d.z, q = ox * ox + oy * oy + oz * oz - radius * radius;
-  const double disc = b * b - q;
-  return disc < 0 ? -1.0 : -b - std::sqrt(disc);
-}
+double hit_sphere(const Ray& r, Dir c, double radius) { return test::ray_sphere_distance(r, c.x, c.y, c.z, radius); }
 
 // Rotation about z by `degrees` (the box's own transform below).
 Dir rotate_z(Dir p, double degrees) {
@@ -220,17 +213,12 @@ TEST(ClosedForms, PhongPlaneIsBlinnPhong) {
   std::printf("Blinn-Phong plane: largest relative error %.3g\n", worst);
 }
 
-Image constant_image(uint32_t w, uint32_t h, const std::function<float(uint32_t)>& value_of_column) {
-  Image img{w, h, {}};
-  for (uint32_t y = 0; y < h; ++y)
-    for (uint32_t x = 0; x < w; ++x) img.rgb.insert(img.rgb.end(), 3, value_of_column(x));
-  return img;
+// A w x h grey image whose column x has the value value_of_column(x).
+Image column_image(uint32_t w, uint32_t h, const std::function<float(uint32_t)>& value_of_column) {
+  return test::image_from(w, h, [&](uint32_t x, uint32_t) { return Vec3{1, 1, 1} * value_of_column(x); });
 }
 
-Image render_in(const std::filesystem::path& dir, const std::string& json) {
-  RenderStats stats;
-  return render_cpu(load_scene_text(json, (dir / "s.json").string()), 1, stats);
-}
+using test::render_in;
 
 std::string lit_quad(const std::string& material) {
   return R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
@@ -244,7 +232,7 @@ std::string lit_quad(const std::string& material) {
 // ks given as half (a product by 0.5 is exact).
 TEST(ClosedForms, ConstantSpecularMapScalesTheSpecularTerm) {
   const auto dir = test::temp_dir("closed-specular-map");
-  write_image(constant_image(4, 4, [](uint32_t) { return 0.5f; }), (dir / "half.exr").string());
+  write_image(column_image(4, 4, [](uint32_t) { return 0.5f; }), (dir / "half.exr").string());
   const Image mapped = render_in(dir, lit_quad(R"({"type": "phong", "diffuse": [0.5, 0.5, 0.5], "specular": [0.6, 0.6, 0.6], "shininess": 20, "specular_map": "half.exr"})"));
   const Image halved = render_in(dir, lit_quad(R"({"type": "phong", "diffuse": [0.5, 0.5, 0.5], "specular": [0.3, 0.3, 0.3], "shininess": 20})"));
   const Image full = render_in(dir, lit_quad(R"({"type": "phong", "diffuse": [0.5, 0.5, 0.5], "specular": [0.6, 0.6, 0.6], "shininess": 20})"));
@@ -260,7 +248,7 @@ TEST(ClosedForms, ConstantSpecularMapScalesTheSpecularTerm) {
 TEST(ClosedForms, HeightRampTiltsTheNormalByItsSlope) {
   const auto dir = test::temp_dir("closed-bump-ramp");
   const float g = 0.25f;
-  write_image(constant_image(8, 8, [g](uint32_t x) { return g * x; }), (dir / "ramp.exr").string());
+  write_image(column_image(8, 8, [g](uint32_t x) { return g * x; }), (dir / "ramp.exr").string());
   const Image img = render_in(dir, R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
     "film": {"width": 33, "height": 33}, "render": {"integrator": "path", "sampler": "center", "max_depth": 1},
     "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5], "bump_map": "ramp.exr"}},

@@ -76,41 +76,23 @@ Image render(const std::string& json) {
   return img;
 }
 
-struct Difference {
-  double over_1e3_fraction, over_5e2_fraction, mean;
-};
-
-Difference compare(const Image& a, const Image& b) {
-  size_t over = 0, over_large = 0;
-  double sum = 0;
-  for (size_t i = 0; i < a.rgb.size(); i += 3) {
-    double d = 0;
-    for (int c = 0; c < 3; ++c) d = std::max(d, double(std::abs(a.rgb[i + c] - b.rgb[i + c])));
-    over += d > 1e-3;
-    over_large += d > 5e-2;
-    sum += d;
-  }
-  const double n = a.rgb.size() / 3.0;
-  return {over / n, over_large / n, sum / n};
-}
-
 TEST(ExtremesScale, ScaledScenesRenderTheScaleOneImage) {
   const Image reference = render(scene(1, 0, "whitted", true));
   for (const double s : {1e-4, 1e-2, 1e2, 1e4}) {
-    const Difference d = compare(render(scene(s, 0, "whitted", true)), reference);
-    std::printf("scale %g: %.4f %% of pixels differ by > 1e-3, mean difference %.3g\n", s, 100 * d.over_1e3_fraction, d.mean);
-    EXPECT_EQ(d.over_1e3_fraction, 0.0) << "scale " << s;
-    EXPECT_LE(d.mean, 1e-6) << "scale " << s;
+    const test::PixelDifferences d = test::pixel_differences(render(scene(s, 0, "whitted", true)), reference);
+    std::printf("scale %g: %.4f %% of pixels differ by > 1e-3, mean difference %.3g\n", s, 100 * d.fraction_over(1e-3), d.mean());
+    EXPECT_EQ(d.count_over(1e-3), 0u) << "scale " << s;
+    EXPECT_LE(d.mean(), 1e-6) << "scale " << s;
   }
 }
 
 TEST(ExtremesScale, SceneFarFromTheOriginRendersTheSameImage) {
   const Image reference = render(scene(1, 0, "whitted", true));
-  const Difference d = compare(render(scene(1, 1e5, "whitted", true)), reference);
+  const test::PixelDifferences d = test::pixel_differences(render(scene(1, 1e5, "whitted", true)), reference);
   std::printf("offset 1e5: %.4f %% of pixels differ by > 1e-3, %.4f %% by > 0.05, mean difference %.3g\n",
-              100 * d.over_1e3_fraction, 100 * d.over_5e2_fraction, d.mean);
-  EXPECT_LE(d.over_5e2_fraction, 0.02);
-  EXPECT_LE(d.mean, 0.01);
+              100 * d.fraction_over(1e-3), 100 * d.fraction_over(5e-2), d.mean());
+  EXPECT_LE(d.fraction_over(5e-2), 0.02);
+  EXPECT_LE(d.mean(), 0.01);
 }
 
 // Every pixel sees the floor lit by the light; one that reads 0 was shadowed by the floor

@@ -1,16 +1,23 @@
-// Helpers shared by the tests: scenes from inline JSON, temporary directories, running
-// the CLI.
+// Helpers shared by the tests: scenes from inline JSON, temporary directories, images,
+// loader errors, pixel differences, running the CLI.
 #pragma once
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include <functional>
+
+#include <gtest/gtest.h>
+
 #include "image_io.h"
+#include "input_error.h"
+#include "render_cpu.h"
 #include "scene_loader.h"
 
 namespace tracer::test {
@@ -38,18 +45,73 @@ inline Scene scene_from(const std::string& json, const RenderOverrides& ov = {})
   return load_scene_text(json, "inline.json", ov);
 }
 
+// A w x h image whose texel (x, y) is texel(x, y).
+inline Image image_from(uint32_t w, uint32_t h, const std::function<Vec3(uint32_t x, uint32_t y)>& texel) {
+  Image img{w, h, {}};
+  for (uint32_t y = 0; y < h; ++y)
+    for (uint32_t x = 0; x < w; ++x) {
+      const Vec3 c = texel(x, y);
+      img.rgb.insert(img.rgb.end(), {c.x, c.y, c.z});
+    }
+  return img;
+}
+
+// Renders a scene given as JSON as if its file were dir/s.json (its textures beside it).
+inline Image render_in(const std::filesystem::path& dir, const std::string& json) {
+  RenderStats stats;
+  return render_cpu(load_scene_text(json, (dir / "s.json").string()), 1, stats);
+}
+
+// Loading the JSON as dir/s.json fails with an InputError whose message contains `expected`.
+inline void expect_load_error(const std::filesystem::path& dir, const std::string& json, const std::string& expected) {
+  try {
+    load_scene_text(json, (dir / "s.json").string());
+    ADD_FAILURE() << "accepted " << json;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+}
+
+// Distance along the ray (unit direction) to the sphere's near side, in double; -1 on a miss.
+inline double ray_sphere_distance(const Ray& r, double cx, double cy, double cz, double radius) {
+  const double ox = r.origin.x - cx, oy = r.origin.y - cy, oz = r.origin.z - cz;
+  const double b = ox * r.dir.x + oy * r.dir.y + oz * r.dir.z, q = ox * ox + oy * oy + oz * oz - radius * radius;
+  const double disc = b * b - q;
+  return disc < 0 ? -1.0 : -b - std::sqrt(disc);
+}
+
+// Per pixel, the largest difference of its channels between two images of one size.
+struct PixelDifferences {
+  std::vector<double> pixels;
+  double max() const { return pixels.empty() ? 0.0 : *std::max_element(pixels.begin(), pixels.end()); }
+  double mean() const {
+    double sum = 0;
+    for (double d : pixels) sum += d;
+    return pixels.empty() ? 0.0 : sum / static_cast<double>(pixels.size());
+  }
+  size_t count_over(double threshold) const {
+    return static_cast<size_t>(std::count_if(pixels.begin(), pixels.end(), [&](double d) { return d > threshold; }));
+  }
+  double fraction_over(double threshold) const { return static_cast<double>(count_over(threshold)) / static_cast<double>(pixels.size()); }
+};
+
+inline PixelDifferences pixel_differences(const Image& a, const Image& b) {
+  PixelDifferences d;
+  for (size_t i = 0; i + 2 < a.rgb.size(); i += 3) {
+    double p = 0;
+    for (int c = 0; c < 3; ++c) p = std::max(p, std::abs(static_cast<double>(a.rgb[i + c]) - b.rgb[i + c]));
+    d.pixels.push_back(p);
+  }
+  return d;
+}
+
 // Writes six size x size cube faces f0.exr .. f5.exr (+x, -x, +y, -y, +z, -z) into dir,
 // texel (x, y) of face i coloured texel(i, x, y); returns the quoted names for "faces".
 template <class TexelColour>
 std::string write_cube_faces(const std::filesystem::path& dir, int size, TexelColour texel) {
   std::string list;
   for (int i = 0; i < 6; ++i) {
-    Image img{uint32_t(size), uint32_t(size), {}};
-    for (int y = 0; y < size; ++y)
-      for (int x = 0; x < size; ++x) {
-        const Vec3 c = texel(i, x, y);
-        img.rgb.insert(img.rgb.end(), {c.x, c.y, c.z});
-      }
+    const Image img = image_from(uint32_t(size), uint32_t(size), [&](uint32_t x, uint32_t y) { return texel(i, int(x), int(y)); });
     const std::string name = "f" + std::to_string(i) + ".exr";
     write_image(img, (dir / name).string());
     list += (i ? ", \"" : "\"") + name + "\"";
