@@ -49,7 +49,7 @@ FilmBuffer render_cuda_film(const Scene& scene, SampleRange range, RenderStats& 
   info.device = describe_cuda_device(prop);
   const RenderSettings& rs = scene.settings;
   const size_t pixels = static_cast<size_t>(rs.width) * rs.height;
-  info.device_bytes = DeviceScene::bytes(scene) + pixels * sizeof(FilmSum) + kCounterCount * sizeof(unsigned long long);
+  info.device_bytes = scene_array_bytes(scene) + pixels * sizeof(FilmSum) + kCounterCount * sizeof(unsigned long long);
   size_t free_bytes = 0, total_bytes = 0;
   TRACER_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
   if (info.device_bytes > free_bytes)
@@ -58,7 +58,7 @@ FilmBuffer render_cuda_film(const Scene& scene, SampleRange range, RenderStats& 
                             " MiB free");
 
   auto t = std::chrono::steady_clock::now();
-  const DeviceScene device_scene(scene);
+  const DeviceScene device_scene(scene, scene.view());
   DeviceBuffer<FilmSum> film(pixels);
   DeviceBuffer<unsigned long long> counters(kCounterCount);
   counters.zero();

@@ -6,31 +6,17 @@
 #include <string>
 #include <vector>
 
-#include "kernel/scene_view.h"
+#include "scene_arrays.h"
 
 namespace tracer {
 
-struct Scene {
+// The arrays (SceneArrays, listed in kernel/scene_arrays.h) and the view's scalars.
+struct Scene : SceneArrays {
   std::string file;
-  std::vector<Primitive> primitives;
-  std::vector<TriangleShading> triangle_shading;
-  std::vector<uint32_t> bounded;    // BVH order after build_acceleration()
-  std::vector<uint32_t> unbounded;
-  std::vector<BvhNode> bvh_nodes;   // bvh and lbvh
-  std::vector<KdNode> kd_nodes;     // kdtree and kdtree-median
-  std::vector<uint32_t> kd_prims;
   Vec3 kd_lo{0, 0, 0}, kd_hi{0, 0, 0};
   float kd_pad = 0.0f;
   GridInfo grid{};
-  std::vector<uint32_t> grid_cell_start, grid_prims;
-  std::vector<Material> materials;
-  std::vector<Texture> textures;   // kernel/texture.h
-  std::vector<float> texels;       // image textures' linear RGB
   std::vector<std::string> material_names;
-  std::vector<PointLight> lights;
-  std::vector<LightEntry> light_table;  // path integrator's lights (light_table.h)
-  std::vector<uint32_t> light_of_prim;  // per primitive: its light_table entry or kNoHit
-  std::vector<SkyCell> sky_cells;       // a sampled cube-map sky's cells (kernel/sky_sampling.h)
   uint32_t sky_cells_per_side = 0;
   uint32_t sky_light = kNoHit;          // the sky's light_table entry
   float offset_scale = 1.0f;            // kernel/ray_offset.h

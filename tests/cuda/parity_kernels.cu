@@ -73,7 +73,7 @@ std::vector<ShapeAnswer> gpu_shapes(const std::vector<ShapeQuery>& queries) {
 
 std::vector<TraceAnswer> gpu_trace(const Scene& scene, const std::vector<Ray>& rays) {
   select_cuda_device();
-  const DeviceScene device_scene(scene);
+  const DeviceScene device_scene(scene, scene.view());
   const DeviceBuffer<Ray> r(rays);
   DeviceBuffer<TraceAnswer> out(rays.size());
   trace_kernel<<<blocks_for(rays.size()), kBlock>>>(device_scene.view(), r.get(), out.get(), rays.size());
@@ -83,7 +83,7 @@ std::vector<TraceAnswer> gpu_trace(const Scene& scene, const std::vector<Ray>& r
 
 std::vector<SampleAnswer> gpu_samples(const Scene& scene) {
   select_cuda_device();
-  const DeviceScene device_scene(scene);
+  const DeviceScene device_scene(scene, scene.view());
   const size_t n = static_cast<size_t>(scene.settings.width) * scene.settings.height;
   DeviceBuffer<SampleAnswer> out(n);
   sample_kernel<<<blocks_for(n), kBlock>>>(device_scene.view(), out.get(), n);

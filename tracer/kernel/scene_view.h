@@ -12,6 +12,7 @@
 #include "plane.h"
 #include "primitive.h"
 #include "quad.h"
+#include "scene_arrays.h"
 #include "sampler.h"
 #include "sphere.h"
 #include "triangle.h"
@@ -76,32 +77,19 @@ struct RenderSettings {
 };
 
 struct SceneView {
-  const Primitive* primitives;
+#define TRACER_VIEW_POINTER(Type, name) const Type* name;
+  TRACER_SCENE_ARRAYS(TRACER_VIEW_POINTER)  // kernel/scene_arrays.h
+#undef TRACER_VIEW_POINTER
   uint32_t primitive_count;
-  const TriangleShading* triangle_shading;
-  const uint32_t* bounded;    // ids of primitives with finite bounds (BVH leaves index it)
   uint32_t bounded_count;
-  const uint32_t* unbounded;  // ids of planes, tested for every ray
   uint32_t unbounded_count;
-  const BvhNode* bvh_nodes;        // bvh and lbvh
   uint32_t bvh_node_count;
-  const KdNode* kd_nodes;          // kdtree and kdtree-median
   uint32_t kd_node_count;
-  const uint32_t* kd_prims;
+  uint32_t light_count;
+  uint32_t light_entry_count;
   Vec3 kd_lo, kd_hi;               // the kd-tree's box
   float kd_pad;                    // as GridInfo::pad
   GridInfo grid;
-  const uint32_t* grid_cell_start;
-  const uint32_t* grid_prims;
-  const Material* materials;
-  const Texture* textures;
-  const float* texels;            // image textures' linear RGB
-  const PointLight* lights;
-  uint32_t light_count;
-  const LightEntry* light_table;  // path integrator: every light with its selection probability
-  uint32_t light_entry_count;
-  const uint32_t* light_of_prim;  // per primitive: its light_table entry, or kNoHit
-  const SkyCell* sky_cells;       // 6 faces x n x n, face-major then row-major; none when n is 0
   uint32_t sky_cells_per_side;    // n
   uint32_t sky_light;             // the sky's light_table entry, or kNoHit
   float offset_scale;             // ray offsets near the origin (kernel/ray_offset.h): a power of two <= 1
