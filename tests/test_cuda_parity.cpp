@@ -11,7 +11,8 @@
 
 #include "device_error.h"
 #include "golden_manifest.h"
-#include "parity_gpu.h"
+#include "parity/parity_gpu.h"
+#include "parity/parity_inputs.h"
 #include "render_cpu.h"
 #include "scene_loader.h"
 #include "test_util.h"
@@ -28,21 +29,6 @@ namespace {
       GTEST_SKIP() << "CPU side computed; no GPU to compare with: " << e.what(); \
     }                                                                        \
   } while (0)
-
-// The fixed input stream, in the shapes the parity tests need.
-struct Inputs : test::InputStream {
-  uint64_t next() { return next_bits(); }
-  float bits() { return float_of_bits(static_cast<uint32_t>(next())); }
-  float uniform(float lo, float hi) { return lo + (hi - lo) * static_cast<float>(next() >> 40) * 0x1p-24f; }
-  Vec3 in_box(float lo, float hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
-  Vec3 direction() {  // uniform on the sphere, by rejection
-    for (;;) {
-      const Vec3 v = in_box(-1.0f, 1.0f);
-      const float l2 = dot(v, v);
-      if (l2 > 1e-4f && l2 <= 1.0f) return v / det_sqrt(l2);
-    }
-  }
-};
 
 // Counts elements whose bytes differ and reports the first few with their index.
 template <class T, class Describe>
@@ -62,21 +48,12 @@ std::string hex(float f) {
   return buf;
 }
 
-const float kEdges[] = {0.0f, -0.0f, FLT_TRUE_MIN, -FLT_TRUE_MIN, FLT_MIN, -FLT_MIN, 0.5f, -0.5f, 1.0f, -1.0f,
-                        2.0f, -2.0f, 1.5707964f, -1.5707964f, 3.1415927f, -3.1415927f, 1e-30f, 88.72f, -103.9f,
-                        1e4f, 1e10f, 1e30f, 16777216.0f, 0x1p120f, FLT_MAX, -FLT_MAX, kInfinity, -kInfinity,
-                        std::numeric_limits<float>::quiet_NaN(), 0.99999994f, 1.0000001f, -0.99999994f};
-
 TEST(CudaParity, DeterministicMathFunctions) {
   // Per function: every pair of edge values, 2^20 random bit patterns, 2^19 points of its domain.
   std::vector<float> a[kMathFunctionCount], b[kMathFunctionCount], cpu[kMathFunctionCount];
-  const float lo[] = {-100, -100, -100, -1, -1, -50, -104, 0, 0}, hi[] = {100, 100, 100, 1, 1, 50, 89, 1e6f, 10};
   for (uint32_t fi = 0; fi < kMathFunctionCount; ++fi) {
-    for (float x : kEdges)
-      for (float y : kEdges) a[fi].push_back(x), b[fi].push_back(y);
-    Inputs in{fi};
-    for (int i = 0; i < (1 << 20); ++i) a[fi].push_back(in.bits()), b[fi].push_back(in.bits());
-    for (int i = 0; i < (1 << 19); ++i) a[fi].push_back(in.uniform(lo[fi], hi[fi])), b[fi].push_back(in.uniform(-20, 20));
+    MathInputs in = math_inputs(static_cast<MathFunction>(fi), fi, 1u << 20, 1u << 19);
+    a[fi] = std::move(in.a), b[fi] = std::move(in.b);
     for (size_t i = 0; i < a[fi].size(); ++i) cpu[fi].push_back(eval_math(static_cast<MathFunction>(fi), a[fi][i], b[fi][i]));
   }
   SKIP_WITHOUT_GPU();
@@ -88,58 +65,15 @@ TEST(CudaParity, DeterministicMathFunctions) {
 }
 
 TEST(CudaParity, Philox) {
-  Inputs in{7};
-  std::vector<PhiloxQuery> q;
-  for (uint32_t i = 0; i < (1u << 21); ++i) {
-    const bool structured = i < (1u << 20);  // the renderer's counters: (pixel, sample, dimension, 0)
-    q.push_back({{{structured ? i : static_cast<uint32_t>(in.next()), structured ? i % 64 : static_cast<uint32_t>(in.next()),
-                   structured ? i % 3 : static_cast<uint32_t>(in.next()), structured ? 0u : static_cast<uint32_t>(in.next())}},
-                 static_cast<uint32_t>(in.next()), static_cast<uint32_t>(in.next())});
-  }
+  const std::vector<PhiloxQuery> q = philox_inputs(7, 1u << 21);
   std::vector<Philox4> cpu(q.size());
   for (size_t i = 0; i < q.size(); ++i) cpu[i] = eval_philox(q[i]);
   SKIP_WITHOUT_GPU();
   expect_same_bits(cpu, gpu_philox(q), [](size_t i) { return std::to_string(i); });
 }
 
-// Rays aimed at points on and near each shape, edges and vertices included.
-std::vector<ShapeQuery> shape_queries() {
-  Inputs in{11};
-  std::vector<ShapeQuery> q;
-  const Primitive none = {ShapeKind::Sphere, 0, -1, 0.0f, {}, {}, {}};
-  for (int i = 0; i < (1 << 20); ++i) {  // spheres of radius 1e-3 .. 10
-    Primitive p = none;
-    p.a = in.in_box(-10, 10);
-    p.radius = det_exp(in.uniform(-6.9f, 2.3f));
-    const Vec3 target = p.a + in.direction() * (p.radius * in.uniform(0.9f, 1.1f));
-    const Vec3 origin = in.in_box(-20, 20);
-    q.push_back({p, {origin, normalize(target - origin)}});
-  }
-  for (int i = 0; i < (1 << 20); ++i) {  // triangles, aimed inside, on edges (one weight 0) and at vertices
-    Primitive p = none;
-    p.kind = ShapeKind::Triangle;
-    p.a = in.in_box(-5, 5), p.b = in.in_box(-5, 5), p.c = in.in_box(-5, 5);
-    float u = in.uniform(0, 1), v = in.uniform(0, 1 - u);
-    if (i % 4 == 1) v = 0.0f;
-    if (i % 4 == 2) u = 1.0f, v = 0.0f;
-    const Vec3 target = p.a + (p.b - p.a) * u + (p.c - p.a) * v;
-    const Vec3 origin = in.in_box(-20, 20);
-    q.push_back({p, {origin, normalize(target - origin)}});
-  }
-  for (int i = 0; i < (1 << 18); ++i) {  // quads and planes
-    Primitive p = none;
-    p.kind = i % 2 ? ShapeKind::Quad : ShapeKind::Plane;
-    p.a = in.in_box(-5, 5), p.b = in.in_box(-3, 3), p.c = in.in_box(-3, 3);
-    if (p.kind == ShapeKind::Plane) p.b = normalize(p.b);
-    const Vec3 target = p.a + p.b * in.uniform(-0.1f, 1.1f) + p.c * in.uniform(-0.1f, 1.1f);
-    const Vec3 origin = in.in_box(-20, 20);
-    q.push_back({p, {origin, normalize(target - origin)}});
-  }
-  return q;
-}
-
 TEST(CudaParity, RayShapeTests) {
-  const std::vector<ShapeQuery> q = shape_queries();
+  const std::vector<ShapeQuery> q = shape_inputs(11, 1u << 20);
   std::vector<ShapeAnswer> cpu(q.size());
   size_t hits = 0;
   for (size_t i = 0; i < q.size(); ++i) hits += (cpu[i] = eval_shape(q[i])).hit;
@@ -163,12 +97,8 @@ TEST(CudaParity, BvhTraversal) {
   for (int s = 0; s < 3; ++s) {
     scenes.push_back(golden_scene(names[s]));
     const SceneView view = scenes[s].view();
-    Inputs in{13};
     const BvhNode& root = scenes[s].bvh_nodes.at(0);
-    for (int i = 0; i < (1 << 20); ++i) {
-      const Vec3 o = {in.uniform(root.lo.x, root.hi.x), in.uniform(root.lo.y, root.hi.y), in.uniform(root.lo.z, root.hi.z)};
-      rays[s].push_back({o, in.direction()});
-    }
+    rays[s] = ray_inputs(13, 1u << 20, root.lo, root.hi);
     size_t hits = 0;
     for (const Ray& r : rays[s]) {
       cpu[s].push_back(eval_trace(view, r));
@@ -179,7 +109,7 @@ TEST(CudaParity, BvhTraversal) {
   SKIP_WITHOUT_GPU();
   for (int s = 0; s < 3; ++s) {
     SCOPED_TRACE(names[s]);
-    expect_same_bits(cpu[s], gpu_trace(scenes[s], rays[s]), [&](size_t i) {
+    expect_same_bits(cpu[s], gpu_trace(scenes[s], scenes[s].view(), rays[s]), [&](size_t i) {
       return "t " + hex(cpu[s][i].closest.t) + ", prim " + std::to_string(cpu[s][i].closest.prim);
     });
   }
@@ -205,7 +135,7 @@ TEST(CudaParity, WholePixelsOfEveryGolden) {
   SKIP_WITHOUT_GPU();
   for (size_t g = 0; g < scenes.size(); ++g) {
     SCOPED_TRACE(manifest.entries[g].name);
-    expect_same_bits(cpu[g], gpu_samples(scenes[g]), [](size_t i) { return "pixel " + std::to_string(i); });
+    expect_same_bits(cpu[g], gpu_samples(scenes[g], scenes[g].view()), [](size_t i) { return "pixel " + std::to_string(i); });
   }
 }
 

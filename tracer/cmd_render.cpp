@@ -49,6 +49,14 @@ Json render_identity(const Scene& scene) {
 
 }  // namespace
 
+RenderOverrides scene_overrides(const RenderCommand& cmd) {
+  RenderOverrides overrides = cmd.overrides;
+  if (!cmd.effects.empty()) overrides.effects = parse_effects(cmd.effects);
+  if (!cmd.nee.empty()) overrides.nee = cmd.nee == "on";
+  if (!cmd.sky_sampling.empty()) overrides.sky_sampling = cmd.sky_sampling == "on";
+  return overrides;
+}
+
 int run_render(const RenderCommand& cmd) {
   if (cmd.device != "cpu" && cmd.device != "cuda")
     throw InputError("--device " + cmd.device + ": expected cpu or cuda");
@@ -62,10 +70,7 @@ int run_render(const RenderCommand& cmd) {
 
   if (cmd.device == "cuda") cuda_device_description();  // fail before loading when there is no GPU
   const auto t_load = Clock::now();
-  RenderOverrides overrides = cmd.overrides;
-  if (!cmd.effects.empty()) overrides.effects = parse_effects(cmd.effects);
-  if (!cmd.nee.empty()) overrides.nee = cmd.nee == "on";
-  if (!cmd.sky_sampling.empty()) overrides.sky_sampling = cmd.sky_sampling == "on";
+  const RenderOverrides overrides = scene_overrides(cmd);
   const std::string scene_text = read_text_file(cmd.scene, "scene file");
   const Scene scene = load_scene_text(scene_text, cmd.scene, overrides);  // loading includes the BVH build
   const double load_build_s = seconds_since(t_load);

@@ -22,6 +22,11 @@ struct RenderCommand {
   bool quiet = false;
 };
 
+struct GpuPackCommand {
+  std::string dir, root = ".", runner;
+  int threads = 0;
+};
+
 struct CompareCommand {
   std::string a, b, diff;
   CompareOptions options;
@@ -78,6 +83,9 @@ struct GenerateCommand {
 };
 
 int run_render(const RenderCommand& cmd);
+RenderOverrides scene_overrides(const RenderCommand& cmd);  // --spp ... plus --effects, --nee, --sky-sampling
+int run_bundle(const RenderCommand& cmd);
+int run_gpu_pack(const GpuPackCommand& cmd);
 int run_bench_rays(const BenchRaysCommand& cmd);
 int run_bench_watertight(const BenchWatertightCommand& cmd);
 int run_generate(const GenerateCommand& cmd);

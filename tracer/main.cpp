@@ -15,6 +15,29 @@ void add_bench_size_options(CLI::App* app, uint32_t& width, uint32_t& height, in
   app->add_option("--threads", threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
 }
 
+
+// The options that decide what a render computes: `render` and `bundle` share them.
+void add_scene_options(CLI::App* app, tracer::RenderCommand& cmd) {
+  app->add_option("scene", cmd.scene, "scene file (JSON)")->required();
+  app->add_option("--spp", cmd.overrides.spp, "samples per pixel");
+  app->add_option("--seed", cmd.overrides.seed, "64-bit seed");
+  app->add_option("--width", cmd.overrides.width, "image width in pixels");
+  app->add_option("--height", cmd.overrides.height, "image height in pixels");
+  app->add_option("--integrator", cmd.overrides.integrator, "whitted, path, normals, albedo or depth");
+  app->add_option("--max-depth", cmd.overrides.max_depth, "maximum ray depth");
+  app->add_option("--sampler", cmd.overrides.sampler, "center, grid, stochastic or stratified");
+  app->add_option("--accel", cmd.overrides.accel, "bvh (default), kdtree, kdtree-median, grid, lbvh or none");
+  app->add_option("--triangle-test", cmd.overrides.triangle_test, "watertight (default) or moller-trumbore");
+  app->add_option("--grid-resolution", cmd.overrides.grid_resolution, "grid: cells along the longest axis (default: about 3 per primitive)");
+  app->add_option("--nee", cmd.nee, "path: next-event estimation with MIS, on (default) or off (the plain estimator)")
+      ->check(CLI::IsMember({"on", "off"}));
+  app->add_option("--sky-sampling", cmd.sky_sampling, "path: sample a cube-map sky as a light, on (default) or off (only BSDF rays find it)")
+      ->check(CLI::IsMember({"on", "off"}));
+  app->add_option("--rr-depth", cmd.overrides.rr_depth, "path: Russian roulette from this many bounces on (default 3)");
+  app->add_option("--effects", cmd.effects, "Whitted effects to trace: all (default), none, or a list of shadows,reflections,refractions");
+  app->add_option("--samples", cmd.samples, "A:B renders only samples [A, B) of every pixel (render: into NAME.partial, for tracer merge)");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -24,29 +47,24 @@ int main(int argc, char** argv) {
 
   RenderCommand render;
   CLI::App* r = app.add_subcommand("render", "render a scene to an image");
-  r->add_option("scene", render.scene, "scene file (JSON)")->required();
+  add_scene_options(r, render);
   r->add_option("-o,--output", render.output, "output image (.exr linear float, .png sRGB, ...); default SCENE.png");
-  r->add_option("--spp", render.overrides.spp, "samples per pixel");
-  r->add_option("--seed", render.overrides.seed, "64-bit seed");
-  r->add_option("--width", render.overrides.width, "image width in pixels");
-  r->add_option("--height", render.overrides.height, "image height in pixels");
-  r->add_option("--integrator", render.overrides.integrator, "whitted, path, normals, albedo or depth");
-  r->add_option("--max-depth", render.overrides.max_depth, "maximum ray depth");
-  r->add_option("--sampler", render.overrides.sampler, "center, grid, stochastic or stratified");
-  r->add_option("--accel", render.overrides.accel, "bvh (default), kdtree, kdtree-median, grid, lbvh or none");
-  r->add_option("--triangle-test", render.overrides.triangle_test, "watertight (default) or moller-trumbore");
-  r->add_option("--grid-resolution", render.overrides.grid_resolution, "grid: cells along the longest axis (default: about 3 per primitive)");
   r->add_option("--threads", render.threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
   r->add_option("--device", render.device, "cpu or cuda");
-  r->add_option("--nee", render.nee, "path: next-event estimation with MIS, on (default) or off (the plain estimator)")
-      ->check(CLI::IsMember({"on", "off"}));
-  r->add_option("--sky-sampling", render.sky_sampling, "path: sample a cube-map sky as a light, on (default) or off (only BSDF rays find it)")
-      ->check(CLI::IsMember({"on", "off"}));
-  r->add_option("--rr-depth", render.overrides.rr_depth, "path: Russian roulette from this many bounces on (default 3)");
-  r->add_option("--effects", render.effects, "Whitted effects to trace: all (default), none, or a list of shadows,reflections,refractions");
-  r->add_option("--samples", render.samples, "A:B renders only samples [A, B) of every pixel into NAME.partial, for tracer merge");
   r->add_option("--stats", render.stats, "write timings and ray counts as JSON");
   r->add_flag("--quiet", render.quiet, "no progress bar or summary");
+
+  RenderCommand bundle;
+  CLI::App* bu = app.add_subcommand("bundle", "write what the kernel reads for one render as a scene bundle for tracer-gpu");
+  add_scene_options(bu, bundle);
+  bu->add_option("-o,--output", bundle.output, "output bundle, NAME.bundle")->required();
+
+  GpuPackCommand pack;
+  CLI::App* gp = app.add_subcommand("gpu-pack", "write the GPU pack: golden bundles, parity cases, tracer-gpu and run.sh");
+  gp->add_option("dir", pack.dir, "new directory to create")->required();
+  gp->add_option("--root", pack.root, "source root holding golden/ and scenes/ (default .)");
+  gp->add_option("--runner", pack.runner, "tracer-gpu binary to include (default: beside this tracer)");
+  gp->add_option("--threads", pack.threads, "CPU threads for the parity answers (default: all)")->check(CLI::NonNegativeNumber);
 
   MergeCommand merge;
   CLI::App* m = app.add_subcommand("merge", "add partial renders (--samples) into the image of all their samples");
@@ -145,6 +163,8 @@ int main(int argc, char** argv) {
   }
   try {
     if (*r) return run_render(render);
+    if (*bu) return run_bundle(bundle);
+    if (*gp) return run_gpu_pack(pack);
     if (*i) return run_info(info_scene);
     if (*m) return run_merge(merge);
     if (*gc) return run_golden_check(check);

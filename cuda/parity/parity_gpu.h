@@ -1,4 +1,4 @@
-// The GPU side of the CUDA parity tests (parity_kernels.cu): each call copies the inputs to
+// The GPU side of the CUDA parity cases (parity_gpu.cu): each call copies the inputs to
 // the device, runs one kernel that applies a parity_cases.h function to every input, and
 // copies the answers back. DeviceUnavailable when there is no usable GPU.
 #pragma once
@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "parity_cases.h"
-#include "scene.h"
+#include "scene_arrays.h"
 
 namespace tracer::parity {
 
@@ -14,7 +14,7 @@ std::string gpu_device();  // the device the calls run on
 std::vector<float> gpu_math(MathFunction f, const std::vector<float>& a, const std::vector<float>& b);
 std::vector<Philox4> gpu_philox(const std::vector<PhiloxQuery>& queries);
 std::vector<ShapeAnswer> gpu_shapes(const std::vector<ShapeQuery>& queries);
-std::vector<TraceAnswer> gpu_trace(const Scene& scene, const std::vector<Ray>& rays);
-std::vector<SampleAnswer> gpu_samples(const Scene& scene);  // every pixel, in index order
+std::vector<TraceAnswer> gpu_trace(const SceneArrays& arrays, const SceneView& view, const std::vector<Ray>& rays);
+std::vector<SampleAnswer> gpu_samples(const SceneArrays& arrays, const SceneView& view);  // every pixel, in index order
 
 }  // namespace tracer::parity

@@ -71,9 +71,9 @@ std::vector<ShapeAnswer> gpu_shapes(const std::vector<ShapeQuery>& queries) {
   return out.download();
 }
 
-std::vector<TraceAnswer> gpu_trace(const Scene& scene, const std::vector<Ray>& rays) {
+std::vector<TraceAnswer> gpu_trace(const SceneArrays& arrays, const SceneView& view, const std::vector<Ray>& rays) {
   select_cuda_device();
-  const DeviceScene device_scene(scene, scene.view());
+  const DeviceScene device_scene(arrays, view);
   const DeviceBuffer<Ray> r(rays);
   DeviceBuffer<TraceAnswer> out(rays.size());
   trace_kernel<<<blocks_for(rays.size()), kBlock>>>(device_scene.view(), r.get(), out.get(), rays.size());
@@ -81,10 +81,10 @@ std::vector<TraceAnswer> gpu_trace(const Scene& scene, const std::vector<Ray>& r
   return out.download();
 }
 
-std::vector<SampleAnswer> gpu_samples(const Scene& scene) {
+std::vector<SampleAnswer> gpu_samples(const SceneArrays& arrays, const SceneView& view) {
   select_cuda_device();
-  const DeviceScene device_scene(scene, scene.view());
-  const size_t n = static_cast<size_t>(scene.settings.width) * scene.settings.height;
+  const DeviceScene device_scene(arrays, view);
+  const size_t n = static_cast<size_t>(view.settings.width) * view.settings.height;
   DeviceBuffer<SampleAnswer> out(n);
   sample_kernel<<<blocks_for(n), kBlock>>>(device_scene.view(), out.get(), n);
   finish_launch();

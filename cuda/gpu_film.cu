@@ -1,0 +1,89 @@
+#include <chrono>
+
+#include "cuda_device.h"
+#include "device_scene.h"
+#include "gpu_film.h"
+#include "kernel/render_pixel.h"
+
+namespace tracer {
+namespace {
+
+enum Counter { kCamera, kSecondary, kShadow, kNonfinite, kOverflow, kCounterCount };
+
+// 16x16 blocks; each thread loops over its pixel's samples in index order.
+__global__ void render_kernel(const SceneView scene, SampleRange range, FilmSum* film, unsigned long long* counters) {
+  const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
+  if (x >= scene.settings.width || y >= scene.settings.height) return;
+  RayCounts counts = {0, 0, 0};
+  const FilmSum sum = render_pixel(scene, x, y, range.begin, range.end, counts);
+  film[static_cast<size_t>(y) * scene.settings.width + x] = sum;
+  // Integer sums: the totals do not depend on the order threads add them in.
+  atomicAdd(&counters[kCamera], static_cast<unsigned long long>(counts.camera));
+  atomicAdd(&counters[kSecondary], static_cast<unsigned long long>(counts.secondary));
+  atomicAdd(&counters[kShadow], static_cast<unsigned long long>(counts.shadow));
+  if (sum.nonfinite) atomicAdd(&counters[kNonfinite], static_cast<unsigned long long>(sum.nonfinite));
+  if (sum.overflow) atomicAdd(&counters[kOverflow], static_cast<unsigned long long>(sum.overflow));
+}
+
+// A CUDA event that is destroyed even when a later call throws.
+struct CudaEvent {
+  cudaEvent_t event = nullptr;
+  CudaEvent() { TRACER_CUDA_CHECK(cudaEventCreate(&event)); }
+  ~CudaEvent() { cudaEventDestroy(event); }
+  CudaEvent(const CudaEvent&) = delete;
+  CudaEvent& operator=(const CudaEvent&) = delete;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+}  // namespace
+
+GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, SampleRange range, const std::string& label) {
+  const cudaDeviceProp prop = select_cuda_device();
+  GpuFilm r;
+  r.device = describe_cuda_device(prop);
+  const RenderSettings& rs = view.settings;
+  const size_t pixels = static_cast<size_t>(rs.width) * rs.height;
+  r.device_bytes = scene_array_bytes(arrays) + pixels * sizeof(FilmSum) + kCounterCount * sizeof(unsigned long long);
+  size_t free_bytes = 0, total_bytes = 0;
+  TRACER_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
+  if (r.device_bytes > free_bytes)
+    throw DeviceUnavailable(label + ": the scene needs " + std::to_string(r.device_bytes >> 20) +
+                            " MiB of device memory; " + r.device + " has " + std::to_string(free_bytes >> 20) +
+                            " MiB free");
+
+  auto t = std::chrono::steady_clock::now();
+  const DeviceScene device_scene(arrays, view);
+  DeviceBuffer<FilmSum> film(pixels);
+  DeviceBuffer<unsigned long long> counters(kCounterCount);
+  counters.zero();
+  TRACER_CUDA_CHECK(cudaDeviceSynchronize());
+  r.upload_seconds = seconds_since(t);
+
+  const CudaEvent start, stop;
+  const dim3 block(16, 16), grid((rs.width + 15) / 16, (rs.height + 15) / 16);
+  TRACER_CUDA_CHECK(cudaEventRecord(start.event));
+  render_kernel<<<grid, block>>>(device_scene.view(), range, film.get(), counters.get());
+  TRACER_CUDA_CHECK(cudaGetLastError());
+  TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
+  TRACER_CUDA_CHECK(cudaEventSynchronize(stop.event));
+  float kernel_ms = 0.0f;
+  TRACER_CUDA_CHECK(cudaEventElapsedTime(&kernel_ms, start.event, stop.event));
+  r.kernel_seconds = kernel_ms / 1000.0;
+
+  t = std::chrono::steady_clock::now();
+  r.film.width = rs.width;
+  r.film.height = rs.height;
+  r.film.range = range;
+  r.film.pixels = film.download();
+  const std::vector<unsigned long long> c = counters.download();
+  r.download_seconds = seconds_since(t);
+  r.rays = {c[kCamera], c[kSecondary], c[kShadow]};
+  r.nonfinite = c[kNonfinite];
+  r.overflow = c[kOverflow];
+  return r;
+}
+
+}  // namespace tracer

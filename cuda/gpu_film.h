@@ -1,0 +1,27 @@
+// Renders samples of every pixel on the GPU from a scene's arrays and view scalars: one
+// thread per pixel runs kernel/render_pixel.h, the function the CPU schedulers run. Shared
+// by the tracer's `--device cuda` (render_cuda.cu) and the self-contained runner
+// (cuda/runner/), so both launch exactly the same kernel. Plain C++ header: no CUDA types.
+#pragma once
+#include <string>
+
+#include "film_buffer.h"
+#include "kernel/whitted.h"
+#include "scene_arrays.h"
+
+namespace tracer {
+
+struct GpuFilm {
+  FilmBuffer film;
+  RayCounts rays{};
+  uint64_t nonfinite = 0, overflow = 0;
+  std::string device;       // "NVIDIA H100 80GB HBM3 (sm_90, 79.1 GiB)"
+  size_t device_bytes = 0;  // scene arrays + film + counters on the device
+  double upload_seconds = 0, kernel_seconds = 0, download_seconds = 0;
+};
+
+// DeviceUnavailable (no device; too little free memory, naming `label`) or
+// std::runtime_error naming the failing CUDA call.
+GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, SampleRange range, const std::string& label);
+
+}  // namespace tracer

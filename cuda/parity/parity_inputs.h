@@ -1,0 +1,117 @@
+// The inputs of the CPU/GPU parity cases, generated from a seed by integer arithmetic
+// (SplitMix64) and kernel functions only, so every machine builds the same inputs: the
+// GoogleTest parity tests and the GPU pack (`tracer gpu-pack`, cuda/runner/) share them,
+// and a pack carries a seed and a count instead of hundreds of megabytes of queries.
+#pragma once
+#include <cfloat>
+#include <limits>
+#include <vector>
+
+#include "parity_cases.h"
+
+namespace tracer::parity {
+
+struct Inputs {
+  uint64_t state;
+  uint64_t next() {  // SplitMix64 (Steele, Lea, Flood 2014)
+    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  float bits() { return float_of_bits(static_cast<uint32_t>(next())); }
+  float uniform(float lo, float hi) { return lo + (hi - lo) * static_cast<float>(next() >> 40) * 0x1p-24f; }
+  Vec3 in_box(float lo, float hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
+  Vec3 direction() {  // uniform on the sphere, by rejection
+    for (;;) {
+      const Vec3 v = in_box(-1.0f, 1.0f);
+      const float l2 = dot(v, v);
+      if (l2 > 1e-4f && l2 <= 1.0f) return v / det_sqrt(l2);
+    }
+  }
+};
+
+// Arguments of one math function: every pair of 32 edge values, then `random` pairs of
+// random bit patterns, then `domain` points of the function's domain.
+struct MathInputs {
+  std::vector<float> a, b;
+};
+inline MathInputs math_inputs(MathFunction f, uint64_t seed, uint32_t random, uint32_t domain) {
+  const float edges[] = {0.0f, -0.0f, FLT_TRUE_MIN, -FLT_TRUE_MIN, FLT_MIN, -FLT_MIN, 0.5f, -0.5f, 1.0f, -1.0f,
+                         2.0f, -2.0f, 1.5707964f, -1.5707964f, 3.1415927f, -3.1415927f, 1e-30f, 88.72f, -103.9f,
+                         1e4f, 1e10f, 1e30f, 16777216.0f, 0x1p120f, FLT_MAX, -FLT_MAX, kInfinity, -kInfinity,
+                         std::numeric_limits<float>::quiet_NaN(), 0.99999994f, 1.0000001f, -0.99999994f};
+  const float lo[] = {-100, -100, -100, -1, -1, -50, -104, 0, 0}, hi[] = {100, 100, 100, 1, 1, 50, 89, 1e6f, 10};
+  const uint32_t fi = static_cast<uint32_t>(f);
+  MathInputs in;
+  for (float x : edges)
+    for (float y : edges) in.a.push_back(x), in.b.push_back(y);
+  Inputs g{seed};
+  for (uint32_t i = 0; i < random; ++i) in.a.push_back(g.bits()), in.b.push_back(g.bits());
+  for (uint32_t i = 0; i < domain; ++i) in.a.push_back(g.uniform(lo[fi], hi[fi])), in.b.push_back(g.uniform(-20, 20));
+  return in;
+}
+
+// The first half are the renderer's counters (pixel, sample, dimension, 0), the rest random.
+inline std::vector<PhiloxQuery> philox_inputs(uint64_t seed, uint32_t count) {
+  Inputs in{seed};
+  std::vector<PhiloxQuery> q;
+  for (uint32_t i = 0; i < count; ++i) {
+    const bool structured = i < count / 2;
+    q.push_back({{{structured ? i : static_cast<uint32_t>(in.next()), structured ? i % 64 : static_cast<uint32_t>(in.next()),
+                   structured ? i % 3 : static_cast<uint32_t>(in.next()), structured ? 0u : static_cast<uint32_t>(in.next())}},
+                 static_cast<uint32_t>(in.next()), static_cast<uint32_t>(in.next())});
+  }
+  return q;
+}
+
+// Rays aimed at points on and near each shape: `per_kind` spheres of radius 1e-3 .. 10,
+// `per_kind` triangles (inside, on edges with one weight 0, at vertices), per_kind / 4
+// quads and planes.
+inline std::vector<ShapeQuery> shape_inputs(uint64_t seed, uint32_t per_kind) {
+  Inputs in{seed};
+  std::vector<ShapeQuery> q;
+  const Primitive none = {ShapeKind::Sphere, 0, -1, 0.0f, {}, {}, {}};
+  for (uint32_t i = 0; i < per_kind; ++i) {
+    Primitive p = none;
+    p.a = in.in_box(-10, 10);
+    p.radius = det_exp(in.uniform(-6.9f, 2.3f));
+    const Vec3 target = p.a + in.direction() * (p.radius * in.uniform(0.9f, 1.1f));
+    const Vec3 origin = in.in_box(-20, 20);
+    q.push_back({p, {origin, normalize(target - origin)}});
+  }
+  for (uint32_t i = 0; i < per_kind; ++i) {
+    Primitive p = none;
+    p.kind = ShapeKind::Triangle;
+    p.a = in.in_box(-5, 5), p.b = in.in_box(-5, 5), p.c = in.in_box(-5, 5);
+    float u = in.uniform(0, 1), v = in.uniform(0, 1 - u);
+    if (i % 4 == 1) v = 0.0f;
+    if (i % 4 == 2) u = 1.0f, v = 0.0f;
+    const Vec3 target = p.a + (p.b - p.a) * u + (p.c - p.a) * v;
+    const Vec3 origin = in.in_box(-20, 20);
+    q.push_back({p, {origin, normalize(target - origin)}});
+  }
+  for (uint32_t i = 0; i < per_kind / 4; ++i) {
+    Primitive p = none;
+    p.kind = i % 2 ? ShapeKind::Quad : ShapeKind::Plane;
+    p.a = in.in_box(-5, 5), p.b = in.in_box(-3, 3), p.c = in.in_box(-3, 3);
+    if (p.kind == ShapeKind::Plane) p.b = normalize(p.b);
+    const Vec3 target = p.a + p.b * in.uniform(-0.1f, 1.1f) + p.c * in.uniform(-0.1f, 1.1f);
+    const Vec3 origin = in.in_box(-20, 20);
+    q.push_back({p, {origin, normalize(target - origin)}});
+  }
+  return q;
+}
+
+// Rays with origins uniform in [lo, hi] and directions uniform on the sphere.
+inline std::vector<Ray> ray_inputs(uint64_t seed, uint32_t count, Vec3 lo, Vec3 hi) {
+  Inputs in{seed};
+  std::vector<Ray> rays;
+  for (uint32_t i = 0; i < count; ++i) {
+    const Vec3 o = {in.uniform(lo.x, hi.x), in.uniform(lo.y, hi.y), in.uniform(lo.z, hi.z)};
+    rays.push_back({o, in.direction()});
+  }
+  return rays;
+}
+
+}  // namespace tracer::parity

@@ -1,0 +1,24 @@
+// The GPU entry points of a runner built without nvcc: each says so, and the runner's
+// `--device cpu` still runs every bundle and parity case.
+#include "device_error.h"
+#include "gpu_film.h"
+#include "parity/parity_gpu.h"
+
+namespace tracer {
+
+namespace {
+[[noreturn]] void no_cuda() { throw DeviceUnavailable("this tracer-gpu was built without CUDA (no nvcc at build time)"); }
+}  // namespace
+
+GpuFilm render_film_on_gpu(const SceneArrays&, const SceneView&, SampleRange, const std::string&) { no_cuda(); }
+
+namespace parity {
+std::string gpu_device() { no_cuda(); }
+std::vector<float> gpu_math(MathFunction, const std::vector<float>&, const std::vector<float>&) { no_cuda(); }
+std::vector<Philox4> gpu_philox(const std::vector<PhiloxQuery>&) { no_cuda(); }
+std::vector<ShapeAnswer> gpu_shapes(const std::vector<ShapeQuery>&) { no_cuda(); }
+std::vector<TraceAnswer> gpu_trace(const SceneArrays&, const SceneView&, const std::vector<Ray>&) { no_cuda(); }
+std::vector<SampleAnswer> gpu_samples(const SceneArrays&, const SceneView&) { no_cuda(); }
+}  // namespace parity
+
+}  // namespace tracer

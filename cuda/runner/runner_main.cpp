@@ -1,0 +1,222 @@
+// tracer-gpu: the self-contained GPU runner. It links the kernel headers, cuda/ and the
+// static CUDA runtime only (no OpenImageIO, loaders or OpenMP), so it runs on a bare GPU
+// machine. It renders scene bundles and evaluates parity cases written by `tracer bundle`
+// and `tracer gpu-pack`, on the GPU or, with --device cpu, on the CPU from the same code.
+// Exit codes: 0 pass, 1 a hash or answer differs, 2 bad input or no usable device.
+#include <charconv>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "bundle/scene_bundle.h"
+#include "bundle/sha1.h"
+#include "cpu_film.h"
+#include "device_error.h"
+#include "gpu_film.h"
+#include "parity/parity_gpu.h"
+#include "parity/parity_suite.h"
+#include "pixel_hash.h"
+#include "text_file.h"
+
+namespace tracer {
+namespace {
+
+const char* kUsage =
+    "usage: tracer-gpu render BUNDLE [--device cuda|cpu] [--threads N] [--repeat N] [--expect sha1:HASH] [-o FILM]\n"
+    "       tracer-gpu parity CASE [--device cuda|cpu] [--threads N]\n"
+    "       tracer-gpu pack DIR [--device cuda|cpu] [--threads N] [--repeat N]\n"
+    "       tracer-gpu device\n";
+
+struct Options {
+  std::string command, input, device = "cuda", expect, output;
+  unsigned threads = 0;
+  uint32_t repeat = 1;
+};
+
+uint32_t parse_count(const std::string& flag, const std::string& text, uint32_t max) {
+  uint32_t value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || value == 0 || value > max)
+    throw InputError(flag + " " + text + ": expected a whole number from 1 to " + std::to_string(max));
+  return value;
+}
+
+Options parse(int argc, char** argv) {
+  if (argc < 2) throw InputError(std::string("no command\n") + kUsage);
+  Options o;
+  o.command = argv[1];
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    const auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw InputError(a + " needs a value");
+      return argv[++i];
+    };
+    if (a == "--device") o.device = value();
+    else if (a == "--threads") o.threads = parse_count(a, value(), 4096);
+    else if (a == "--repeat") o.repeat = parse_count(a, value(), 100000);
+    else if (a == "--expect") o.expect = value();
+    else if (a == "-o" || a == "--output") o.output = value();
+    else if (!a.empty() && a[0] == '-') throw InputError(a + ": unknown option\n" + kUsage);
+    else if (o.input.empty()) o.input = a;
+    else throw InputError(a + ": one input only\n" + kUsage);
+  }
+  if (o.device != "cuda" && o.device != "cpu") throw InputError("--device " + o.device + ": expected cuda or cpu");
+  if (o.command != "device" && o.input.empty()) throw InputError(o.command + ": needs an input\n" + kUsage);
+  if (o.threads == 0) o.threads = default_thread_count();
+  return o;
+}
+
+struct Rendered {
+  FilmBuffer film;
+  RayCounts rays{};
+  uint64_t nonfinite = 0, overflow = 0;
+  double best_seconds = 0;  // the fastest of the repeats: the kernel's (CUDA events) or the CPU's wall time
+  std::string hash;
+};
+
+Rendered render_bundle(const SceneBundle& b, const Options& o, const std::string& label) {
+  const SceneView view = b.view();
+  Rendered r;
+  for (uint32_t i = 0; i < o.repeat; ++i) {
+    double seconds = 0;
+    if (o.device == "cuda") {
+      GpuFilm g = render_film_on_gpu(b.arrays, view, b.range, label);
+      seconds = g.kernel_seconds;
+      r.film = std::move(g.film), r.rays = g.rays, r.nonfinite = g.nonfinite, r.overflow = g.overflow;
+    } else {
+      const auto t = std::chrono::steady_clock::now();
+      CpuFilm c = render_film_on_cpu(view, b.range, o.threads);
+      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+      r.film = std::move(c.film), r.rays = c.rays, r.nonfinite = c.nonfinite, r.overflow = c.overflow;
+    }
+    if (i == 0 || seconds < r.best_seconds) r.best_seconds = seconds;
+  }
+  // A whole render's image hashes as the golden manifest does; a part's hash is of its film sums.
+  if (b.range.begin == 0 && b.range.end == b.scalars.settings.spp) {
+    r.hash = pixel_hash(resolve_film(r.film, b.scalars.settings.spp));
+  } else {
+    Sha1 sha;
+    sha.append(r.film.pixels.data(), r.film.pixels.size() * sizeof(FilmSum));
+    r.hash = "sha1-film:" + sha.hex_digest();
+  }
+  return r;
+}
+
+void write_film(const std::string& path, const Rendered& r) {
+  BundleFile f;
+  f.kind = "film";
+  f.add("film", r.film.pixels);
+  f.add_one("samples", r.film.range);
+  f.add("size", std::vector<uint32_t>{r.film.width, r.film.height});
+  f.add("hash", std::vector<char>(r.hash.begin(), r.hash.end()));
+  write_bundle(path, f);
+}
+
+double mrays_per_second(const Rendered& r) {
+  const double rays = static_cast<double>(r.rays.camera + r.rays.secondary + r.rays.shadow);
+  return r.best_seconds > 0 ? rays / r.best_seconds / 1e6 : 0.0;
+}
+
+int run_render(const Options& o) {
+  const SceneBundle b = read_scene_bundle(o.input);
+  const Rendered r = render_bundle(b, o, o.input);
+  if (!o.output.empty()) write_film(o.output, r);
+  std::printf("%s %s: %ux%u, samples [%u, %u), %.6f s, %.1f Mrays/s, %llu NaN/inf, %llu overflow\n", r.hash.c_str(),
+              o.input.c_str(), r.film.width, r.film.height, b.range.begin, b.range.end, r.best_seconds,
+              mrays_per_second(r), static_cast<unsigned long long>(r.nonfinite),
+              static_cast<unsigned long long>(r.overflow));
+  if (!o.expect.empty() && o.expect != r.hash) {
+    std::printf("FAIL: expected %s\n", o.expect.c_str());
+    return 1;
+  }
+  return 0;
+}
+
+// true when the device's answers equal the CPU answers the pack stored; `detail` says why not.
+bool check_parity(const std::string& path, const Options& o, std::string& detail) {
+  const parity::StoredParityCase s = parity::read_parity_case(path);
+  const parity::ParityAnswers got = parity::evaluate_parity_case(s.parity, o.device == "cuda", o.threads);
+  detail = std::to_string(got.inputs) + " inputs";
+  if (got.inputs_sha1 != s.inputs_sha1) {
+    detail += "; the inputs generated here differ from the pack's (generator drift): cannot compare";
+    return false;
+  }
+  if (got.answers_sha1 == s.answers_sha1) return true;
+  detail += "; answers differ from the CPU's";
+  if (o.device == "cuda") {  // recompute the CPU side here to name the inputs that differ
+    const parity::ParityAnswers cpu = parity::evaluate_parity_case(s.parity, false, o.threads);
+    detail += cpu.answers_sha1 == s.answers_sha1 ? ":\n" + parity::describe_differences(cpu, got, 5)
+                                                 : " (and this machine's CPU differs from the pack's too)";
+  }
+  return false;
+}
+
+int run_parity(const Options& o) {
+  std::string detail;
+  const bool pass = check_parity(o.input, o, detail);
+  std::printf("%s %s: %s\n", pass ? "PASS" : "FAIL", o.input.c_str(), detail.c_str());
+  return pass ? 0 : 1;
+}
+
+// DIR/pack.tsv: one line per entry, "golden NAME FILE sha1:HASH" or "parity NAME FILE -".
+int run_pack(const Options& o) {
+  const std::string dir = o.input + "/";
+  std::istringstream list(read_text_file(dir + "pack.tsv", "pack list", 1u << 20));
+  std::string device = "cpu (" + std::to_string(o.threads) + " threads)";
+  if (o.device == "cuda") device = parity::gpu_device();
+  std::printf("tracer-gpu pack %s on %s\n%-7s %-36s %-5s %s\n", o.input.c_str(), device.c_str(), "kind", "name", "result",
+              "detail");
+  size_t passed = 0, total = 0;
+  for (std::string line; std::getline(list, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::string kind, name, file, expected;
+    if (!(fields >> kind >> name >> file >> expected)) throw InputError(dir + "pack.tsv: malformed line: " + line);
+    ++total;
+    bool pass = false;
+    std::string detail;
+    try {
+      if (kind == "golden") {
+        const SceneBundle b = read_scene_bundle(dir + file);
+        const Rendered r = render_bundle(b, o, dir + file);
+        pass = r.hash == expected;
+        char text[160];
+        std::snprintf(text, sizeof text, "%.6f s, %.1f Mrays/s", r.best_seconds, mrays_per_second(r));
+        detail = pass ? text : "got " + r.hash + ", expected " + expected;
+      } else if (kind == "parity") {
+        pass = check_parity(dir + file, o, detail);
+      } else {
+        detail = "unknown kind " + kind;
+      }
+    } catch (const std::exception& e) {
+      detail = std::string("error: ") + e.what();
+    }
+    passed += pass;
+    std::printf("%-7s %-36s %-5s %s\n", kind.c_str(), name.c_str(), pass ? "PASS" : "FAIL", detail.c_str());
+    std::fflush(stdout);
+  }
+  std::printf("%zu of %zu passed on %s\n", passed, total, device.c_str());
+  return passed == total && total > 0 ? 0 : 1;
+}
+
+}  // namespace
+}  // namespace tracer
+
+int main(int argc, char** argv) {
+  using namespace tracer;
+  try {
+    const Options o = parse(argc, argv);
+    if (o.command == "render") return run_render(o);
+    if (o.command == "parity") return run_parity(o);
+    if (o.command == "pack") return run_pack(o);
+    if (o.command == "device") {
+      std::printf("%s\n", parity::gpu_device().c_str());
+      return 0;
+    }
+    throw InputError(o.command + ": unknown command\n" + kUsage);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  }
+}

@@ -1,0 +1,54 @@
+#include "scene_bundle.h"
+
+namespace tracer {
+namespace {
+
+constexpr uint64_t kMaxPixels = 1ull << 28;
+
+SceneView without_pointers(SceneView view) {
+#define TRACER_NULL_POINTER(Type, name) view.name = nullptr;
+  TRACER_SCENE_ARRAYS(TRACER_NULL_POINTER)
+#undef TRACER_NULL_POINTER
+  return view;
+}
+
+}  // namespace
+
+SceneBundle make_scene_bundle(const SceneArrays& arrays, const SceneView& view, SampleRange range, const std::string& source) {
+  return {arrays, without_pointers(view), range, source};
+}
+
+BundleFile encode_scene_bundle(const SceneBundle& bundle) {
+  BundleFile file;
+  file.kind = "scene";
+  file.add_one("view", without_pointers(bundle.scalars));
+  file.add_one("samples", bundle.range);
+  file.add("source", std::vector<char>(bundle.source.begin(), bundle.source.end()));
+#define TRACER_ADD_ARRAY(Type, name) file.add(#name, bundle.arrays.name);
+  TRACER_SCENE_ARRAYS(TRACER_ADD_ARRAY)
+#undef TRACER_ADD_ARRAY
+  return file;
+}
+
+SceneBundle decode_scene_bundle(const BundleFile& file, const std::string& path) {
+  SceneBundle b;
+  b.scalars = without_pointers(file.get_one<SceneView>("view", path));
+  b.range = file.get_one<SampleRange>("samples", path);
+  const std::vector<char> source = file.get<char>("source", path);
+  b.source.assign(source.begin(), source.end());
+#define TRACER_GET_ARRAY(Type, name) b.arrays.name = file.get<Type>(#name, path);
+  TRACER_SCENE_ARRAYS(TRACER_GET_ARRAY)
+#undef TRACER_GET_ARRAY
+  const RenderSettings& rs = b.scalars.settings;
+  if (rs.width == 0 || rs.height == 0 || static_cast<uint64_t>(rs.width) * rs.height > kMaxPixels)
+    throw InputError(path + ": bundle image of " + std::to_string(rs.width) + "x" + std::to_string(rs.height) +
+                     " pixels (1 to 2^28 pixels)");
+  if (rs.spp == 0 || b.range.begin >= b.range.end || b.range.end > rs.spp)
+    throw InputError(path + ": bundle sample range [" + std::to_string(b.range.begin) + ", " +
+                     std::to_string(b.range.end) + ") is not inside [0, " + std::to_string(rs.spp) + ")");
+  return b;
+}
+
+SceneBundle read_scene_bundle(const std::string& path) { return decode_scene_bundle(read_bundle(path, "scene"), path); }
+
+}  // namespace tracer
