@@ -1,0 +1,186 @@
+// The GPU pack without a GPU (docs/cuda.md): the self-contained runner, from the pack's
+// scene bundles alone, reproduces every golden's manifest hash and every parity case's CPU
+// answers on the CPU; it links nothing but libc, libm and the loader; malformed bundles
+// are refused with exit 2 and nothing written; and a wrong hash fails, so the check has power.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "golden_manifest.h"
+#include "test_util.h"
+
+namespace tracer {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string runner() { return TRACER_GPU_BINARY; }
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void spill(const fs::path& p, const std::string& bytes) { std::ofstream(p, std::ios::binary) << bytes; }
+
+// The pack the CTest fixture gpu-pack.write made (tests/CMakeLists.txt).
+fs::path pack() { return TRACER_GPU_PACK; }
+
+TEST(GpuPack, RunnerOnTheCpuReproducesEveryGoldenHashAndParityAnswer) {
+  std::string out;
+  ASSERT_EQ(test::run_command((pack() / "run.sh").string() + " --device cpu", &out), 0) << out;
+  const GoldenManifest manifest = read_manifest(TRACER_SOURCE_DIR);
+  for (const GoldenEntry& e : manifest.entries) {
+    std::ostringstream row;
+    row << "golden  " << e.name;
+    const size_t at = out.find(row.str() + " ");
+    ASSERT_NE(at, std::string::npos) << e.name << " has no row:\n" << out;
+    EXPECT_NE(out.substr(at, 60).find("PASS"), std::string::npos) << out.substr(at, 200);
+  }
+  for (const char* c : {"math-sin", "math-pow", "philox", "shapes", "trace-mesh-bvh", "trace-mesh-lbvh",
+                        "trace-mesh-kdtree", "trace-mesh-grid", "trace-mesh-none", "sample-cornell-box"})
+    EXPECT_NE(out.find(std::string(c) + " "), std::string::npos) << c << " missing:\n" << out;
+  EXPECT_EQ(out.find("FAIL"), std::string::npos) << out;
+}
+
+TEST(GpuPack, StaysWellUnderTheDeviceCallLimit) {
+  uint64_t bytes = 0;
+  for (const auto& e : fs::recursive_directory_iterator(pack()))
+    if (e.is_regular_file()) bytes += e.file_size();
+  EXPECT_LT(bytes, 32u << 20) << "a device call carries at most 64 MiB";
+}
+
+TEST(GpuPack, AWrongGoldenHashFailsItsRowAndThePack) {
+  const fs::path dir = test::temp_dir("gpu-pack-mutated");
+  fs::copy_file(pack() / "tracer-gpu", dir / "tracer-gpu");
+  fs::copy_file(pack() / "run.sh", dir / "run.sh");
+  fs::create_directories(dir / "bundles");
+  std::string list, line;
+  std::istringstream rows(slurp(pack() / "pack.tsv"));
+  while (std::getline(rows, line)) {
+    if (line.rfind("golden refraction ", 0) != 0 && line.rfind("golden shadows ", 0) != 0) continue;
+    const std::string file = line.substr(line.find("bundles/"), line.find(".bundle") + 7 - line.find("bundles/"));
+    fs::copy_file(pack() / file, dir / file);
+    if (line.rfind("golden refraction ", 0) == 0) {  // one hex digit of the expected hash changed
+      const size_t at = line.find("sha1:") + 5;
+      line[at] = line[at] == '0' ? '1' : '0';
+    }
+    list += line + "\n";
+  }
+  spill(dir / "pack.tsv", list);
+  std::string out;
+  EXPECT_EQ(test::run_command((dir / "run.sh").string() + " --device cpu", &out), 1) << out;
+  const size_t refraction = out.find("golden  refraction "), shadows = out.find("golden  shadows ");
+  ASSERT_NE(refraction, std::string::npos) << out;
+  ASSERT_NE(shadows, std::string::npos) << out;
+  EXPECT_NE(out.substr(refraction, 60).find("FAIL"), std::string::npos) << out;
+  EXPECT_NE(out.substr(shadows, 60).find("PASS"), std::string::npos) << out;
+  EXPECT_NE(out.find("1 of 2 passed"), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+
+TEST(GpuPack, RefusesADirectoryThatIsNotEmptyAndLeavesIt) {
+  std::string out;
+  ASSERT_TRUE(fs::exists(pack() / "pack.tsv"));
+  EXPECT_EQ(test::run_tracer("gpu-pack " + pack().string() + " --root " + TRACER_SOURCE_DIR, &out), 2) << out;
+  EXPECT_NE(out.find("not an empty directory"), std::string::npos) << out;
+  EXPECT_TRUE(fs::exists(pack() / "pack.tsv"));
+}
+
+TEST(GpuRunner, LinksOnlyLibcLibmAndTheLoader) {
+  std::string out;
+  ASSERT_EQ(test::run_command("ldd " + runner(), &out), 0) << out;
+  std::istringstream lines(out);
+  int libraries = 0;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string name;
+    words >> name;
+    if (name.empty()) continue;
+    ++libraries;
+    const bool allowed = name == "linux-vdso.so.1" || name == "libc.so.6" || name == "libm.so.6" ||
+                         name.find("ld-linux") != std::string::npos;
+    EXPECT_TRUE(allowed) << "tracer-gpu needs " << line;
+  }
+  EXPECT_GE(libraries, 2) << out;
+}
+
+// A bundle of the refraction scene, rendered by the runner; then damaged copies of it.
+class BundleInput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = test::temp_dir("bundle-input");
+    bundle_ = (dir_ / "refraction.bundle").string();
+    std::string out;
+    ASSERT_EQ(test::run_tracer("bundle " + test::source_path("scenes/features/refraction.json") +
+                                   " --width 32 --height 24 -o " + bundle_, &out), 0) << out;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // The runner on `input` must exit 2 naming it and leave the film output as it was.
+  void expect_refused(const std::string& input, const std::string& message) {
+    const fs::path film = dir_ / "out.film";
+    spill(film, "earlier film");
+    std::string out;
+    EXPECT_EQ(test::run_command(runner() + " render " + input + " --device cpu -o " + film.string(), &out), 2) << out;
+    EXPECT_NE(out.find("error: " + input), std::string::npos) << out;
+    EXPECT_NE(out.find(message), std::string::npos) << out;
+    EXPECT_EQ(slurp(film), "earlier film") << "a failed run must leave earlier files as they were";
+  }
+  fs::path dir_;
+  std::string bundle_;
+};
+
+TEST_F(BundleInput, TheRunnerRendersItAndAWrongExpectedHashFails) {
+  std::string out;
+  const std::string film = (dir_ / "a.film").string();
+  ASSERT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu -o " + film, &out), 0) << out;
+  EXPECT_EQ(out.rfind("sha1:", 0), 0u) << out;
+  EXPECT_TRUE(fs::exists(film));
+  const std::string hash = out.substr(0, out.find(' '));
+  EXPECT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu --expect " + hash, &out), 0) << out;
+  EXPECT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu --expect sha1:0", &out), 1) << out;
+  EXPECT_NE(out.find("FAIL"), std::string::npos) << out;
+}
+
+TEST_F(BundleInput, TruncatedCorruptedOrForeignFilesAreRefused) {
+  const std::string bytes = slurp(bundle_);
+  const fs::path truncated = dir_ / "truncated.bundle", flipped = dir_ / "flipped.bundle", empty = dir_ / "empty.bundle",
+                 foreign = dir_ / "scene.json";
+  spill(truncated, bytes.substr(0, bytes.size() / 2));
+  std::string f = bytes;
+  f[f.size() / 2] ^= 0x10;
+  spill(flipped, f);
+  spill(empty, "");
+  fs::copy_file(test::source_path("scenes/features/refraction.json"), foreign);
+  expect_refused(truncated.string(), "checksum does not match");
+  expect_refused(flipped.string(), "checksum does not match");
+  expect_refused(empty.string(), "not a tracer bundle");
+  expect_refused(foreign.string(), "not a tracer bundle");
+  expect_refused((dir_ / "missing.bundle").string(), "cannot open bundle");
+  expect_refused(dir_.string(), "not a regular file");
+  expect_refused("/dev/zero", "not a regular file");
+}
+
+TEST_F(BundleInput, AParityCaseIsNotASceneBundle) {
+  std::string out;
+  ASSERT_EQ(test::run_command(runner() + " parity " + bundle_ + " --device cpu", &out), 2) << out;
+  EXPECT_NE(out.find("a scene bundle; expected a parity bundle"), std::string::npos) << out;
+}
+
+TEST_F(BundleInput, TracerBundleRefusesBadArgumentsAndWritesNothing) {
+  std::string out;
+  const std::string scene = test::source_path("scenes/features/refraction.json");
+  EXPECT_EQ(test::run_tracer("bundle " + scene + " -o " + (dir_ / "x.exr").string(), &out), 2) << out;
+  EXPECT_NE(out.find("NAME.bundle"), std::string::npos) << out;
+  EXPECT_EQ(test::run_tracer("bundle " + scene + " --spp 4 --samples 3:9 -o " + (dir_ / "y.bundle").string(), &out), 2) << out;
+  EXPECT_FALSE(fs::exists(dir_ / "y.bundle"));
+  EXPECT_EQ(test::run_tracer("bundle " + (dir_ / "none.json").string() + " -o " + (dir_ / "z.bundle").string(), &out), 2) << out;
+  EXPECT_FALSE(fs::exists(dir_ / "z.bundle"));
+}
+
+}  // namespace
+}  // namespace tracer
