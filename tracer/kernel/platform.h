@@ -85,6 +85,39 @@ TRACER_HD float abs_of(float x) { return float_of_bits(bits_of(x) & 0x7fffffffu)
 TRACER_HD double abs_of(double x) { return double_of_bits(bits_of(x) & 0x7fffffffffffffffull); }
 TRACER_HD float clamp_of(float x, float lo, float hi) { return min_of(max_of(x, lo), hi); }
 
+// Leading zero bits of a 64-bit word; 64 for 0.
+TRACER_HD int count_leading_zeros(uint64_t x) {
+#if defined(__CUDA_ARCH__)
+  return __clzll(static_cast<long long>(x));
+#else
+  return x == 0 ? 64 : __builtin_clzll(x);
+#endif
+}
+
+// Adds 1 to a counter shared by threads and returns its old value. The release/acquire
+// pair makes what one thread wrote before its increment visible to the thread that sees
+// the count it left (a fence on the GPU), as a bottom-up tree pass needs.
+TRACER_HD uint32_t atomic_increment(uint32_t* counter) {
+#if defined(__CUDA_ARCH__)
+  __threadfence();
+  const uint32_t old = atomicAdd(counter, 1u);
+  __threadfence();
+  return old;
+#else
+  return __atomic_fetch_add(counter, 1u, __ATOMIC_ACQ_REL);
+#endif
+}
+
+// A float another thread wrote before an atomic_increment this thread has seen: read past
+// the GPU's non-coherent L1 cache; on the host the increment's acquire already orders it.
+TRACER_HD float load_shared_float(const float* p) {
+#if defined(__CUDA_ARCH__)
+  return __ldcg(p);
+#else
+  return *p;
+#endif
+}
+
 // gamma(n) = n u / (1 - n u), u = 2^-24: the relative error bound of n float operations
 // (Higham; pbrt-v4 section 6.8). Intersection tests use it to accept only hits whose t
 // is conservatively positive, the second half of self-intersection avoidance.
