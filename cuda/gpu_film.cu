@@ -1,6 +1,7 @@
 #include <chrono>
 
 #include "cuda_device.h"
+#include "cuda_event.h"
 #include "device_scene.h"
 #include "gpu_film.h"
 #include "kernel/render_pixel.h"
@@ -25,14 +26,6 @@ __global__ void render_kernel(const SceneView scene, SampleRange range, FilmSum*
   if (sum.overflow) atomicAdd(&counters[kOverflow], static_cast<unsigned long long>(sum.overflow));
 }
 
-// A CUDA event that is destroyed even when a later call throws.
-struct CudaEvent {
-  cudaEvent_t event = nullptr;
-  CudaEvent() { TRACER_CUDA_CHECK(cudaEventCreate(&event)); }
-  ~CudaEvent() { cudaEventDestroy(event); }
-  CudaEvent(const CudaEvent&) = delete;
-  CudaEvent& operator=(const CudaEvent&) = delete;
-};
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -68,10 +61,7 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
   render_kernel<<<grid, block>>>(device_scene.view(), range, film.get(), counters.get());
   TRACER_CUDA_CHECK(cudaGetLastError());
   TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
-  TRACER_CUDA_CHECK(cudaEventSynchronize(stop.event));
-  float kernel_ms = 0.0f;
-  TRACER_CUDA_CHECK(cudaEventElapsedTime(&kernel_ms, start.event, stop.event));
-  r.kernel_seconds = kernel_ms / 1000.0;
+  r.kernel_seconds = seconds_between(start, stop);
 
   t = std::chrono::steady_clock::now();
   r.film.width = rs.width;

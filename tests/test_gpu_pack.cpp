@@ -8,6 +8,9 @@
 #include <sstream>
 
 #include "golden_manifest.h"
+#include "lbvh_builder.h"
+#include "parity/parallel_for.h"
+#include "parity/parity_inputs.h"
 #include "test_util.h"
 
 namespace tracer {
@@ -41,7 +44,7 @@ TEST(GpuPack, RunnerOnTheCpuReproducesEveryGoldenHashAndParityAnswer) {
     EXPECT_NE(out.substr(at, 60).find("PASS"), std::string::npos) << out.substr(at, 200);
   }
   for (const char* c : {"math-sin", "math-pow", "philox", "shapes", "trace-mesh-bvh", "trace-mesh-lbvh",
-                        "trace-mesh-kdtree", "trace-mesh-grid", "trace-mesh-none", "sample-cornell-box"})
+                        "trace-mesh-kdtree", "trace-mesh-grid", "trace-mesh-none", "lbvh-build-1m", "sample-cornell-box"})
     EXPECT_NE(out.find(std::string(c) + " "), std::string::npos) << c << " missing:\n" << out;
   EXPECT_EQ(out.find("FAIL"), std::string::npos) << out;
 }
@@ -106,6 +109,27 @@ TEST(GpuRunner, LinksOnlyLibcLibmAndTheLoader) {
     EXPECT_TRUE(allowed) << "tracer-gpu needs " << line;
   }
   EXPECT_GE(libraries, 2) << out;
+}
+
+// The LBVH steps of kernel/lbvh.h give the same nodes and leaf order under the tracer's
+// OpenMP loops and under the runner's std::threads at any count (the GPU grid is the third).
+TEST(LbvhBuild, OpenMpAndStdThreadsGiveTheSameTree) {
+  const LbvhInput in = parity::lbvh_inputs(3, 100000);
+  std::vector<BuildItem> items;
+  for (size_t i = 0; i < in.boxes.size(); ++i) {
+    Bounds b;
+    b.grow(in.boxes[i].lo);
+    b.grow(in.boxes[i].hi);
+    items.push_back({b, in.centroids[i], in.ids[i]});
+  }
+  const std::vector<BvhNode> openmp = build_lbvh(items);
+  for (unsigned threads : {1u, 2u, 7u}) {
+    const LbvhTree tree = build_lbvh_tree(in, [&](size_t n, const auto& fn) { parallel_for(n, threads, fn, 16); });
+    ASSERT_EQ(tree.nodes.size(), openmp.size());
+    EXPECT_EQ(std::memcmp(tree.nodes.data(), openmp.data(), openmp.size() * sizeof(BvhNode)), 0) << threads << " threads";
+    ASSERT_EQ(tree.order.size(), items.size());
+    for (size_t k = 0; k < items.size(); ++k) ASSERT_EQ(in.ids[tree.order[k]], items[k].id) << "leaf " << k;
+  }
 }
 
 // A bundle of the refraction scene, rendered by the runner; then damaged copies of it.

@@ -43,7 +43,8 @@ Scene golden_scene(const GoldenManifest& manifest, const std::string& name, cons
 }
 
 // The cases of the GoogleTest parity suite (tests/test_cuda_parity.cpp), with the same
-// inputs, plus traversal through every acceleration structure and one whole golden's samples.
+// inputs, plus traversal through every acceleration structure, the LBVH build of 2^20
+// triangles and one whole golden's samples.
 std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
   std::vector<ParityCase> cases;
   for (uint32_t f = 0; f < parity::kMathFunctionCount; ++f)
@@ -60,6 +61,7 @@ std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
                        make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, label)});
     }
   }
+  cases.push_back({"lbvh-build-1m", {ParityKind::Lbvh, 0, 17, 1u << 20, 0, {}, {}}, {}});
   const Scene sample = golden_scene(manifest, "cornell-box", nullptr);
   cases.push_back({"sample-cornell-box", {ParityKind::Sample, 0, 0, 0, 0, {}, {}},
                    make_scene_bundle(sample, sample.view(), {0, sample.settings.spp}, "sample-cornell-box")});

@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "lbvh_build.h"
 #include "parity_cases.h"
 
 namespace tracer::parity {
@@ -112,6 +113,22 @@ inline std::vector<Ray> ray_inputs(uint64_t seed, uint32_t count, Vec3 lo, Vec3 
     rays.push_back({o, in.direction()});
   }
   return rays;
+}
+
+// Boxes of `count` small random triangles in the unit cube (edges up to 2^-8, every tenth
+// sharing its centroid with the one before, so Morton codes tie): an LBVH build's input.
+inline LbvhInput lbvh_inputs(uint64_t seed, uint32_t count) {
+  Inputs in{seed};
+  LbvhInput out;
+  for (uint32_t i = 0; i < count; ++i) {
+    const Vec3 a = i % 10 == 9 ? out.boxes.back().lo : in.in_box(0.0f, 1.0f);
+    const Vec3 b = a + in.in_box(-0x1p-8f, 0x1p-8f), c = a + in.in_box(-0x1p-8f, 0x1p-8f);
+    const LbvhBox box = {min_of(a, min_of(b, c)), max_of(a, max_of(b, c))};
+    out.boxes.push_back(box);
+    out.centroids.push_back((box.lo + box.hi) * 0.5f);
+    out.ids.push_back(i);
+  }
+  return out;
 }
 
 }  // namespace tracer::parity

@@ -1,8 +1,10 @@
 #include "parity_suite.h"
 
+#include <chrono>
 #include <cstdio>
 
 #include "bundle/sha1.h"
+#include "lbvh_gpu.h"
 #include "parallel_for.h"
 #include "parity_gpu.h"
 #include "parity_inputs.h"
@@ -44,6 +46,13 @@ void set_answers(ParityAnswers& r, const std::vector<A>& answers) {
 ParityAnswers evaluate_parity_case(const ParityCase& c, bool on_gpu, unsigned threads) {
   const ParitySpec& s = c.spec;
   ParityAnswers r;
+  // Runs `evaluate` (the answers on the device), adding its wall time to r.seconds.
+  const auto timed = [&r](auto evaluate) {
+    const auto start = std::chrono::steady_clock::now();
+    auto answers = evaluate();
+    r.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return answers;
+  };
   switch (s.kind) {
     case ParityKind::Math: {
       const MathFunction f = static_cast<MathFunction>(s.function);
@@ -52,30 +61,34 @@ ParityAnswers evaluate_parity_case(const ParityCase& c, bool on_gpu, unsigned th
       hash_into(sha, in.a);
       hash_into(sha, in.b);
       r.inputs = in.a.size(), r.inputs_sha1 = sha.hex_digest();
-      std::vector<float> out(in.a.size());
-      if (on_gpu) out = gpu_math(f, in.a, in.b);
-      else parallel_for(out.size(), threads, [&](size_t i) { out[i] = eval_math(f, in.a[i], in.b[i]); });
-      set_answers(r, out);
+      set_answers(r, timed([&] {
+        if (on_gpu) return gpu_math(f, in.a, in.b);
+        std::vector<float> out(in.a.size());
+        parallel_for(out.size(), threads, [&](size_t i) { out[i] = eval_math(f, in.a[i], in.b[i]); });
+        return out;
+      }));
       break;
     }
     case ParityKind::Philox: {
       const std::vector<PhiloxQuery> q = philox_inputs(s.seed, s.count);
       r.inputs = q.size(), r.inputs_sha1 = sha1_of(q);
-      set_answers(r, on_gpu ? gpu_philox(q) : on_cpu<Philox4>(q, threads, eval_philox));
+      set_answers(r, timed([&] { return on_gpu ? gpu_philox(q) : on_cpu<Philox4>(q, threads, eval_philox); }));
       break;
     }
     case ParityKind::Shapes: {
       const std::vector<ShapeQuery> q = shape_inputs(s.seed, s.count);
       r.inputs = q.size(), r.inputs_sha1 = sha1_of(q);
-      set_answers(r, on_gpu ? gpu_shapes(q) : on_cpu<ShapeAnswer>(q, threads, eval_shape));
+      set_answers(r, timed([&] { return on_gpu ? gpu_shapes(q) : on_cpu<ShapeAnswer>(q, threads, eval_shape); }));
       break;
     }
     case ParityKind::Trace: {
       const std::vector<Ray> rays = ray_inputs(s.seed, s.count, s.lo, s.hi);
       r.inputs = rays.size(), r.inputs_sha1 = sha1_of(rays);
       const SceneView view = c.scene.view();
-      set_answers(r, on_gpu ? gpu_trace(c.scene.arrays, view, rays)
-                            : on_cpu<TraceAnswer>(rays, threads, [&](const Ray& ray) { return eval_trace(view, ray); }));
+      set_answers(r, timed([&] {
+        return on_gpu ? gpu_trace(c.scene.arrays, view, rays)
+                      : on_cpu<TraceAnswer>(rays, threads, [&](const Ray& ray) { return eval_trace(view, ray); });
+      }));
       break;
     }
     case ParityKind::Sample: {
@@ -83,8 +96,31 @@ ParityAnswers evaluate_parity_case(const ParityCase& c, bool on_gpu, unsigned th
       std::vector<uint32_t> pixels(static_cast<size_t>(view.settings.width) * view.settings.height);
       for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = static_cast<uint32_t>(i);
       r.inputs = pixels.size(), r.inputs_sha1 = sha1_of(pixels);
-      set_answers(r, on_gpu ? gpu_samples(c.scene.arrays, view)
-                            : on_cpu<SampleAnswer>(pixels, threads, [&](uint32_t p) { return eval_sample(view, p); }));
+      set_answers(r, timed([&] {
+        return on_gpu ? gpu_samples(c.scene.arrays, view)
+                      : on_cpu<SampleAnswer>(pixels, threads, [&](uint32_t p) { return eval_sample(view, p); });
+      }));
+      break;
+    }
+    case ParityKind::Lbvh: {
+      const LbvhInput in = lbvh_inputs(s.seed, s.count);
+      Sha1 sha;
+      hash_into(sha, in.boxes);
+      hash_into(sha, in.centroids);
+      hash_into(sha, in.ids);
+      r.inputs = in.boxes.size(), r.inputs_sha1 = sha.hex_digest();
+      const LbvhTree tree = timed([&] {
+        if (!on_gpu) return build_lbvh_tree(in, [&](size_t n, const auto& fn) { parallel_for(n, threads, fn, 1024); });
+        GpuLbvh g = build_lbvh_on_gpu(in);
+        char note[96];
+        std::snprintf(note, sizeof note, "device build %.6f s", g.build_seconds);
+        r.note = note;
+        return std::move(g.tree);
+      });
+      std::vector<uint32_t> words(tree.nodes.size() * sizeof(BvhNode) / 4 + tree.order.size());
+      std::memcpy(words.data(), tree.nodes.data(), tree.nodes.size() * sizeof(BvhNode));
+      std::memcpy(words.data() + tree.nodes.size() * sizeof(BvhNode) / 4, tree.order.data(), tree.order.size() * 4);
+      set_answers(r, words);
       break;
     }
     default: throw InputError(c.name + ": unknown parity case kind " + std::to_string(static_cast<uint32_t>(s.kind)));
@@ -137,11 +173,11 @@ StoredParityCase read_parity_case(const std::string& path) {
   s.inputs_sha1 = text("inputs_sha1");
   s.answers_sha1 = text("answers_sha1");
   const ParitySpec& spec = s.parity.spec;
-  if (static_cast<uint32_t>(spec.kind) > static_cast<uint32_t>(ParityKind::Sample) ||
+  if (static_cast<uint32_t>(spec.kind) > static_cast<uint32_t>(ParityKind::Lbvh) ||
       spec.function >= kMathFunctionCount || spec.count > kMaxParityInputs)
     throw InputError(path + ": parity case " + s.parity.name + " has kind " +
                      std::to_string(static_cast<uint32_t>(spec.kind)) + ", function " + std::to_string(spec.function) +
-                     ", count " + std::to_string(spec.count) + " (kinds 0-4, functions 0-8, counts up to 2^24)");
+                     ", count " + std::to_string(spec.count) + " (kinds 0-5, functions 0-8, counts up to 2^24)");
   if (s.parity.spec.kind == ParityKind::Trace || s.parity.spec.kind == ParityKind::Sample)
     s.parity.scene = decode_scene_bundle(file, path);
   return s;

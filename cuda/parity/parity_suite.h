@@ -11,14 +11,15 @@
 
 namespace tracer::parity {
 
-enum class ParityKind : uint32_t { Math, Philox, Shapes, Trace, Sample };
+enum class ParityKind : uint32_t { Math, Philox, Shapes, Trace, Sample, Lbvh };
 
 struct ParitySpec {
   ParityKind kind;
   uint32_t function;  // Math: the MathFunction
   uint64_t seed;
   uint32_t count;     // Math: random pairs (and half as many domain points); Philox: queries;
-                      // Shapes: spheres and triangles each; Trace: rays; Sample: unused
+                      // Shapes: spheres and triangles each; Trace: rays; Sample: unused;
+                      // Lbvh: triangles, built into nodes and leaf order
   uint32_t reserved;
   Vec3 lo, hi;        // Trace: the box the ray origins are drawn from
 };
@@ -34,6 +35,8 @@ struct ParityAnswers {
   std::string inputs_sha1, answers_sha1;
   std::string answers;  // the answers' bytes, element after element
   uint32_t answer_size = 0;
+  double seconds = 0;  // the evaluation's wall time on its device, transfers included
+  std::string note;    // Lbvh on the GPU: the device build time
 };
 
 // The case's inputs, evaluated on the GPU (DeviceUnavailable without one) or on the CPU.

@@ -2,6 +2,7 @@
 // `--device cpu` still runs every bundle and parity case.
 #include "device_error.h"
 #include "gpu_film.h"
+#include "lbvh_gpu.h"
 #include "parity/parity_gpu.h"
 
 namespace tracer {
@@ -11,6 +12,7 @@ namespace {
 }  // namespace
 
 GpuFilm render_film_on_gpu(const SceneArrays&, const SceneView&, SampleRange, const std::string&) { no_cuda(); }
+GpuLbvh build_lbvh_on_gpu(const LbvhInput&) { no_cuda(); }
 
 namespace parity {
 std::string gpu_device() { no_cuda(); }

@@ -137,12 +137,21 @@ int run_render(const Options& o) {
 bool check_parity(const std::string& path, const Options& o, std::string& detail) {
   const parity::StoredParityCase s = parity::read_parity_case(path);
   const parity::ParityAnswers got = parity::evaluate_parity_case(s.parity, o.device == "cuda", o.threads);
-  detail = std::to_string(got.inputs) + " inputs";
+  char seconds[64];
+  std::snprintf(seconds, sizeof seconds, ", %.6f s", got.seconds);
+  detail = std::to_string(got.inputs) + " inputs" + seconds + (got.note.empty() ? "" : ", " + got.note);
   if (got.inputs_sha1 != s.inputs_sha1) {
     detail += "; the inputs generated here differ from the pack's (generator drift): cannot compare";
     return false;
   }
-  if (got.answers_sha1 == s.answers_sha1) return true;
+  if (got.answers_sha1 == s.answers_sha1) {
+    if (s.parity.spec.kind == parity::ParityKind::Lbvh && o.device == "cuda") {  // the CPU build, timed beside it
+      const parity::ParityAnswers cpu = parity::evaluate_parity_case(s.parity, false, o.threads);
+      std::snprintf(seconds, sizeof seconds, "; cpu build (%u threads) %.6f s", o.threads, cpu.seconds);
+      detail += seconds;
+    }
+    return true;
+  }
   detail += "; answers differ from the CPU's";
   if (o.device == "cuda") {  // recompute the CPU side here to name the inputs that differ
     const parity::ParityAnswers cpu = parity::evaluate_parity_case(s.parity, false, o.threads);
