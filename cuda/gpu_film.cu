@@ -1,4 +1,5 @@
 #include <chrono>
+#include <cstdio>
 
 #include "cuda_device.h"
 #include "cuda_event.h"
@@ -32,6 +33,28 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 }
 
 }  // namespace
+
+std::string describe_render_kernel() {
+  const cudaDeviceProp prop = select_cuda_device();
+  cudaFuncAttributes attr{};
+  TRACER_CUDA_CHECK(cudaFuncGetAttributes(&attr, render_kernel));
+  constexpr int kThreads = 256;
+  int blocks = 0;
+  TRACER_CUDA_CHECK(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&blocks, render_kernel, kThreads, 0));
+  const int by_registers = attr.numRegs > 0 ? prop.regsPerMultiprocessor / (attr.numRegs * kThreads) : blocks;
+  const int by_threads = prop.maxThreadsPerMultiProcessor / kThreads;
+  const char* limit = by_registers <= by_threads && by_registers <= prop.maxBlocksPerMultiProcessor ? "registers"
+                      : by_threads <= prop.maxBlocksPerMultiProcessor                                ? "threads per SM"
+                                                                                                     : "blocks per SM";
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "render_kernel: %d registers, %zu bytes of local memory (stack and spills) per thread; 16x16 blocks: "
+                "%d resident per SM of %d threads = %.0f %% occupancy, limited by %s (%d SMs, %d registers per SM)",
+                attr.numRegs, static_cast<size_t>(attr.localSizeBytes), blocks, prop.maxThreadsPerMultiProcessor,
+                100.0 * blocks * kThreads / prop.maxThreadsPerMultiProcessor, limit, prop.multiProcessorCount,
+                prop.regsPerMultiprocessor);
+  return text;
+}
 
 GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, SampleRange range, const std::string& label) {
   const cudaDeviceProp prop = select_cuda_device();

@@ -20,6 +20,11 @@ struct GpuFilm {
   double upload_seconds = 0, kernel_seconds = 0, download_seconds = 0;
 };
 
+// The render kernel on this device: registers and local memory per thread (ptxas's
+// figures, as the driver reports them), resident 16x16 blocks per multiprocessor, the
+// occupancy they give and what limits it. DeviceUnavailable without a usable GPU.
+std::string describe_render_kernel();
+
 // DeviceUnavailable (no device; too little free memory, naming `label`) or
 // std::runtime_error naming the failing CUDA call.
 GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, SampleRange range, const std::string& label);

@@ -85,6 +85,29 @@ TEST(GpuPack, AWrongGoldenHashFailsItsRowAndThePack) {
   fs::remove_all(dir);
 }
 
+// bench.tsv lists the tables of `tracer bench device`; the runner times its rows.
+TEST(GpuPack, BenchRowsCoverTheDeviceTablesAndTheRunnerTimesThem) {
+  const std::string list = slurp(pack() / "bench.tsv");
+  for (const char* row : {"main cornell-box-1spp-center ", "main cornell-box-4spp-grid ", "effects none-1spp-center ",
+                          "effects all-2spp-stochastic ", "resolution 1920x1080-4spp-grid ", "mesh sphere-"})
+    EXPECT_NE(list.find(row), std::string::npos) << row << " missing:\n" << list;
+  const fs::path dir = test::temp_dir("gpu-pack-bench");
+  fs::create_directories(dir / "bench");
+  std::string main_rows, line;
+  std::istringstream rows(list);
+  while (std::getline(rows, line))
+    if (line.rfind("main ", 0) == 0) {
+      const std::string file = line.substr(line.rfind(' ') + 1);
+      fs::copy_file(pack() / file, dir / file);
+      main_rows += line + "\n";
+    }
+  spill(dir / "bench.tsv", main_rows);
+  std::string out;
+  ASSERT_EQ(test::run_command(runner() + " bench " + dir.string() + " --device cpu", &out), 0) << out;
+  EXPECT_NE(out.find("main       cornell-box-4spp-grid"), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+
 TEST(GpuPack, RefusesADirectoryThatIsNotEmptyAndLeavesIt) {
   std::string out;
   ASSERT_TRUE(fs::exists(pack() / "pack.tsv"));

@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "golden_manifest.h"
 #include "input_error.h"
+#include "mesh_generators.h"
 #include "parity/parallel_for.h"
 #include "parity/parity_suite.h"
 #include "scene_loader.h"
@@ -28,8 +29,14 @@ const char* kRunScript =
     "#!/bin/sh\n"
     "# Runs this GPU pack (written by `tracer gpu-pack`): every golden's scene bundle and every\n"
     "# CPU/GPU parity case on the GPU, or on the CPU with `./run.sh --device cpu`, and prints one\n"
-    "# pass/fail table. Exit 0 when every entry matches the CPU bit for bit. docs/cuda.md.\n"
-    "cd \"$(dirname \"$0\")\" && exec ./tracer-gpu pack . \"$@\"\n";
+    "# pass/fail table (exit 0 when every entry matches the CPU bit for bit); then, on the GPU,\n"
+    "# the device, its kernel's registers and occupancy, and the bench tables. docs/cuda.md.\n"
+    "cd \"$(dirname \"$0\")\" || exit 2\n"
+    "./tracer-gpu pack . \"$@\"\n"
+    "status=$?\n"
+    "case \" $* \" in *\" cpu \"*) exit $status ;; esac\n"
+    "./tracer-gpu device && ./tracer-gpu bench . --repeat 20\n"
+    "exit $status\n";
 
 const char* kMathNames[] = {"sin", "cos", "tan", "asin", "acos", "atan2", "exp", "log", "pow"};
 const char* kTraceScenes[] = {"cornell-box", "mesh", "refraction"};
@@ -66,6 +73,72 @@ std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
   cases.push_back({"sample-cornell-box", {ParityKind::Sample, 0, 0, 0, 0, {}, {}},
                    make_scene_bundle(sample, sample.view(), {0, sample.settings.spp}, "sample-cornell-box")});
   return cases;
+}
+
+// The scenes of `tracer bench device` as bundles (Whitted, 720x480 unless the row says):
+// the Cornell box per sampler, per effect and per resolution, and a generated 100k-triangle
+// mesh. bench.tsv rows: "TABLE LABEL FILE"; `tracer-gpu bench` times them.
+std::string write_bench(const fs::path& root, const fs::path& out) {
+  struct Sampler { const char* label; const char* sampler; uint32_t spp; };
+  const Sampler samplers[] = {{"1spp-center", "center", 1}, {"2spp-stochastic", "stochastic", 2}, {"4spp-grid", "grid", 4}};
+  fs::create_directories(out / "bench");
+  std::string list = "# table label file: `tracer-gpu bench DIR` times every row\n";
+  const auto add = [&](const std::string& table, const std::string& label, const std::string& scene_path,
+                       uint32_t width, uint32_t height, const Sampler& s, uint32_t effects) {
+    RenderOverrides o;
+    o.width = width, o.height = height, o.sampler = s.sampler, o.spp = s.spp, o.effects = effects, o.integrator = "whitted";
+    const Scene scene = load_scene(scene_path, o);
+    const std::string file = "bench/" + table + "-" + label + ".bundle";
+    write_bundle((out / file).string(),
+                 encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, label)));
+    list += table + " " + label + " " + file + "\n";
+  };
+  const std::string cornell = (root / "scenes/cornell-box.json").string();
+  for (const Sampler& s : {samplers[0], samplers[2]}) add("main", std::string("cornell-box-") + s.label, cornell, 720, 480, s, kEffectAll);
+  const std::pair<const char*, uint32_t> effects[] = {{"none", 0u},
+                                                      {"shadows", kEffectShadows},
+                                                      {"reflections", kEffectReflection},
+                                                      {"refractions", kEffectRefraction},
+                                                      {"all", kEffectAll}};
+  for (const auto& [name, mask] : effects)
+    for (const Sampler& s : samplers) add("effects", std::string(name) + "-" + s.label, cornell, 720, 480, s, mask);
+  const uint32_t sizes[][2] = {{640, 480}, {1280, 720}, {1920, 1080}};
+  for (const auto& size : sizes)
+    for (const Sampler& s : samplers)
+      add("resolution", std::to_string(size[0]) + "x" + std::to_string(size[1]) + "-" + s.label, cornell, size[0],
+          size[1], s, kEffectAll);
+
+  const fs::path temp = fs::temp_directory_path() / ("tracer-gpu-pack-mesh-" + std::to_string(::getpid()));
+  fs::create_directories(temp);
+  try {
+    const std::vector<MeshTriangle> mesh = generate_mesh("sphere", 100000);
+    write_obj(mesh, (temp / "sphere-100k.obj").string());
+    write_text_atomically((temp / "sphere-100k.json").string(), R"({
+  "format": "tracer-scene/1",
+  "camera": { "from": [0, 0.6, 4], "to": [0, 0, 0], "vfov": 40 },
+  "film": { "width": 720, "height": 480 },
+  "render": { "integrator": "whitted", "spp": 1, "sampler": "center", "max_depth": 8 },
+  "ambient": [0.05, 0.05, 0.05],
+  "materials": {
+    "clay": { "type": "phong", "diffuse": [0.8, 0.5, 0.3], "specular": [0.5, 0.5, 0.5], "shininess": 40 },
+    "floor": { "type": "lambert", "albedo": [0.7, 0.7, 0.7] }
+  },
+  "lights": [ { "type": "point", "position": [-2, 4, 3], "intensity": [25, 25, 25] } ],
+  "shapes": [
+    { "type": "quad", "corner": [-4, -1.5, 3], "u": [8, 0, 0], "v": [0, 0, -8], "material": "floor" },
+    { "type": "mesh", "file": "sphere-100k.obj", "material": "clay" }
+  ]
+}
+)");
+    for (const Sampler& s : {samplers[0], samplers[2]})
+      add("mesh", "sphere-" + std::to_string(mesh.size()) + "tri-" + s.label, (temp / "sphere-100k.json").string(), 720,
+          480, s, kEffectAll);
+  } catch (...) {
+    fs::remove_all(temp);
+    throw;
+  }
+  fs::remove_all(temp);
+  return list;
 }
 
 std::string runner_beside_this_binary() {
@@ -108,6 +181,7 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
   fs::permissions(out / "run.sh", fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
                   fs::perm_options::add);
   write_text_atomically((out / "pack.tsv").string(), list);
+  write_text_atomically((out / "bench.tsv").string(), write_bench(cmd.root, out));
 }
 
 }  // namespace

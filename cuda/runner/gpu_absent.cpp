@@ -13,6 +13,7 @@ namespace {
 
 GpuFilm render_film_on_gpu(const SceneArrays&, const SceneView&, SampleRange, const std::string&) { no_cuda(); }
 GpuLbvh build_lbvh_on_gpu(const LbvhInput&) { no_cuda(); }
+std::string describe_render_kernel() { no_cuda(); }
 
 namespace parity {
 std::string gpu_device() { no_cuda(); }

@@ -26,6 +26,7 @@ const char* kUsage =
     "usage: tracer-gpu render BUNDLE [--device cuda|cpu] [--threads N] [--repeat N] [--expect sha1:HASH] [-o FILM]\n"
     "       tracer-gpu parity CASE [--device cuda|cpu] [--threads N]\n"
     "       tracer-gpu pack DIR [--device cuda|cpu] [--threads N] [--repeat N]\n"
+    "       tracer-gpu bench DIR [--device cuda|cpu] [--threads N] [--repeat N]\n"
     "       tracer-gpu device\n";
 
 struct Options {
@@ -209,6 +210,39 @@ int run_pack(const Options& o) {
   return passed == total && total > 0 ? 0 : 1;
 }
 
+// DIR/bench.tsv: "TABLE LABEL FILE" per row. Each bundle is rendered --repeat times on the
+// device and its best time reported; on the GPU the CPU renders it once beside it, as the
+// baseline of the same run.
+int run_bench(const Options& o) {
+  const std::string dir = o.input + "/";
+  std::istringstream list(read_text_file(dir + "bench.tsv", "bench list", 1u << 20));
+  const bool gpu = o.device == "cuda";
+  std::printf("tracer-gpu bench %s on %s, best of %u; the CPU baseline: %u threads, one frame\n", o.input.c_str(),
+              gpu ? parity::gpu_device().c_str() : "cpu", o.repeat, o.threads);
+  std::printf("%-10s %-34s %10s %10s %10s %12s %9s\n", "table", "label", "s/frame", "frames/s", "Mrays/s",
+              gpu ? "CPU s/frame" : "", gpu ? "speed-up" : "");
+  Options cpu = o;
+  cpu.device = "cpu", cpu.repeat = 1;
+  for (std::string line; std::getline(list, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::string table, label, file;
+    if (!(fields >> table >> label >> file)) throw InputError(dir + "bench.tsv: malformed line: " + line);
+    const SceneBundle b = read_scene_bundle(dir + file);
+    const Rendered r = render_bundle(b, o, dir + file);
+    std::printf("%-10s %-34s %10.6f %10.1f %10.1f", table.c_str(), label.c_str(), r.best_seconds,
+                r.best_seconds > 0 ? 1.0 / r.best_seconds : 0.0, mrays_per_second(r));
+    if (gpu) {
+      const Rendered base = render_bundle(b, cpu, dir + file);
+      std::printf(" %12.6f %8.1fx%s", base.best_seconds, base.best_seconds / r.best_seconds,
+                  base.hash == r.hash ? "" : "  (image differs from the CPU's)");
+    }
+    std::printf("\n");
+    std::fflush(stdout);
+  }
+  return 0;
+}
+
 }  // namespace
 }  // namespace tracer
 
@@ -219,8 +253,9 @@ int main(int argc, char** argv) {
     if (o.command == "render") return run_render(o);
     if (o.command == "parity") return run_parity(o);
     if (o.command == "pack") return run_pack(o);
+    if (o.command == "bench") return run_bench(o);
     if (o.command == "device") {
-      std::printf("%s\n", parity::gpu_device().c_str());
+      std::printf("%s\n%s\n", parity::gpu_device().c_str(), describe_render_kernel().c_str());
       return 0;
     }
     throw InputError(o.command + ": unknown command\n" + kUsage);
