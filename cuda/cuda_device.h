@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cuda_check.h"
-#include "device_error.h"
+#include "render/device_error.h"
 
 namespace tracer {
 

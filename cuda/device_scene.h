@@ -2,7 +2,7 @@
 // buffers, and a SceneView whose pointers point at them: what a kernel receives by value.
 #pragma once
 #include "device_buffer.h"
-#include "scene_arrays.h"
+#include "scene/scene_arrays.h"
 
 namespace tracer {
 

@@ -5,9 +5,9 @@
 #pragma once
 #include <string>
 
-#include "film_buffer.h"
+#include "render/film_buffer.h"
 #include "kernel/whitted.h"
-#include "scene_arrays.h"
+#include "scene/scene_arrays.h"
 
 namespace tracer {
 

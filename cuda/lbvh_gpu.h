@@ -2,7 +2,7 @@
 // radix nodes and bottom-up boxes as CUDA grids; the keys sorted on the device), laid out
 // by the same lbvh_lay_out on the host. Plain C++ header: no CUDA types.
 #pragma once
-#include "lbvh_build.h"
+#include "accel/lbvh_build.h"
 
 namespace tracer {
 

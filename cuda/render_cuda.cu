@@ -3,7 +3,7 @@
 // pixels equal the CPU's bit for bit.
 #include "cuda_device.h"
 #include "gpu_film.h"
-#include "render_cuda.h"
+#include "render/render_cuda.h"
 
 namespace tracer {
 

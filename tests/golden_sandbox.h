@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "golden_update.h"
+#include "golden/golden_update.h"
 #include "test_util.h"
 
 namespace tracer::test {

@@ -6,10 +6,10 @@
 
 #include <cstring>
 
-#include "golden_check.h"
+#include "golden/golden_check.h"
 #include "kernel/trace.h"
-#include "scene_loader.h"
-#include "scene_types.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_types.h"
 #include "test_util.h"
 
 namespace tracer {

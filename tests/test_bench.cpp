@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "image_io.h"
+#include "image/image_io.h"
 #include "test_util.h"
 
 namespace tracer {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <set>
 
-#include "camera_setup.h"
+#include "scene/camera_setup.h"
 #include "kernel/sampler.h"
 
 using namespace tracer;

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "json_reader.h"
+#include "scene/json_reader.h"
 #include "test_util.h"
 
 using namespace tracer;

@@ -9,8 +9,8 @@
 #include <cstring>
 #include <functional>
 
-#include "image_io.h"
-#include "render_cpu.h"
+#include "image/image_io.h"
+#include "render/render_cpu.h"
 #include "test_util.h"
 
 namespace tracer {

@@ -9,10 +9,10 @@
 
 #include <cstring>
 
-#include "image_io.h"
-#include "input_error.h"
+#include "image/image_io.h"
+#include "io/input_error.h"
 #include "kernel/light_sources.h"
-#include "render_cpu.h"
+#include "render/render_cpu.h"
 #include "test_util.h"
 
 namespace tracer {

@@ -9,12 +9,12 @@
 #include <cstring>
 #include <limits>
 
-#include "device_error.h"
-#include "golden_manifest.h"
+#include "render/device_error.h"
+#include "golden/golden_manifest.h"
 #include "parity/parity_gpu.h"
 #include "parity/parity_inputs.h"
-#include "render_cpu.h"
-#include "scene_loader.h"
+#include "render/render_cpu.h"
+#include "scene/scene_loader.h"
 #include "test_util.h"
 
 namespace tracer::parity {

@@ -4,8 +4,8 @@
 
 #include <cstring>
 
-#include "image_io.h"
-#include "render_cpu.h"
+#include "image/image_io.h"
+#include "render/render_cpu.h"
 #include "test_util.h"
 
 using namespace tracer;

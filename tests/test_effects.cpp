@@ -4,9 +4,9 @@
 
 #include <cstring>
 
-#include "effects.h"
-#include "input_error.h"
-#include "render_cpu.h"
+#include "render/effects.h"
+#include "io/input_error.h"
+#include "render/render_cpu.h"
 #include "test_util.h"
 
 namespace tracer {

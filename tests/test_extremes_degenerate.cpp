@@ -9,8 +9,8 @@
 #include "kernel/quad.h"
 #include "kernel/trace.h"
 #include "kernel/triangle_moller_trumbore.h"
-#include "render_cpu.h"
-#include "scene_types.h"
+#include "render/render_cpu.h"
+#include "scene/scene_types.h"
 #include "test_util.h"
 
 namespace tracer {

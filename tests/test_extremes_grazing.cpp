@@ -8,7 +8,7 @@
 
 #include "kernel/optics.h"
 #include "kernel/scene_view.h"
-#include "render_cpu.h"
+#include "render/render_cpu.h"
 #include "test_util.h"
 
 namespace tracer {

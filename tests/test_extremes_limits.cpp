@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "golden_check.h"
-#include "render_cpu.h"
+#include "golden/golden_check.h"
+#include "render/render_cpu.h"
 #include "test_util.h"
-#include "text_file.h"
+#include "io/text_file.h"
 
 namespace tracer {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "kernel/camera.h"
 #include "kernel/optics.h"
-#include "render_cpu.h"
+#include "render/render_cpu.h"
 #include "test_util.h"
 
 namespace tracer {

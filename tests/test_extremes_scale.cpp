@@ -17,7 +17,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "render_cpu.h"
+#include "render/render_cpu.h"
 #include "test_util.h"
 
 namespace tracer {

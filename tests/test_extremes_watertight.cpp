@@ -6,11 +6,11 @@
 
 #include <filesystem>
 
-#include "input_error.h"
-#include "mesh_generators.h"
+#include "io/input_error.h"
+#include "bench/mesh_generators.h"
 #include "test_util.h"
-#include "text_file.h"
-#include "watertight_probe.h"
+#include "io/text_file.h"
+#include "bench/watertight_probe.h"
 
 namespace tracer {
 namespace {

@@ -7,9 +7,9 @@
 #include <regex>
 #include <sstream>
 
-#include "golden_manifest.h"
-#include "scene_loader.h"
-#include "scene_types.h"
+#include "golden/golden_manifest.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_types.h"
 #include "test_util.h"
 
 namespace tracer {

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <limits>
 
-#include "golden_check.h"
-#include "golden_report.h"
+#include "golden/golden_check.h"
+#include "golden/golden_report.h"
 #include "golden_sandbox.h"
-#include "image_io.h"
-#include "json_reader.h"
-#include "pixel_hash.h"
+#include "image/image_io.h"
+#include "scene/json_reader.h"
+#include "image/pixel_hash.h"
 
 namespace tracer {
 namespace {

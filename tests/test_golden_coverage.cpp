@@ -3,9 +3,9 @@
 // golden/manifest.json. A type added to the loader without a golden fails here, by name.
 #include <gtest/gtest.h>
 
-#include "golden_manifest.h"
-#include "scene_loader.h"
-#include "scene_types.h"
+#include "golden/golden_manifest.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_types.h"
 #include "test_util.h"
 
 namespace tracer {

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <set>
 
-#include "golden_manifest.h"
+#include "golden/golden_manifest.h"
 #include "test_util.h"
 
 namespace tracer {

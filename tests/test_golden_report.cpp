@@ -7,7 +7,7 @@
 #include <set>
 
 #include "golden_sandbox.h"
-#include "image_io.h"
+#include "image/image_io.h"
 
 namespace tracer {
 namespace {

@@ -3,9 +3,9 @@
 // over uncommitted edits under golden/ unless --force.
 #include <gtest/gtest.h>
 
-#include "golden_manifest.h"
+#include "golden/golden_manifest.h"
 #include "golden_sandbox.h"
-#include "json_reader.h"
+#include "scene/json_reader.h"
 
 namespace tracer {
 namespace {

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "golden_manifest.h"
-#include "lbvh_builder.h"
+#include "golden/golden_manifest.h"
+#include "accel/lbvh_builder.h"
 #include "parity/parallel_for.h"
 #include "parity/parity_inputs.h"
 #include "test_util.h"

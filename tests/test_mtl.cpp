@@ -1,12 +1,12 @@
 // OBJ meshes without a "material" take their MTL materials, mapped as documented in
-// tracer/mtl_materials.h: emissive, dielectric, metal, phong, lambert, maps included.
+// tracer/scene/mtl_materials.h: emissive, dielectric, metal, phong, lambert, maps included.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
 
-#include "image_io.h"
-#include "input_error.h"
+#include "image/image_io.h"
+#include "io/input_error.h"
 #include "test_util.h"
 
 namespace tracer {

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <cstring>
 
-#include "image_io.h"
-#include "mesh_tangents.h"
-#include "input_error.h"
-#include "render_cpu.h"
+#include "image/image_io.h"
+#include "scene/mesh_tangents.h"
+#include "io/input_error.h"
+#include "render/render_cpu.h"
 #include "test_util.h"
 
 namespace tracer {

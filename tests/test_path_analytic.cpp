@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "render_cpu.h"
+#include "render/render_cpu.h"
 #include "test_util.h"
 
 namespace tracer {

@@ -3,7 +3,7 @@
 
 #include <fstream>
 
-#include "input_error.h"
+#include "io/input_error.h"
 #include "test_util.h"
 
 using namespace tracer;

@@ -4,8 +4,8 @@
 
 #include <random>
 
-#include "acceleration.h"
-#include "bounds.h"
+#include "accel/acceleration.h"
+#include "accel/bounds.h"
 #include "kernel/optics.h"
 #include "kernel/ray_offset.h"
 #include "kernel/surface.h"

@@ -9,12 +9,12 @@
 #include <cmath>
 #include <fstream>
 
-#include "image_io.h"
+#include "image/image_io.h"
 #include "kernel/surface.h"
-#include "input_error.h"
-#include "render_cpu.h"
+#include "io/input_error.h"
+#include "render/render_cpu.h"
 #include "test_util.h"
-#include "texture_loader.h"
+#include "scene/texture_loader.h"
 
 namespace tracer {
 namespace {

@@ -15,10 +15,10 @@
 
 #include <gtest/gtest.h>
 
-#include "image_io.h"
-#include "input_error.h"
-#include "render_cpu.h"
-#include "scene_loader.h"
+#include "image/image_io.h"
+#include "io/input_error.h"
+#include "render/render_cpu.h"
+#include "scene/scene_loader.h"
 
 namespace tracer::test {
 

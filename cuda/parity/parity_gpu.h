@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "parity_cases.h"
-#include "scene_arrays.h"
+#include "scene/scene_arrays.h"
 
 namespace tracer::parity {
 

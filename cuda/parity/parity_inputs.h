@@ -7,7 +7,7 @@
 #include <limits>
 #include <vector>
 
-#include "lbvh_build.h"
+#include "accel/lbvh_build.h"
 #include "parity_cases.h"
 
 namespace tracer::parity {

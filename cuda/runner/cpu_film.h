@@ -2,7 +2,7 @@
 // OpenMP runtime is a shared library the bare GPU machine lacks). Pixels do not depend on
 // the thread that computes them, so this film equals the tracer's OpenMP film bit for bit.
 #pragma once
-#include "film_buffer.h"
+#include "render/film_buffer.h"
 #include "kernel/render_pixel.h"
 #include "parity/parallel_for.h"
 

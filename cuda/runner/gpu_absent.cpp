@@ -1,6 +1,6 @@
 // The GPU entry points of a runner built without nvcc: each says so, and the runner's
 // `--device cpu` still runs every bundle and parity case.
-#include "device_error.h"
+#include "render/device_error.h"
 #include "gpu_film.h"
 #include "lbvh_gpu.h"
 #include "parity/parity_gpu.h"

@@ -12,12 +12,12 @@
 #include "bundle/scene_bundle.h"
 #include "bundle/sha1.h"
 #include "cpu_film.h"
-#include "device_error.h"
+#include "render/device_error.h"
 #include "gpu_film.h"
 #include "parity/parity_gpu.h"
 #include "parity/parity_suite.h"
-#include "pixel_hash.h"
-#include "text_file.h"
+#include "image/pixel_hash.h"
+#include "io/text_file.h"
 
 namespace tracer {
 namespace {

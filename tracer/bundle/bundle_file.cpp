@@ -1,7 +1,7 @@
 #include "bundle_file.h"
 
 #include "sha1.h"
-#include "text_file.h"
+#include "io/text_file.h"
 
 namespace tracer {
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "input_error.h"
+#include "io/input_error.h"
 
 namespace tracer {
 

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "bundle_file.h"
-#include "film_buffer.h"
-#include "scene_arrays.h"
+#include "render/film_buffer.h"
+#include "scene/scene_arrays.h"
 
 namespace tracer {
 

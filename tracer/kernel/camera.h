@@ -1,4 +1,4 @@
-// Pinhole and thin-lens camera. The host fills the plain struct once (camera_setup.cpp);
+// Pinhole and thin-lens camera. The host fills the plain struct once (tracer/scene/camera_setup.cpp);
 // kernel code maps a film position and a lens sample to a unit-direction ray.
 #pragma once
 #include "detmath.h"

@@ -1,6 +1,6 @@
 // The linear BVH's build steps (Karras, "Maximizing Parallelism in the Construction of
 // BVHs, Octrees, and k-d Trees", HPG 2012) as kernel functions, one item or node per call,
-// so that an OpenMP loop (tracer/lbvh_builder.cpp), std::threads (the GPU runner's CPU side)
+// so that an OpenMP loop (tracer/accel/lbvh_builder.cpp), std::threads (the GPU runner's CPU side)
 // and a CUDA grid (cuda/lbvh_gpu.cu) run the same code and give the same nodes bit for bit:
 // Morton keys, the binary radix tree (each internal node independently), the bottom-up
 // boxes (the second child to arrive at a node merges them) and the layout into BvhNodes.

@@ -1,7 +1,7 @@
 // Every flat array a SceneView points to, listed once (the idea of Blender Cycles'
 // kernel/data_arrays.h). X(Type, name) declares SceneView::name as `const Type*`; the host
-// expands the same list into Scene's vectors and Scene::view (tracer/scene_arrays.h), the
-// device upload (cuda/device_scene.h) and the scene bundle (tracer/bundle.h), so an array
+// expands the same list into Scene's vectors and Scene::view (tracer/scene/scene_arrays.h), the
+// device upload (cuda/device_scene.h) and the scene bundle (tracer/bundle/scene_bundle.h), so an array
 // added here reaches all of them and none can hand a host pointer to the GPU.
 #pragma once
 

@@ -1,0 +1,11 @@
+// Binned SAH BVH (Wald, "On fast Construction of SAH-based Bounding Volume Hierarchies",
+// 2007) into the flat node array of kernel/bvh_node.h. Reorders `items` into leaf order.
+// The build is sequential and deterministic.
+#pragma once
+#include "accel/bounds.h"
+
+namespace tracer {
+
+std::vector<BvhNode> build_sah_bvh(std::vector<BuildItem>& items);
+
+}  // namespace tracer

@@ -1,0 +1,88 @@
+#include "bench/bench_common.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+
+#include "image/image_io.h"
+#include "io/input_error.h"
+#include "render/render_cpu.h"
+#include "scene/scene_loader.h"
+
+namespace tracer {
+
+constexpr uint64_t kReferenceSeedOffset = 0x9E3779B97F4A7C15ull;  // keeps the reference's samples independent
+
+TimedRender timed_render(const Scene& scene, int threads, int repeats) {
+  TimedRender r;
+  std::vector<double> times;
+  for (int i = 0; i < repeats; ++i) {
+    RenderStats stats;
+    const auto start = std::chrono::steady_clock::now();
+    r.image = render_cpu(scene, threads, stats);
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    r.rays = stats.rays.camera + stats.rays.secondary + stats.rays.shadow;
+  }
+  std::sort(times.begin(), times.end());
+  r.seconds = times[times.size() / 2];
+  return r;
+}
+
+ImageError image_error(const Image& image, const Image& reference) {
+  ImageError e;
+  for (size_t i = 0; i < image.rgb.size(); ++i) {
+    const double d = static_cast<double>(image.rgb[i]) - reference.rgb[i];
+    const double shown = std::clamp(static_cast<double>(image.rgb[i]), 0.0, 1.0) -
+                         std::clamp(static_cast<double>(reference.rgb[i]), 0.0, 1.0);
+    e.rmse += d * d;
+    e.display_rmse += shown * shown;
+    e.rel_mse += d * d / (static_cast<double>(reference.rgb[i]) * reference.rgb[i] + 0.01);
+  }
+  const double n = static_cast<double>(image.rgb.size());
+  e.rmse = std::sqrt(e.rmse / n);
+  e.display_rmse = std::sqrt(e.display_rmse / n);
+  e.rel_mse /= n;
+  return e;
+}
+
+Image reference_image(const std::string& scene_path, RenderOverrides overrides, const std::string& ref_file,
+                      uint32_t ref_spp, int threads, const std::string& save_as) {
+  const Scene probe = load_scene(scene_path, overrides);
+  if (!ref_file.empty()) {
+    Image ref = read_image(ref_file);
+    if (ref.width != probe.settings.width || ref.height != probe.settings.height)
+      throw InputError(ref_file + ": the reference is " + std::to_string(ref.width) + "x" + std::to_string(ref.height) +
+                       ", the renders " + std::to_string(probe.settings.width) + "x" + std::to_string(probe.settings.height));
+    std::printf("reference: %s\n", ref_file.c_str());
+    return ref;
+  }
+  overrides.spp = ref_spp;
+  overrides.seed = probe.settings.seed + kReferenceSeedOffset;
+  if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) overrides.sampler = "stochastic";
+  const TimedRender r = timed_render(load_scene(scene_path, overrides), threads);
+  write_image(r.image, save_as);
+  std::printf("reference: %u spp, %.2f s, saved as %s (give --ref %s to reuse it)\n", ref_spp, r.seconds,
+              save_as.c_str(), save_as.c_str());
+  return r.image;
+}
+
+std::vector<uint32_t> parse_spp_list(const std::string& option, const std::string& text) {
+  std::vector<uint32_t> out;
+  std::stringstream items(text);
+  std::string item;
+  while (std::getline(items, item, ',')) {
+    try {
+      size_t used = 0;
+      const unsigned long v = std::stoul(item, &used);
+      if (used != item.size() || v == 0 || v > 0xffffffffu || item[0] == '-') throw std::invalid_argument("");
+      out.push_back(static_cast<uint32_t>(v));
+    } catch (const std::exception&) {
+      throw InputError(option + " " + text + ": expected a comma-separated list of positive sample counts");
+    }
+  }
+  if (out.empty()) throw InputError(option + ": expected at least one sample count");
+  return out;
+}
+
+}  // namespace tracer

@@ -1,0 +1,38 @@
+// What the speed/accuracy benchmarks share: a timed render and its error against a
+// reference image. RMSE is over all pixels and channels; display RMSE compares values
+// clamped to [0, 1], as a display shows them, so the edges of a visible light (whose noise
+// comes from the film's antialiasing, the same for every estimator) do not swamp it; relMSE
+// is the mean of (x - r)^2 / (r^2 + 0.01) (Rousselle et al. 2011), which weighs dark and
+// bright regions alike.
+#pragma once
+#include <string>
+
+#include "image/image.h"
+#include "scene/scene.h"
+
+namespace tracer {
+
+struct TimedRender {
+  Image image;
+  double seconds = 0;  // the render alone, wall clock, all threads; the median of the repeats
+  uint64_t rays = 0;
+};
+
+struct ImageError {
+  double rmse = 0, display_rmse = 0, rel_mse = 0;
+};
+
+// Renders `repeats` times (the image is the same each time) and keeps the median time.
+TimedRender timed_render(const Scene& scene, int threads, int repeats = 1);
+ImageError image_error(const Image& image, const Image& reference);
+
+// The reference: `ref_file` when given (it must match the size), else the scene rendered
+// at ref_spp samples with a seed no measured render uses, saved to `save_as` for --ref
+// next time. Prints what it used.
+Image reference_image(const std::string& scene_path, RenderOverrides overrides, const std::string& ref_file,
+                      uint32_t ref_spp, int threads, const std::string& save_as);
+
+// "1,4,16" to numbers; InputError naming the option.
+std::vector<uint32_t> parse_spp_list(const std::string& option, const std::string& text);
+
+}  // namespace tracer

@@ -1,0 +1,116 @@
+// `tracer bench converge SCENE --spp 1,4,16,...`: error against time as the sample count
+// grows, for the scene's settings or for NEE+MIS and the plain estimator side by side; a
+// table, a CSV file and a log-log plot of RMSE against seconds.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "bench/bench_common.h"
+#include "cli/commands.h"
+#include "io/input_error.h"
+#include "bench/loglog_plot.h"
+#include "scene/scene_loader.h"
+
+namespace tracer {
+namespace {
+
+struct Point {
+  uint32_t spp;
+  double seconds;
+  ImageError error;
+};
+
+// Seconds the series needs to bring `metric` down to `target`, interpolated in log-log
+// between its points, or extrapolated from its last point along the error ~ 1/sqrt(time)
+// law (`power` 1 for an RMSE, 2 for a mean squared error); `extrapolated` says which.
+double seconds_to_reach(const std::vector<Point>& series, double ImageError::*metric, double power, double target,
+                        bool& extrapolated) {
+  extrapolated = false;
+  for (size_t i = 1; i < series.size(); ++i) {
+    const double a = series[i - 1].error.*metric, b = series[i].error.*metric;
+    if (b <= target && a >= target) {
+      const double f = (std::log(target) - std::log(a)) / (std::log(b) - std::log(a));
+      return std::exp(std::log(series[i - 1].seconds) + f * (std::log(series[i].seconds) - std::log(series[i - 1].seconds)));
+    }
+  }
+  extrapolated = true;
+  const Point& last = series.back();
+  return last.seconds * std::pow(last.error.*metric / target, 2.0 / power);
+}
+
+}  // namespace
+
+int run_bench_converge(const BenchConvergeCommand& cmd) {
+  const std::vector<uint32_t> spps = parse_spp_list("--spp", cmd.spp);
+  if (cmd.nee != "scene" && cmd.nee != "on" && cmd.nee != "off" && cmd.nee != "both")
+    throw InputError("--nee " + cmd.nee + ": expected scene, on, off or both");
+  const std::string stem = std::filesystem::path(cmd.scene).stem().string();
+  const std::string csv = cmd.csv.empty() ? stem + "-converge.csv" : cmd.csv;
+  const std::string plot = cmd.plot.empty() ? stem + "-converge.png" : cmd.plot;
+  RenderOverrides base;
+  if (cmd.width) base.width = cmd.width;
+  if (cmd.height) base.height = cmd.height;
+  if (cmd.nee == "on" || cmd.nee == "both") base.nee = true;
+  if (cmd.nee == "off") base.nee = false;
+  uint32_t max_spp = 0;
+  for (uint32_t s : spps) max_spp = std::max(max_spp, s);
+  const Scene probe = load_scene(cmd.scene, base);
+  if (probe.settings.sampler == SamplerKind::Center && max_spp > 1)
+    base.sampler = "stochastic";  // the center sampler takes one sample only
+  std::printf("tracer bench converge %s: %ux%u, %s\n", cmd.scene.c_str(), probe.settings.width, probe.settings.height,
+              cmd.nee == "both" ? "NEE+MIS and the plain estimator" : "the scene's estimator");
+  const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 8 * max_spp, cmd.threads,
+                                    stem + "-converge-ref.exr");
+
+  std::vector<std::pair<std::string, bool>> series_setups;
+  if (cmd.nee == "both") series_setups = {{"NEE+MIS", true}, {"plain", false}};
+  else series_setups = {{probe.settings.integrator == IntegratorKind::Path ? (probe.settings.nee ? "NEE+MIS" : "plain") : "render", probe.settings.nee != 0}};
+
+  std::ofstream out(csv);
+  if (!out) throw InputError(csv + ": cannot write");
+  out << "series,spp,seconds,rmse,display_rmse,rel_mse\n";
+  std::printf("%-10s %8s %10s %12s %13s %12s\n", "series", "spp", "seconds", "RMSE", "display RMSE", "relMSE");
+  std::vector<std::vector<Point>> results;
+  std::vector<PlotSeries> lines;
+  for (const auto& [label, nee] : series_setups) {
+    RenderOverrides ov = base;
+    if (cmd.nee == "both") ov.nee = nee;
+    results.emplace_back();
+    PlotSeries line{label, {}, {}};
+    for (uint32_t spp : spps) {
+      ov.spp = spp;
+      const TimedRender r = timed_render(load_scene(cmd.scene, ov), cmd.threads);
+      const ImageError e = image_error(r.image, ref);
+      results.back().push_back({spp, r.seconds, e});
+      line.x.push_back(r.seconds);
+      line.y.push_back(e.rmse);
+      std::printf("%-10s %8u %10.3f %12.6g %13.6g %12.6g\n", label.c_str(), spp, r.seconds, e.rmse, e.display_rmse, e.rel_mse);
+      out << label << "," << spp << "," << r.seconds << "," << e.rmse << "," << e.display_rmse << "," << e.rel_mse << "\n";
+    }
+    lines.push_back(line);
+  }
+  out.close();
+  if (!out) throw InputError(csv + ": cannot write");
+  write_loglog_plot(plot, {"RMSE against render time: " + stem, "seconds", "RMSE"}, lines);
+  if (results.size() == 2) {
+    const Point& plain = results[1].back();
+    const struct {
+      const char* name;
+      double ImageError::*metric;
+      double power;
+    } metrics[] = {{"RMSE", &ImageError::rmse, 1}, {"display RMSE", &ImageError::display_rmse, 1}, {"relMSE", &ImageError::rel_mse, 2}};
+    for (const auto& m : metrics) {
+      bool extrapolated = false;
+      const double target = plain.error.*m.metric;
+      const double t = seconds_to_reach(results[0], m.metric, m.power, target, extrapolated);
+      std::printf("NEE+MIS reaches the plain estimator's %s at %u spp (%.6g, %.3f s) in %.3f s%s: %.1fx less time\n",
+                  m.name, plain.spp, target, plain.seconds, t, extrapolated ? " (extrapolated)" : "", plain.seconds / t);
+    }
+  }
+  std::printf("wrote %s and %s\n", std::filesystem::absolute(csv).string().c_str(),
+              std::filesystem::absolute(plot).string().c_str());
+  return 0;
+}
+
+}  // namespace tracer

@@ -1,0 +1,109 @@
+// `tracer bench trade SCENE`: for each knob of the path integrator (NEE, sampler, Fresnel
+// model, Russian roulette depth, max_depth, sky sampling under a cube-map sky, triangle test), the time and the error of a render at a fixed
+// sample budget, and the error of a render given the baseline's time (its spp scaled by
+// the measured speed). Error is against one reference made with the scene's own settings,
+// so a knob that changes the expected image (max_depth, Fresnel) shows its bias too.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "bench/bench_common.h"
+#include "cli/commands.h"
+#include "io/input_error.h"
+#include "scene/scene_loader.h"
+
+namespace tracer {
+namespace {
+
+constexpr int kRepeats = 3;  // each timing is the median of three renders
+
+struct Knob {
+  const char* name;
+  std::string setting;
+  RenderOverrides overrides;
+  bool square_spp;  // the stratified sampler needs n x n samples
+};
+
+uint32_t nearest_square(double spp) {
+  const uint32_t n = std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(std::sqrt(spp))));
+  return n * n;
+}
+
+std::vector<Knob> knobs(bool cubemap_sky) {
+  std::vector<Knob> k;
+  const auto with = [](auto set) {
+    RenderOverrides o;
+    set(o);
+    return o;
+  };
+  k.push_back({"baseline", "scene settings", {}, false});
+  k.push_back({"nee", "on", with([](RenderOverrides& o) { o.nee = true; }), false});
+  k.push_back({"nee", "off", with([](RenderOverrides& o) { o.nee = false; }), false});
+  if (cubemap_sky) {
+    k.push_back({"sky_sampling", "on", with([](RenderOverrides& o) { o.sky_sampling = true; }), false});
+    k.push_back({"sky_sampling", "off", with([](RenderOverrides& o) { o.sky_sampling = false; }), false});
+  }
+  k.push_back({"sampler", "stochastic", with([](RenderOverrides& o) { o.sampler = "stochastic"; }), false});
+  k.push_back({"sampler", "stratified", with([](RenderOverrides& o) { o.sampler = "stratified"; }), true});
+  k.push_back({"fresnel", "schlick", with([](RenderOverrides& o) { o.fresnel = FresnelKind::Schlick; }), false});
+  k.push_back({"fresnel", "exact", with([](RenderOverrides& o) { o.fresnel = FresnelKind::Exact; }), false});
+  k.push_back({"triangle", "watertight", with([](RenderOverrides& o) { o.triangle_test = "watertight"; }), false});
+  k.push_back({"triangle", "moller-trumbore", with([](RenderOverrides& o) { o.triangle_test = "moller-trumbore"; }), false});
+  for (uint32_t d : {1u, 3u, 8u, 65u})
+    k.push_back({"rr_depth", d == 65u ? "off" : std::to_string(d), with([d](RenderOverrides& o) { o.rr_depth = d; }), false});
+  for (uint32_t d : {1u, 2u, 4u, 8u, 16u})
+    k.push_back({"max_depth", std::to_string(d), with([d](RenderOverrides& o) { o.max_depth = d; }), false});
+  return k;
+}
+
+// Applies a knob's overrides on top of the common ones.
+RenderOverrides combine(RenderOverrides base, const RenderOverrides& knob) {
+  if (knob.nee) base.nee = knob.nee;
+  if (knob.sky_sampling) base.sky_sampling = knob.sky_sampling;
+  if (knob.sampler) base.sampler = knob.sampler;
+  if (knob.triangle_test) base.triangle_test = knob.triangle_test;
+  if (knob.fresnel) base.fresnel = knob.fresnel;
+  if (knob.rr_depth) base.rr_depth = knob.rr_depth;
+  if (knob.max_depth) base.max_depth = knob.max_depth;
+  return base;
+}
+
+}  // namespace
+
+int run_bench_trade(const BenchTradeCommand& cmd) {
+  if (cmd.spp == 0) throw InputError("--spp: must be at least 1");
+  RenderOverrides base;
+  if (cmd.width) base.width = cmd.width;
+  if (cmd.height) base.height = cmd.height;
+  const Scene probe = load_scene(cmd.scene, base);
+  if (probe.settings.integrator != IntegratorKind::Path)
+    throw InputError(cmd.scene + ": bench trade measures the path integrator's knobs; give a scene with \"integrator\": \"path\"");
+  if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) base.sampler = "stochastic";
+  std::printf("tracer bench trade %s: %ux%u, %u spp budget; seconds are the median of %d renders\n",
+              cmd.scene.c_str(), probe.settings.width, probe.settings.height, cmd.spp, kRepeats);
+  const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 16 * cmd.spp, cmd.threads,
+                                    std::filesystem::path(cmd.scene).stem().string() + "-trade-ref.exr");
+
+  std::printf("%-12s %-15s | %6s %9s %11s %11s | %14s %9s %11s\n", "knob", "setting", "spp", "seconds", "RMSE", "relMSE",
+              "equal-time spp", "seconds", "RMSE");
+  double baseline_seconds = 0;
+  for (const Knob& knob : knobs(probe.background.kind == BackgroundKind::Cubemap)) {
+    RenderOverrides ov = combine(base, knob.overrides);
+    // the stratified sampler, the knob's or the scene's own, needs n x n samples
+    const bool square = knob.square_spp || (!knob.overrides.sampler && probe.settings.sampler == SamplerKind::Stratified);
+    ov.spp = square ? nearest_square(cmd.spp) : cmd.spp;
+    const TimedRender fixed = timed_render(load_scene(cmd.scene, ov), cmd.threads, kRepeats);
+    const ImageError fixed_error = image_error(fixed.image, ref);
+    if (baseline_seconds == 0) baseline_seconds = fixed.seconds;
+    const double scaled = static_cast<double>(*ov.spp) * baseline_seconds / fixed.seconds;
+    ov.spp = square ? nearest_square(scaled) : std::max<uint32_t>(1, static_cast<uint32_t>(std::lround(scaled)));
+    const TimedRender equal = timed_render(load_scene(cmd.scene, ov), cmd.threads, kRepeats);
+    const ImageError equal_error = image_error(equal.image, ref);
+    std::printf("%-12s %-15s | %6u %9.3f %11.5g %11.5g | %14u %9.3f %11.5g\n", knob.name, knob.setting.c_str(),
+                square ? nearest_square(cmd.spp) : cmd.spp, fixed.seconds, fixed_error.rmse, fixed_error.rel_mse,
+                *ov.spp, equal.seconds, equal_error.rmse);
+  }
+  return 0;
+}
+
+}  // namespace tracer

@@ -1,0 +1,36 @@
+// `tracer bundle SCENE [render options] -o NAME.bundle`: the scene loaded and its
+// acceleration structure built as for `render`, then every array the kernel reads, the
+// view's scalars and the sample range written as one scene bundle (bundle/scene_bundle.h)
+// for the self-contained GPU runner.
+#include <cstdio>
+#include <filesystem>
+
+#include "bundle/scene_bundle.h"
+#include "cli/commands.h"
+#include "io/input_error.h"
+#include "render/partial_file.h"
+#include "scene/scene_loader.h"
+#include "io/text_file.h"
+
+namespace tracer {
+
+int run_bundle(const RenderCommand& cmd) {
+  const std::filesystem::path out(cmd.output);
+  if (out.extension() != ".bundle") throw InputError(cmd.output + ": name the bundle NAME.bundle");
+  const std::filesystem::path dir = out.parent_path().empty() ? "." : out.parent_path();
+  if (!std::filesystem::is_directory(dir)) throw InputError(cmd.output + ": output directory does not exist");
+  if (std::filesystem::exists(out) && std::filesystem::equivalent(out, cmd.scene))
+    throw InputError(cmd.output + ": is the scene file itself");
+  const std::string text = read_text_file(cmd.scene, "scene file");
+  const Scene scene = load_scene_text(text, cmd.scene, scene_overrides(cmd));
+  const uint32_t spp = scene.settings.spp;
+  const SampleRange range = cmd.samples.empty() ? SampleRange{0, spp} : parse_sample_range(cmd.samples, spp);
+  const SceneBundle bundle = make_scene_bundle(scene, scene.view(), range, cmd.scene);
+  const std::string bytes = encode_bundle(encode_scene_bundle(bundle));
+  write_text_atomically(cmd.output, bytes);
+  std::printf("wrote %s (%zu bytes: %ux%u, samples [%u, %u), %zu primitives)\n", cmd.output.c_str(), bytes.size(),
+              scene.settings.width, scene.settings.height, range.begin, range.end, scene.primitives.size());
+  return 0;
+}
+
+}  // namespace tracer

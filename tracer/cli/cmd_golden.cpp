@@ -1,0 +1,99 @@
+// `tracer golden check | update | report | list`: the golden-image workflow (docs/golden.md).
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/commands.h"
+#include "golden/golden_check.h"
+#include "render/device_error.h"
+#include "golden/golden_report.h"
+#include "io/input_error.h"
+
+namespace tracer {
+namespace {
+
+void print_row(const char* name, const char* status, const std::string& differing, const std::string& max_error,
+               const std::string& rms, const std::string& psnr) {
+  std::printf("%-28s %-10s %16s %12s %12s %10s\n", name, status, differing.c_str(), max_error.c_str(), rms.c_str(),
+              psnr.c_str());
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+}  // namespace
+
+int run_golden_check(const GoldenCheckCommand& cmd) {
+  GoldenManifest manifest;
+  manifest.root = cmd.root;
+  manifest.path = manifest_path(cmd.root);
+  GoldenEntry entry;
+  entry.name = cmd.name;
+  entry.scene = "(unknown)";
+  GoldenOutcome outcome;
+  std::optional<GoldenRender> render;
+  try {
+    manifest = read_manifest(cmd.root);
+    entry = manifest.find(cmd.name);
+    if (cmd.device != "cpu" && cmd.device != "cuda") throw InputError("--device " + cmd.device + ": expected cpu or cuda");
+    const GoldenDevice device = cmd.device == "cuda" ? GoldenDevice::Cuda : GoldenDevice::Cpu;
+    render = render_golden(manifest, entry, cmd.threads, device);
+    outcome = judge_golden(manifest, entry, *render);
+  } catch (const DeviceUnavailable& e) {
+    outcome = golden_error(entry, std::string("skipped: ") + e.what(), GoldenStatus::Skipped);
+  } catch (const InputError& e) {
+    outcome = golden_error(entry, e.what());
+  }
+  if (!cmd.report.empty()) write_report_row(cmd.report, manifest, entry, render ? &*render : nullptr, outcome);
+  const char* verdicts[] = {"PASS", "FAIL", "ERROR", "SKIPPED"};
+  const char* verdict = verdicts[static_cast<int>(outcome.status)];
+  std::printf("golden %s: %s: %s\n", cmd.name.c_str(), verdict, outcome.message.c_str());
+  if (outcome.status == GoldenStatus::Skipped) return kExitSkipped;
+  if (outcome.status != GoldenStatus::Pass) {
+    if (!cmd.report.empty())
+      std::printf("report: %s\n", (std::filesystem::absolute(cmd.report) / "index.html").string().c_str());
+    if (outcome.status == GoldenStatus::Fail)
+      std::printf("to accept the new image: %s\n", update_command(manifest, cmd.name).c_str());
+  }
+  return outcome.status == GoldenStatus::Pass ? 0 : outcome.status == GoldenStatus::Fail ? 1 : 2;
+}
+
+int run_golden_update(const UpdateRequest& request) {
+  const std::vector<GoldenChange> changes = update_goldens(request);
+  int changed = 0;
+  print_row("golden", "status", "pixels differing", "max error", "RMS error", "PSNR dB");
+  for (const GoldenChange& c : changes) {
+    if (c.kind == GoldenChangeKind::Unchanged) continue;
+    ++changed;
+    if (c.metrics && c.metrics->same_size)
+      print_row(c.name.c_str(), change_name(c.kind),
+                std::to_string(c.metrics->pixels_not_identical) + "/" + std::to_string(c.metrics->pixels),
+                number(c.metrics->max_error), number(c.metrics->rms_error), number(c.metrics->psnr));
+    else
+      print_row(c.name.c_str(), change_name(c.kind), c.metrics ? "size differs" : "-", "-", "-", "-");
+  }
+  std::printf("%d of %zu matching goldens rewritten, %zu unchanged%s\n", changed, changes.size(),
+              changes.size() - changed, changed ? "; commit golden/ and say why the images changed" : "");
+  return 0;
+}
+
+int run_golden_report(const GoldenReportCommand& cmd) {
+  if (cmd.reset) {
+    reset_report(cmd.report);
+    return 0;
+  }
+  const ReportCounts counts = assemble_report(cmd.report);
+  std::printf("golden report: %s (%d differ, %d could not be checked, %d skipped, %d identical)\n",
+              (std::filesystem::absolute(cmd.report) / "index.html").string().c_str(), counts.failed, counts.errors,
+              counts.skipped, counts.passed);
+  return 0;
+}
+
+int run_golden_list(const std::string& root) {
+  for (const GoldenEntry& e : read_manifest(root).entries) std::printf("%s\n", e.name.c_str());
+  return 0;
+}
+
+}  // namespace tracer

@@ -1,0 +1,214 @@
+// `tracer gpu-pack DIR`: everything a bare GPU machine needs to prove CPU/GPU bit-identity,
+// in one directory well under 64 MiB: a scene bundle per golden with the golden's pixel
+// hash, the kernel-level parity cases with the SHA-1 of the CPU's answers, the
+// self-contained runner (tracer-gpu) and run.sh, which runs them all and prints one table.
+// The directory is assembled beside DIR and renamed into place, so a failure leaves nothing.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "bundle/scene_bundle.h"
+#include "cli/commands.h"
+#include "golden/golden_manifest.h"
+#include "io/input_error.h"
+#include "bench/mesh_generators.h"
+#include "parity/parallel_for.h"
+#include "parity/parity_suite.h"
+#include "scene/scene_loader.h"
+#include "io/text_file.h"
+
+namespace tracer {
+namespace {
+
+namespace fs = std::filesystem;
+using parity::ParityCase;
+using parity::ParityKind;
+
+const char* kRunScript =
+    "#!/bin/sh\n"
+    "# Runs this GPU pack (written by `tracer gpu-pack`): every golden's scene bundle and every\n"
+    "# CPU/GPU parity case on the GPU, or on the CPU with `./run.sh --device cpu`, and prints one\n"
+    "# pass/fail table (exit 0 when every entry matches the CPU bit for bit); then, on the GPU,\n"
+    "# the device, its kernel's registers and occupancy, and the bench tables. docs/cuda.md.\n"
+    "cd \"$(dirname \"$0\")\" || exit 2\n"
+    "./tracer-gpu pack . \"$@\"\n"
+    "status=$?\n"
+    "case \" $* \" in *\" cpu \"*) exit $status ;; esac\n"
+    "./tracer-gpu device && ./tracer-gpu bench . --repeat 20\n"
+    "exit $status\n";
+
+const char* kMathNames[] = {"sin", "cos", "tan", "asin", "acos", "atan2", "exp", "log", "pow"};
+const char* kTraceScenes[] = {"cornell-box", "mesh", "refraction"};
+const char* kAccels[] = {"bvh", "lbvh", "kdtree", "kdtree-median", "grid", "none"};
+
+Scene golden_scene(const GoldenManifest& manifest, const std::string& name, const char* accel) {
+  const GoldenEntry& e = manifest.find(name);
+  RenderOverrides o = e.options.overrides();
+  if (accel) o.accel = accel;
+  return load_scene(manifest.scene_path(e), o);
+}
+
+// The cases of the GoogleTest parity suite (tests/test_cuda_parity.cpp), with the same
+// inputs, plus traversal through every acceleration structure, the LBVH build of 2^20
+// triangles and one whole golden's samples.
+std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
+  std::vector<ParityCase> cases;
+  for (uint32_t f = 0; f < parity::kMathFunctionCount; ++f)
+    cases.push_back({std::string("math-") + kMathNames[f], {ParityKind::Math, f, f, 1u << 20, 0, {}, {}}, {}});
+  cases.push_back({"philox", {ParityKind::Philox, 0, 7, 1u << 21, 0, {}, {}}, {}});
+  cases.push_back({"shapes", {ParityKind::Shapes, 0, 11, 1u << 20, 0, {}, {}}, {}});
+  for (const char* name : kTraceScenes) {
+    const Scene bvh = golden_scene(manifest, name, "bvh");
+    const BvhNode& root = bvh.bvh_nodes.at(0);  // ray origins fill the scene's bounds
+    for (const char* accel : kAccels) {
+      const Scene scene = std::string(accel) == "bvh" ? bvh : golden_scene(manifest, name, accel);
+      const std::string label = std::string("trace-") + name + "-" + accel;
+      cases.push_back({label, {ParityKind::Trace, 0, 13, 1u << 18, 0, root.lo, root.hi},
+                       make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, label)});
+    }
+  }
+  cases.push_back({"lbvh-build-1m", {ParityKind::Lbvh, 0, 17, 1u << 20, 0, {}, {}}, {}});
+  const Scene sample = golden_scene(manifest, "cornell-box", nullptr);
+  cases.push_back({"sample-cornell-box", {ParityKind::Sample, 0, 0, 0, 0, {}, {}},
+                   make_scene_bundle(sample, sample.view(), {0, sample.settings.spp}, "sample-cornell-box")});
+  return cases;
+}
+
+// The scenes of `tracer bench device` as bundles (Whitted, 720x480 unless the row says):
+// the Cornell box per sampler, per effect and per resolution, and a generated 100k-triangle
+// mesh. bench.tsv rows: "TABLE LABEL FILE"; `tracer-gpu bench` times them.
+std::string write_bench(const fs::path& root, const fs::path& out) {
+  struct Sampler { const char* label; const char* sampler; uint32_t spp; };
+  const Sampler samplers[] = {{"1spp-center", "center", 1}, {"2spp-stochastic", "stochastic", 2}, {"4spp-grid", "grid", 4}};
+  fs::create_directories(out / "bench");
+  std::string list = "# table label file: `tracer-gpu bench DIR` times every row\n";
+  const auto add = [&](const std::string& table, const std::string& label, const std::string& scene_path,
+                       uint32_t width, uint32_t height, const Sampler& s, uint32_t effects) {
+    RenderOverrides o;
+    o.width = width, o.height = height, o.sampler = s.sampler, o.spp = s.spp, o.effects = effects, o.integrator = "whitted";
+    const Scene scene = load_scene(scene_path, o);
+    const std::string file = "bench/" + table + "-" + label + ".bundle";
+    write_bundle((out / file).string(),
+                 encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, label)));
+    list += table + " " + label + " " + file + "\n";
+  };
+  const std::string cornell = (root / "scenes/cornell-box.json").string();
+  for (const Sampler& s : {samplers[0], samplers[2]}) add("main", std::string("cornell-box-") + s.label, cornell, 720, 480, s, kEffectAll);
+  const std::pair<const char*, uint32_t> effects[] = {{"none", 0u},
+                                                      {"shadows", kEffectShadows},
+                                                      {"reflections", kEffectReflection},
+                                                      {"refractions", kEffectRefraction},
+                                                      {"all", kEffectAll}};
+  for (const auto& [name, mask] : effects)
+    for (const Sampler& s : samplers) add("effects", std::string(name) + "-" + s.label, cornell, 720, 480, s, mask);
+  const uint32_t sizes[][2] = {{640, 480}, {1280, 720}, {1920, 1080}};
+  for (const auto& size : sizes)
+    for (const Sampler& s : samplers)
+      add("resolution", std::to_string(size[0]) + "x" + std::to_string(size[1]) + "-" + s.label, cornell, size[0],
+          size[1], s, kEffectAll);
+
+  const fs::path temp = fs::temp_directory_path() / ("tracer-gpu-pack-mesh-" + std::to_string(::getpid()));
+  fs::create_directories(temp);
+  try {
+    const std::vector<MeshTriangle> mesh = generate_mesh("sphere", 100000);
+    write_obj(mesh, (temp / "sphere-100k.obj").string());
+    write_text_atomically((temp / "sphere-100k.json").string(), R"({
+  "format": "tracer-scene/1",
+  "camera": { "from": [0, 0.6, 4], "to": [0, 0, 0], "vfov": 40 },
+  "film": { "width": 720, "height": 480 },
+  "render": { "integrator": "whitted", "spp": 1, "sampler": "center", "max_depth": 8 },
+  "ambient": [0.05, 0.05, 0.05],
+  "materials": {
+    "clay": { "type": "phong", "diffuse": [0.8, 0.5, 0.3], "specular": [0.5, 0.5, 0.5], "shininess": 40 },
+    "floor": { "type": "lambert", "albedo": [0.7, 0.7, 0.7] }
+  },
+  "lights": [ { "type": "point", "position": [-2, 4, 3], "intensity": [25, 25, 25] } ],
+  "shapes": [
+    { "type": "quad", "corner": [-4, -1.5, 3], "u": [8, 0, 0], "v": [0, 0, -8], "material": "floor" },
+    { "type": "mesh", "file": "sphere-100k.obj", "material": "clay" }
+  ]
+}
+)");
+    for (const Sampler& s : {samplers[0], samplers[2]})
+      add("mesh", "sphere-" + std::to_string(mesh.size()) + "tri-" + s.label, (temp / "sphere-100k.json").string(), 720,
+          480, s, kEffectAll);
+  } catch (...) {
+    fs::remove_all(temp);
+    throw;
+  }
+  fs::remove_all(temp);
+  return list;
+}
+
+std::string runner_beside_this_binary() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? "tracer-gpu" : (self.parent_path() / "tracer-gpu").string();
+}
+
+uint64_t directory_bytes(const fs::path& dir) {
+  uint64_t bytes = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.is_regular_file()) bytes += entry.file_size();
+  return bytes;
+}
+
+void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::path& out) {
+  const GoldenManifest manifest = read_manifest(cmd.root);
+  fs::create_directories(out / "bundles");
+  fs::create_directories(out / "parity");
+  std::string list = "# kind name file expected: the golden's pixel hash, or - (the parity case holds its own)\n";
+  for (const GoldenEntry& e : manifest.entries) {
+    const Scene scene = load_scene(manifest.scene_path(e), e.options.overrides());
+    const std::string file = "bundles/" + e.name + ".bundle";
+    write_bundle((out / file).string(),
+                 encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, e.scene)));
+    list += "golden " + e.name + " " + file + " " + e.hash + "\n";
+  }
+  const unsigned threads = cmd.threads > 0 ? static_cast<unsigned>(cmd.threads) : default_thread_count();
+  for (const ParityCase& c : parity_cases(manifest)) {
+    const parity::ParityAnswers cpu = parity::evaluate_parity_case(c, false, threads);
+    const std::string file = "parity/" + c.name + ".case";
+    write_bundle((out / file).string(), parity::encode_parity_case(c, cpu));
+    list += "parity " + c.name + " " + file + " -\n";
+    std::fprintf(stderr, "parity case %s: %zu inputs\n", c.name.c_str(), cpu.inputs);
+  }
+  fs::copy_file(runner, out / "tracer-gpu");
+  fs::permissions(out / "tracer-gpu", fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                          fs::perms::others_read | fs::perms::others_exec);
+  write_text_atomically((out / "run.sh").string(), kRunScript);
+  fs::permissions(out / "run.sh", fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
+                  fs::perm_options::add);
+  write_text_atomically((out / "pack.tsv").string(), list);
+  write_text_atomically((out / "bench.tsv").string(), write_bench(cmd.root, out));
+}
+
+}  // namespace
+
+int run_gpu_pack(const GpuPackCommand& cmd) {
+  const fs::path dir(cmd.dir);
+  if (fs::exists(dir) && !(fs::is_directory(dir) && fs::is_empty(dir)))
+    throw InputError(cmd.dir + ": exists and is not an empty directory; gpu-pack writes a new one");
+  const fs::path parent = dir.parent_path().empty() ? "." : dir.parent_path();
+  if (!fs::is_directory(parent)) throw InputError(cmd.dir + ": parent directory does not exist");
+  const std::string runner = cmd.runner.empty() ? runner_beside_this_binary() : cmd.runner;
+  if (!fs::is_regular_file(runner))
+    throw InputError(runner + ": no tracer-gpu runner there (build it: cmake --build build --target tracer-gpu)");
+
+  const fs::path temp = parent / (dir.filename().string() + ".partial-" + std::to_string(::getpid()));
+  fs::remove_all(temp);
+  try {
+    write_pack(cmd, runner, temp);
+    fs::rename(temp, dir);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(temp, ec);
+    throw;
+  }
+  std::printf("wrote %s (%.1f MiB). Run it on a GPU machine: %s/run.sh\n", cmd.dir.c_str(),
+              static_cast<double>(directory_bytes(dir)) / (1 << 20), cmd.dir.c_str());
+  return 0;
+}
+
+}  // namespace tracer

@@ -1,0 +1,74 @@
+// `tracer merge PARTS... -o OUT`: adds the film sums of partial renders of one scene into the
+// image of all its samples, identical bit for bit to rendering them at once.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "cli/commands.h"
+#include "image/image_io.h"
+#include "io/input_error.h"
+#include "render/partial_file.h"
+
+namespace tracer {
+
+int run_merge(const MergeCommand& cmd) {
+  std::filesystem::path out(cmd.output);
+  const std::filesystem::path dir = out.parent_path().empty() ? "." : out.parent_path();
+  if (!std::filesystem::is_directory(dir)) throw InputError(cmd.output + ": output directory does not exist");
+  std::vector<std::pair<std::string, Partial>> parts;
+  for (const std::string& path : cmd.parts) parts.emplace_back(path, read_partial(path));
+
+  const auto& [first_path, first] = parts.front();
+  for (const auto& [path, p] : parts) {
+    const auto differs = [&](const std::string& what) {
+      return InputError(path + ": not a part of the same render as " + first_path + ": " + what + " differ");
+    };
+    if (p.header.scene_sha1 != first.header.scene_sha1) throw differs("the scene files' contents");
+    if (p.header.render != first.header.render)
+      throw differs("the render options (" + p.header.render.dump() + " against " + first.header.render.dump() + ")");
+    if (p.header.spp != first.header.spp || p.film.width != first.film.width || p.film.height != first.film.height)
+      throw differs("spp or image size");
+  }
+  std::sort(parts.begin(), parts.end(),
+            [](const auto& a, const auto& b) { return a.second.film.range.begin < b.second.film.range.begin; });
+  uint32_t next = 0;
+  for (const auto& [path, p] : parts) {
+    const SampleRange r = p.film.range;
+    if (r.begin < next)
+      throw InputError(path + ": samples [" + std::to_string(r.begin) + ", " + std::to_string(r.end) +
+                       ") overlap samples another part already holds (up to " + std::to_string(next) + ")");
+    if (r.begin > next)
+      throw InputError(cmd.parts.front() + "...: no part holds samples [" + std::to_string(next) + ", " +
+                       std::to_string(r.begin) + ")");
+    next = r.end;
+  }
+  const uint32_t spp = first.header.spp;
+  if (next != spp)
+    throw InputError(cmd.parts.front() + "...: no part holds samples [" + std::to_string(next) + ", " + std::to_string(spp) + ")");
+
+  FilmBuffer total = parts.front().second.film;
+  total.range = {0, spp};
+  uint64_t nonfinite = 0, overflow = 0;
+  for (size_t k = 1; k < parts.size(); ++k) {
+    const FilmBuffer& f = parts[k].second.film;
+    for (size_t i = 0; i < total.pixels.size(); ++i) {
+      FilmSum& s = total.pixels[i];
+      for (int c = 0; c < 3; ++c) {
+        s.rgb[c] += f.pixels[i].rgb[c];  // each part below 2^62 in magnitude: no int64 overflow for two
+        if (s.rgb[c] > kFilmSumLimit || s.rgb[c] < -kFilmSumLimit)
+          throw InputError(parts[k].first + ": pixel " + std::to_string(i) +
+                           " overflows the film when the parts are added; render fewer, brighter-clamped samples");
+      }
+      s.nonfinite += f.pixels[i].nonfinite;
+      s.overflow += f.pixels[i].overflow;
+    }
+  }
+  for (const FilmSum& s : total.pixels) nonfinite += s.nonfinite, overflow += s.overflow;
+  write_image(resolve_film(total, spp), cmd.output);
+  std::printf("merged %zu parts, samples [0, %u), %llu NaN/inf samples, %llu overflowing samples: wrote %s\n", parts.size(),
+              spp, static_cast<unsigned long long>(nonfinite), static_cast<unsigned long long>(overflow),
+              std::filesystem::absolute(cmd.output).string().c_str());
+  return 0;
+}
+
+}  // namespace tracer

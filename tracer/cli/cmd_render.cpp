@@ -1,0 +1,179 @@
+#include <OpenImageIO/hash.h>
+#include <OpenImageIO/imageio.h>
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.h"
+#include "render/effects.h"
+#include "image/image_io.h"
+#include "io/input_error.h"
+#include "render/partial_file.h"
+#include "render/progress.h"
+#include "render/render_options.h"
+#include "render/render_cpu.h"
+#include "render/render_cuda.h"
+#include "scene/scene_loader.h"
+#include "io/text_file.h"
+
+namespace tracer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Fail before rendering when the output could not be written anyway. A sample range
+// writes a partial file, anything else an image.
+void check_output_path(const std::string& path, bool partial) {
+  const std::filesystem::path p(path);
+  const std::filesystem::path dir = p.parent_path().empty() ? "." : p.parent_path();
+  if (!std::filesystem::is_directory(dir)) throw InputError(path + ": output directory does not exist");
+  if (partial) {
+    if (p.extension() != ".partial") throw InputError(path + ": --samples writes a partial file; name it NAME.partial");
+    return;
+  }
+  if (p.extension().empty()) throw InputError(path + ": output needs a file extension (.exr, .png, ...)");
+  if (p.extension() == ".partial") throw InputError(path + ": a .partial file holds a sample range; give --samples A:B");
+  if (!OIIO::ImageOutput::create(path)) throw InputError(path + ": no image writer for extension " + p.extension().string());
+}
+
+// What makes two partial files parts of one render: every resolved option and the effects.
+Json render_identity(const Scene& scene) {
+  Json j = Json::parse(resolved_options(scene).to_json().dump());
+  j["effects"] = scene.settings.effects;
+  return j;
+}
+
+}  // namespace
+
+RenderOverrides scene_overrides(const RenderCommand& cmd) {
+  RenderOverrides overrides = cmd.overrides;
+  if (!cmd.effects.empty()) overrides.effects = parse_effects(cmd.effects);
+  if (!cmd.nee.empty()) overrides.nee = cmd.nee == "on";
+  if (!cmd.sky_sampling.empty()) overrides.sky_sampling = cmd.sky_sampling == "on";
+  return overrides;
+}
+
+int run_render(const RenderCommand& cmd) {
+  if (cmd.device != "cpu" && cmd.device != "cuda")
+    throw InputError("--device " + cmd.device + ": expected cpu or cuda");
+  const std::string output =
+      cmd.output.empty() ? std::filesystem::path(cmd.scene).stem().string() + ".png" : cmd.output;
+  const bool partial = !cmd.samples.empty();
+  check_output_path(output, partial);
+  if (!cmd.stats.empty() && std::filesystem::path(cmd.stats).has_parent_path() &&
+      !std::filesystem::is_directory(std::filesystem::path(cmd.stats).parent_path()))
+    throw InputError(cmd.stats + ": stats directory does not exist");
+
+  if (cmd.device == "cuda") cuda_device_description();  // fail before loading when there is no GPU
+  const auto t_load = Clock::now();
+  const RenderOverrides overrides = scene_overrides(cmd);
+  const std::string scene_text = read_text_file(cmd.scene, "scene file");
+  const Scene scene = load_scene_text(scene_text, cmd.scene, overrides);  // loading includes the BVH build
+  const double load_build_s = seconds_since(t_load);
+  const double build_s = scene.build_seconds;
+
+  const RenderSettings& rs = scene.settings;
+  const SampleRange range = partial ? parse_sample_range(cmd.samples, rs.spp) : SampleRange{0, rs.spp};
+  RenderStats stats;
+  CudaRunInfo cuda;
+  Partial part;
+  const auto t_render = Clock::now();
+  if (cmd.device == "cuda") {
+    part.film = render_cuda_film(scene, range, stats, cuda);  // one launch: no progress to draw
+  } else {
+    const uint64_t tiles = ((rs.width + 15) / 16) * static_cast<uint64_t>((rs.height + 15) / 16);
+    ProgressBar bar(tiles, !cmd.quiet);
+    part.film = render_cpu_film(scene, range, cmd.threads, stats, [&](uint64_t done, uint64_t) { bar.update(done); });
+    bar.finish();
+  }
+  const double render_s = seconds_since(t_render);
+  if (partial) {
+    part.header = {render_identity(scene), cmd.scene, OIIO::SHA1::digest(scene_text.data(), scene_text.size()), rs.spp,
+                   stats.nonfinite_samples, stats.overflow_samples};
+    write_partial(output, part);
+  } else {
+    write_image(resolve_film(part.film, rs.spp), output);
+  }
+
+  const uint64_t rays = stats.rays.camera + stats.rays.secondary + stats.rays.shadow;
+  const double mrays = render_s > 0.0 ? static_cast<double>(rays) / render_s / 1e6 : 0.0;
+  if (!cmd.stats.empty()) {
+    nlohmann::ordered_json j;
+    j["scene"] = cmd.scene;
+    j["output"] = output;
+    j["width"] = rs.width;
+    j["height"] = rs.height;
+    j["spp"] = rs.spp;
+    j["samples"] = {range.begin, range.end};
+    j["device"] = cmd.device == "cuda" ? cuda.device : "cpu";
+    if (cmd.device == "cuda") {
+      j["device_bytes"] = cuda.device_bytes;
+      j["cuda_seconds"] = {{"upload", cuda.upload_seconds}, {"kernel", cuda.kernel_seconds}, {"download", cuda.download_seconds}};
+    } else {
+      j["threads"] = cmd.threads > 0 ? cmd.threads : omp_get_max_threads();
+    }
+    j["seconds"] = {{"load", load_build_s - build_s}, {"build", build_s}, {"render", render_s}};
+    j["rays"] = {{"camera", stats.rays.camera}, {"shadow", stats.rays.shadow},
+                 {"secondary", stats.rays.secondary}, {"total", rays}};
+    j["mrays_per_second"] = mrays;
+    j["nonfinite_samples"] = stats.nonfinite_samples;
+    j["overflow_samples"] = stats.overflow_samples;
+    j["degenerate_triangles"] = scene.degenerate_triangles;
+    j["accel"] = {{"kind", rs.accel == AccelKind::Bvh ? "bvh" : "none"}, {"nodes", scene.bvh_nodes.size()}};
+    j["features"] = feature_names(scene.features);
+    write_text_atomically(cmd.stats, j.dump(2) + "\n");
+  }
+  if (!cmd.quiet && cmd.device == "cuda")
+    std::fprintf(stderr, "%s: kernel %.6f s, upload %.3f s, download %.3f s\n", cuda.device.c_str(),
+                 cuda.kernel_seconds, cuda.upload_seconds, cuda.download_seconds);
+  if (!cmd.quiet)
+    std::fprintf(stderr, "%ux%u, %u spp, %.3f s, %.2fM rays, %.2f Mrays/s, %llu NaN/inf samples\n", rs.width,
+                 rs.height, rs.spp, render_s, static_cast<double>(rays) / 1e6, mrays,
+                 static_cast<unsigned long long>(stats.nonfinite_samples));
+  if (!cmd.quiet && scene.degenerate_triangles > 0)
+    std::fprintf(stderr, "note: %u mesh triangles of zero area were left out (they have no normal)\n",
+                 scene.degenerate_triangles);
+  if (stats.overflow_samples > 0)
+    std::fprintf(stderr,
+                 "warning: %llu samples were left out (film overflow): a sample of 2^30 or more, or a pixel's sum "
+                 "over its samples reaching 2^30 (lower spp x radiance)\n",
+                 static_cast<unsigned long long>(stats.overflow_samples));
+  std::printf("wrote %s\n", std::filesystem::absolute(output).string().c_str());
+  return 0;
+}
+
+int run_info(const std::string& scene_path) {
+  const auto t = Clock::now();
+  const Scene scene = load_scene(scene_path);
+  const double seconds = seconds_since(t);
+  std::printf("scene      %s\n", scene_path.c_str());
+  std::printf("shapes    ");
+  for (const auto& [type, count] : scene.shape_counts) std::printf(" %s: %u", type.c_str(), count);
+  uint32_t by_kind[4] = {};
+  for (const Primitive& p : scene.primitives) ++by_kind[static_cast<int>(p.kind)];
+  std::printf("\nprimitives %zu (spheres %u, planes %u, triangles %u, quads %u)\n", scene.primitives.size(),
+              by_kind[0], by_kind[1], by_kind[2], by_kind[3]);
+  if (scene.degenerate_triangles > 0) std::printf("left out   %u mesh triangles of zero area\n", scene.degenerate_triangles);
+  std::printf("materials  %zu, point lights %zu\n", scene.materials.size(), scene.lights.size());
+  std::printf("features  ");
+  for (const std::string& f : feature_names(scene.features)) std::printf(" %s", f.c_str());
+  std::printf("\naccel      %s: %zu nodes over %zu bounded primitives, %zu unbounded; load and build %.3f s\n",
+              scene.settings.accel == AccelKind::Bvh ? "bvh" : "none", scene.bvh_nodes.size(),
+              scene.bounded.size(), scene.unbounded.size(), seconds);
+  return 0;
+}
+
+int run_compare(const CompareCommand& cmd) {
+  const Image a = read_image(cmd.a), b = read_image(cmd.b);
+  const CompareResult r = compare_images(a, b, cmd.options);
+  if (!cmd.diff.empty() && r.same_size) write_image(difference_image(a, b), cmd.diff);
+  const char* verdict = r.verdict == Verdict::Pass ? "PASS" : r.verdict == Verdict::Warn ? "WARNING" : "FAIL";
+  std::printf("%s: %s\n", verdict, describe(r).c_str());
+  return r.verdict == Verdict::Fail ? 1 : 0;
+}
+
+}  // namespace tracer

@@ -1,0 +1,46 @@
+// golden/manifest.json: the list of golden images (docs/golden.md). Each entry names a
+// scene file (relative to the source root, the parent of golden/), the render options
+// that override the scene's own, the pixel hash of its reference image golden/NAME.exr,
+// and how it is compared: exactly (the default) or, where the entry says why, within a
+// metric tolerance.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/json_reader.h"
+#include "render/render_options.h"
+#include "scene/scene.h"
+
+namespace tracer {
+
+// idiff-style thresholds (compare.h) and the reason a golden cannot be exact.
+struct GoldenTolerance {
+  float fail = 0.0f;
+  float failpercent = 0.0f;
+  std::string why;
+};
+
+struct GoldenEntry {
+  std::string name;                          // [a-z0-9-]+: the test and the file name
+  std::string scene;                         // relative to the source root
+  RenderOptions options;
+  std::string hash;                          // pixel_hash of the reference; empty for a new entry
+  std::optional<GoldenTolerance> tolerance;  // nullopt: exact
+};
+
+struct GoldenManifest {
+  std::string path;  // ROOT/golden/manifest.json
+  std::string root;  // the source root
+  std::vector<GoldenEntry> entries;  // sorted by name
+
+  std::string image_path(const GoldenEntry& e) const;  // ROOT/golden/NAME.exr
+  std::string scene_path(const GoldenEntry& e) const;  // ROOT/SCENE
+  const GoldenEntry& find(const std::string& name) const;  // InputError when absent
+};
+
+std::string manifest_path(const std::string& root);
+GoldenManifest read_manifest(const std::string& root);  // InputError naming file and key
+void write_manifest(const GoldenManifest& manifest);     // atomically, in a stable layout
+
+}  // namespace tracer

@@ -1,0 +1,244 @@
+#include "golden/golden_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "image/image_io.h"
+#include "io/input_error.h"
+#include "scene/json_reader.h"
+#include "golden/shell.h"
+#include "io/text_file.h"
+
+namespace fs = std::filesystem;
+
+namespace tracer {
+namespace {
+
+std::string status_name(GoldenStatus s) {
+  switch (s) {
+    case GoldenStatus::Pass: return "pass";
+    case GoldenStatus::Fail: return "fail";
+    case GoldenStatus::Error: return "error";
+    case GoldenStatus::Skipped: return "skipped";
+  }
+  return "error";
+}
+
+std::string html_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string options_summary(const RenderOptions& o) {
+  std::ostringstream s;
+  s << o.integrator.value_or("?") << ", " << o.spp.value_or(0) << " spp " << o.sampler.value_or("?") << ", seed "
+    << o.seed.value_or(0) << ", " << o.width.value_or(0) << "x" << o.height.value_or(0) << ", "
+    << o.accel.value_or("?") << ", max_depth " << o.max_depth.value_or(0);
+  return s.str();
+}
+
+std::string format_scale(double scale) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", scale);
+  return buf;
+}
+
+std::string metric_cell(const Json& row) {
+  const Json& m = row["metrics"];
+  if (m.is_null()) return "";
+  std::ostringstream s;
+  s << "<table class=\"metrics\">"
+    << "<tr><th>pixels not bit-identical</th><td>" << m["not_identical"].get<uint64_t>() << " of "
+    << m["pixels"].get<uint64_t>() << "</td></tr>"
+    << "<tr><th>max error</th><td>" << m["max_error"].get<double>() << " at (" << m["max_x"].get<int>() << ", "
+    << m["max_y"].get<int>() << ")</td></tr>"
+    << "<tr><th>mean error</th><td>" << m["mean_error"].get<double>() << "</td></tr>"
+    << "<tr><th>RMS error</th><td>" << m["rms_error"].get<double>() << "</td></tr>"
+    << "<tr><th>PSNR</th><td>" << m["psnr"].get<double>() << " dB</td></tr>"
+    << "<tr><th>NaN/inf</th><td>" << row["nonfinite"].get<uint64_t>() << "</td></tr></table>";
+  return s.str();
+}
+
+std::string image_cell(const Json& row, const char* key, const std::string& caption) {
+  const Json& images = row["images"];
+  if (!images.contains(key)) return "<td class=\"image missing\">no " + caption + "</td>";
+  const std::string src = html_escape(images[key].get<std::string>());
+  return "<td class=\"image\"><a href=\"" + src + "\"><img src=\"" + src + "\" alt=\"" + caption + "\"></a><div>" +
+         caption + "</div></td>";
+}
+
+std::string row_html(const Json& row) {
+  const std::string status = row["status"].get<std::string>();
+  std::ostringstream s;
+  s << "<tr class=\"" << status << "\" id=\"" << html_escape(row["name"].get<std::string>()) << "\">"
+    << "<td class=\"name\"><b>" << html_escape(row["name"].get<std::string>()) << "</b><br><span class=\"badge\">"
+    << status << "</span><br><small>" << html_escape(row["scene"].get<std::string>()) << "<br>"
+    << html_escape(row["options"].get<std::string>()) << "</small></td>";
+  if (status == "pass" || status == "skipped") {
+    s << "<td colspan=\"4\" class=\"message\">" << html_escape(row["message"].get<std::string>());
+    if (status == "pass") s << " in " << row["seconds"].get<double>() << " s";
+    s << "</td>";
+  } else {
+    const double scale = row["amplification"].get<double>();
+    s << image_cell(row, "new", "new") << image_cell(row, "reference", "reference")
+      << image_cell(row, "difference", scale > 0 ? "difference &times; " + format_scale(scale) : "difference")
+      << "<td class=\"message\"><p>" << html_escape(row["message"].get<std::string>()) << "</p>" << metric_cell(row);
+    if (status == "fail")
+      s << "<p>To accept the new image as the golden:</p><pre><code>" << html_escape(row["update"].get<std::string>())
+        << "</code></pre>";
+    s << "</td>";
+  }
+  s << "</tr>\n";
+  return s.str();
+}
+
+constexpr const char* kStyle = R"(body{font-family:sans-serif;margin:1.5em;background:#fafafa;color:#222}
+table.report{border-collapse:collapse;width:100%}
+table.report>tbody>tr>td{border-top:1px solid #ccc;padding:.5em;vertical-align:top}
+tr.fail .badge,tr.error .badge{background:#c62828;color:#fff}tr.pass .badge{background:#2e7d32;color:#fff}
+tr.skipped .badge{background:#757575;color:#fff}
+.badge{padding:0 .4em;border-radius:.3em;text-transform:uppercase;font-size:.8em}
+td.image img{width:256px;image-rendering:pixelated;border:1px solid #999;background:#000}
+td.image div{font-size:.8em;color:#555}td.message{font-size:.9em}
+table.metrics th{text-align:left;font-weight:normal;color:#555;padding-right:1em}
+pre{background:#eee;padding:.4em;white-space:pre-wrap;word-break:break-all}
+#broken{color:#c62828;font-weight:bold})";
+
+// Marks the page with the number of images that failed to load, for people and for the
+// headless-browser test that opens the report.
+constexpr const char* kScript = R"(<script>
+window.addEventListener('load', function () {
+  var broken = Array.prototype.filter.call(document.images, function (i) { return !i.complete || i.naturalWidth === 0; });
+  document.body.setAttribute('data-broken-images', String(broken.length));
+  if (broken.length) { var p = document.getElementById('broken'); p.hidden = false; p.textContent = broken.length + ' image(s) failed to load'; }
+});
+</script>)";
+
+}  // namespace
+
+float amplified_difference(const Image& fresh, const Image& reference, Image& out) {
+  out = fresh;
+  float largest = 0.0f;
+  for (size_t i = 0; i < fresh.rgb.size(); ++i) {
+    const float d = std::abs(fresh.rgb[i] - reference.rgb[i]);
+    if (std::isfinite(d)) largest = std::max(largest, d);
+  }
+  const float scale = largest > 0.0f ? 1.0f / largest : 0.0f;
+  for (size_t p = 0; p < fresh.rgb.size(); p += 3) {
+    bool nonfinite = false;
+    for (int c = 0; c < 3; ++c) nonfinite |= !std::isfinite(fresh.rgb[p + c]);
+    for (int c = 0; c < 3; ++c)
+      out.rgb[p + c] = nonfinite ? (c == 1 ? 0.0f : 1.0f) : std::abs(fresh.rgb[p + c] - reference.rgb[p + c]) * scale;
+  }
+  return scale;
+}
+
+std::string update_command(const GoldenManifest& manifest, const std::string& name) {
+  std::error_code ec;
+  const fs::path binary = fs::read_symlink("/proc/self/exe", ec);
+  return "cd " + shell_quote(fs::weakly_canonical(fs::absolute(manifest.root)).string()) + " && " +
+         shell_quote(ec ? "tracer" : binary.string()) + " golden update --filter " + shell_quote("^" + name + "$");
+}
+
+void write_report_row(const std::string& report_dir, const GoldenManifest& manifest, const GoldenEntry& entry,
+                      const GoldenRender* render, const GoldenOutcome& outcome) {
+  const fs::path dir(report_dir);
+  fs::create_directories(dir / "rows");
+  Json row;
+  row["name"] = entry.name;
+  row["status"] = status_name(outcome.status);
+  row["message"] = outcome.message;
+  row["scene"] = entry.scene;
+  row["options"] = options_summary(entry.options);
+  row["seconds"] = render ? render->seconds : 0.0;
+  row["nonfinite"] = outcome.nonfinite_values;
+  row["update"] = update_command(manifest, entry.name);
+  row["images"] = Json::object();
+  row["amplification"] = 0.0;
+  row["metrics"] = nullptr;
+  if (outcome.metrics && outcome.metrics->same_size) {
+    const CompareResult& m = *outcome.metrics;
+    row["metrics"] = {{"pixels", m.pixels},       {"not_identical", m.pixels_not_identical},
+                      {"max_error", m.max_error}, {"max_x", m.max_x},
+                      {"max_y", m.max_y},         {"mean_error", m.mean_error},
+                      {"rms_error", m.rms_error}, {"psnr", m.psnr}};
+  }
+  if (outcome.status == GoldenStatus::Fail || outcome.status == GoldenStatus::Error) {
+    const fs::path images = dir / entry.name;
+    fs::create_directories(images);
+    if (render) {
+      write_image(render->image, (images / "new.exr").string());
+      write_image(render->image, (images / "new.png").string());
+      row["images"]["new"] = entry.name + "/new.png";
+      row["images"]["new_exr"] = entry.name + "/new.exr";
+    }
+    if (outcome.reference) {
+      write_image(*outcome.reference, (images / "reference.png").string());
+      row["images"]["reference"] = entry.name + "/reference.png";
+    }
+    if (render && outcome.reference && outcome.metrics && outcome.metrics->same_size) {
+      Image diff;
+      row["amplification"] = amplified_difference(render->image, *outcome.reference, diff);
+      write_image(diff, (images / "difference.png").string());
+      row["images"]["difference"] = entry.name + "/difference.png";
+    }
+  }
+  write_text_atomically((dir / "rows" / (entry.name + ".json")).string(), row.dump(2) + "\n");
+}
+
+void reset_report(const std::string& report_dir) {
+  std::error_code ec;
+  fs::remove_all(report_dir, ec);
+  if (ec) throw InputError(report_dir + ": cannot clear the golden report: " + ec.message());
+  fs::create_directories(fs::path(report_dir) / "rows");
+}
+
+ReportCounts assemble_report(const std::string& report_dir) {
+  const fs::path dir(report_dir);
+  std::vector<Json> rows;
+  if (fs::is_directory(dir / "rows"))
+    for (const auto& file : fs::directory_iterator(dir / "rows")) {
+      if (file.path().extension() != ".json") continue;
+      rows.push_back(parse_json_text(read_text_file(file.path().string(), "report row"), file.path().string()));
+    }
+  // Failing rows first (errors, then differences), then skipped, then passes; by name within each.
+  const auto rank = [](const Json& r) {
+    const std::string s = r["status"].get<std::string>();
+    return s == "error" ? 0 : s == "fail" ? 1 : s == "skipped" ? 2 : 3;
+  };
+  std::sort(rows.begin(), rows.end(), [&](const Json& a, const Json& b) {
+    return std::pair(rank(a), a["name"].get<std::string>()) < std::pair(rank(b), b["name"].get<std::string>());
+  });
+  ReportCounts counts;
+  std::string body;
+  for (const Json& r : rows) {
+    const int k = rank(r);
+    (k == 0 ? counts.errors : k == 1 ? counts.failed : k == 2 ? counts.skipped : counts.passed) += 1;
+    body += row_html(r);
+  }
+  std::ostringstream html;
+  html << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>tracer golden report</title><style>"
+       << kStyle << "</style></head>\n<body data-broken-images=\"unknown\">\n<h1>Golden images: " << counts.failed
+       << " differ, " << counts.errors << " could not be checked, " << counts.skipped << " skipped, " << counts.passed
+       << " identical</h1>\n"
+       << "<p id=\"broken\" hidden></p>\n"
+       << (rows.empty() ? "<p>No golden was checked in this run.</p>\n" : "")
+       << "<table class=\"report\"><tbody>\n" << body << "</tbody></table>\n" << kScript << "\n</body></html>\n";
+  fs::create_directories(dir);
+  write_text_atomically((dir / "index.html").string(), html.str());
+  return counts;
+}
+
+}  // namespace tracer

@@ -1,0 +1,35 @@
+// A partial render: `tracer render SCENE --samples A:B -o NAME.partial` stores the
+// fixed-point film sums of samples [A, B) of every pixel, and `tracer merge` adds the parts
+// of one render into the image of all its samples, identical bit for bit to rendering them
+// at once (kernel/film.h). The file: the line "tracer-partial/1", one line of JSON (the
+// render's identity and the range), then width x height film sums, each three int64 and
+// two uint32, little-endian.
+#pragma once
+#include <string>
+
+#include "render/film_buffer.h"
+#include "scene/json_reader.h"
+
+namespace tracer {
+
+struct PartialHeader {
+  Json render;             // resolved options and effects; parts merge only when equal
+  std::string scene;       // the scene path as given to render
+  std::string scene_sha1;  // of the scene file's text; parts merge only when equal
+  uint32_t spp = 0;        // the whole render's samples per pixel
+  uint64_t nonfinite = 0;  // samples the film rejected in this part for NaN or inf
+  uint64_t overflow = 0;   // and for values beyond its range (2^30)
+};
+
+struct Partial {
+  PartialHeader header;
+  FilmBuffer film;  // film.range: the part's samples
+};
+
+void write_partial(const std::string& path, const Partial& partial);  // atomically
+Partial read_partial(const std::string& path);                        // InputError naming the file
+
+// "A:B" with 0 <= A < B <= spp.
+SampleRange parse_sample_range(const std::string& text, uint32_t spp);
+
+}  // namespace tracer

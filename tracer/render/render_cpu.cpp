@@ -1,0 +1,56 @@
+#include "render/render_cpu.h"
+
+#include <omp.h>
+
+#include <atomic>
+
+#include "kernel/render_pixel.h"
+
+namespace tracer {
+
+FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, RenderStats& stats,
+                           const ProgressCallback& progress) {
+  constexpr uint32_t kTile = 16;
+  const SceneView view = scene.view();
+  const uint32_t w = view.settings.width, h = view.settings.height;
+  FilmBuffer film;
+  film.width = w;
+  film.height = h;
+  film.range = range;
+  film.pixels.resize(static_cast<size_t>(w) * h);
+  const uint32_t tiles_x = (w + kTile - 1) / kTile, tiles_y = (h + kTile - 1) / kTile;
+  const int64_t tile_count = static_cast<int64_t>(tiles_x) * tiles_y;
+  std::atomic<uint64_t> tiles_done{0};
+  uint64_t camera = 0, secondary = 0, shadow = 0, nonfinite = 0, overflow = 0;
+  const int nthreads = threads > 0 ? threads : omp_get_max_threads();
+
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : camera, secondary, shadow, nonfinite, overflow)
+  for (int64_t tile = 0; tile < tile_count; ++tile) {
+    const uint32_t x0 = static_cast<uint32_t>(tile % tiles_x) * kTile, y0 = static_cast<uint32_t>(tile / tiles_x) * kTile;
+    RayCounts counts{};
+    for (uint32_t y = y0; y < std::min(y0 + kTile, h); ++y) {
+      for (uint32_t x = x0; x < std::min(x0 + kTile, w); ++x) {
+        const FilmSum sum = render_pixel(view, x, y, range.begin, range.end, counts);
+        film.pixels[static_cast<size_t>(y) * w + x] = sum;
+        nonfinite += sum.nonfinite;
+        overflow += sum.overflow;
+      }
+    }
+    camera += counts.camera;
+    secondary += counts.secondary;
+    shadow += counts.shadow;
+    const uint64_t done = tiles_done.fetch_add(1) + 1;
+    if (progress && omp_get_thread_num() == 0) progress(done, static_cast<uint64_t>(tile_count));
+  }
+  stats.rays = {camera, secondary, shadow};
+  stats.nonfinite_samples = nonfinite;
+  stats.overflow_samples = overflow;
+  return film;
+}
+
+Image render_cpu(const Scene& scene, int threads, RenderStats& stats, const ProgressCallback& progress) {
+  const uint32_t spp = scene.settings.spp;
+  return resolve_film(render_cpu_film(scene, {0, spp}, threads, stats, progress), spp);
+}
+
+}  // namespace tracer

@@ -1,0 +1,50 @@
+// The host-side scene: owns the flat arrays that kernel code reads through a SceneView.
+#pragma once
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "scene/scene_arrays.h"
+
+namespace tracer {
+
+// The arrays (SceneArrays, listed in kernel/scene_arrays.h) and the view's scalars.
+struct Scene : SceneArrays {
+  std::string file;
+  Vec3 kd_lo{0, 0, 0}, kd_hi{0, 0, 0};
+  float kd_pad = 0.0f;
+  GridInfo grid{};
+  std::vector<std::string> material_names;
+  uint32_t sky_cells_per_side = 0;
+  uint32_t sky_light = kNoHit;          // the sky's light_table entry
+  float offset_scale = 1.0f;            // kernel/ray_offset.h
+  Background background{};
+  Vec3 ambient{0.0f, 0.0f, 0.0f};
+  Camera camera{};
+  RenderSettings settings{};
+  uint32_t features = 0;
+  std::map<std::string, uint32_t> shape_counts;  // by the scene file's shape type
+  uint32_t degenerate_triangles = 0;             // mesh triangles of zero area, left out
+  std::set<std::string> used_types;              // "shape:box", "sampler:grid": scene_types.h
+  double build_seconds = 0.0;                    // acceleration-structure build time
+
+  SceneView view() const;
+};
+
+// Command-line overrides of the scene's `render` and `film` keys.
+struct RenderOverrides {
+  std::optional<uint32_t> spp, width, height, max_depth;
+  std::optional<uint32_t> effects;  // EffectBit mask (`--effects`); all effects when unset
+  std::optional<bool> nee;          // path: next-event estimation (`--nee on|off`)
+  std::optional<bool> sky_sampling; // path: a cube-map sky sampled as a light (`--sky-sampling on|off`)
+  std::optional<uint32_t> rr_depth; // path: Russian roulette depth (`--rr-depth`)
+  std::optional<FresnelKind> fresnel;  // every dielectric's Fresnel model (`bench trade`)
+  std::optional<uint32_t> grid_resolution;  // `--grid-resolution`
+  std::optional<std::string> triangle_test;  // watertight or moller-trumbore (`--triangle-test`)
+  std::optional<uint64_t> seed;
+  std::optional<std::string> integrator, sampler, accel;
+};
+
+}  // namespace tracer
