@@ -1,4 +1,4 @@
-// The scene's flat arrays (every entry of kernel/scene_arrays.h) copied to plain device
+// The scene's flat arrays (every entry of kernel/scene/scene_arrays.h) copied to plain device
 // buffers, and a SceneView whose pointers point at them: what a kernel receives by value.
 #pragma once
 #include "device_buffer.h"

@@ -5,7 +5,7 @@
 #include "cuda_event.h"
 #include "device_scene.h"
 #include "gpu_film.h"
-#include "kernel/render_pixel.h"
+#include "kernel/integrator/render_pixel.h"
 
 namespace tracer {
 namespace {

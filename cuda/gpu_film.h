@@ -1,12 +1,12 @@
 // Renders samples of every pixel on the GPU from a scene's arrays and view scalars: one
-// thread per pixel runs kernel/render_pixel.h, the function the CPU schedulers run. Shared
+// thread per pixel runs kernel/integrator/render_pixel.h, the function the CPU schedulers run. Shared
 // by the tracer's `--device cuda` (render_cuda.cu) and the self-contained runner
 // (cuda/runner/), so both launch exactly the same kernel. Plain C++ header: no CUDA types.
 #pragma once
 #include <string>
 
 #include "render/film_buffer.h"
-#include "kernel/whitted.h"
+#include "kernel/integrator/whitted.h"
 #include "scene/scene_arrays.h"
 
 namespace tracer {

@@ -1,4 +1,4 @@
-// The LBVH built on the GPU from the kernel/lbvh.h steps that the CPU builds run (keys,
+// The LBVH built on the GPU from the kernel/accel/lbvh.h steps that the CPU builds run (keys,
 // radix nodes and bottom-up boxes as CUDA grids; the keys sorted on the device), laid out
 // by the same lbvh_lay_out on the host. Plain C++ header: no CUDA types.
 #pragma once

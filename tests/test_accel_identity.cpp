@@ -7,7 +7,7 @@
 #include <cstring>
 
 #include "golden/golden_check.h"
-#include "kernel/trace.h"
+#include "kernel/accel/trace.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_types.h"
 #include "test_util.h"

@@ -5,7 +5,7 @@
 #include <set>
 
 #include "scene/camera_setup.h"
-#include "kernel/sampler.h"
+#include "kernel/camera/sampler.h"
 
 using namespace tracer;
 

@@ -8,7 +8,7 @@
 #include <limits>
 #include <random>
 
-#include "kernel/detmath.h"
+#include "kernel/base/detmath.h"
 
 using namespace tracer;
 

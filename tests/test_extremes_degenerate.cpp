@@ -6,9 +6,9 @@
 
 #include <cmath>
 
-#include "kernel/quad.h"
-#include "kernel/trace.h"
-#include "kernel/triangle_moller_trumbore.h"
+#include "kernel/geom/quad.h"
+#include "kernel/accel/trace.h"
+#include "kernel/geom/triangle_moller_trumbore.h"
 #include "render/render_cpu.h"
 #include "scene/scene_types.h"
 #include "test_util.h"

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "kernel/optics.h"
-#include "kernel/scene_view.h"
+#include "kernel/shading/optics.h"
+#include "kernel/scene/scene_view.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
 

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "kernel/camera.h"
-#include "kernel/optics.h"
+#include "kernel/camera/camera.h"
+#include "kernel/shading/optics.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
 

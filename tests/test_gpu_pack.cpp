@@ -134,7 +134,7 @@ TEST(GpuRunner, LinksOnlyLibcLibmAndTheLoader) {
   EXPECT_GE(libraries, 2) << out;
 }
 
-// The LBVH steps of kernel/lbvh.h give the same nodes and leaf order under the tracer's
+// The LBVH steps of kernel/accel/lbvh.h give the same nodes and leaf order under the tracer's
 // OpenMP loops and under the runner's std::threads at any count (the GPU grid is the third).
 TEST(LbvhBuild, OpenMpAndStdThreadsGiveTheSameTree) {
   const LbvhInput in = parity::lbvh_inputs(3, 100000);

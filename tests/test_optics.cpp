@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "kernel/optics.h"
+#include "kernel/shading/optics.h"
 
 using namespace tracer;
 

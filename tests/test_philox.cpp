@@ -1,7 +1,7 @@
 // Philox4x32-10 against Random123's published known-answer vectors.
 #include <gtest/gtest.h>
 
-#include "kernel/philox.h"
+#include "kernel/base/philox.h"
 
 using namespace tracer;
 

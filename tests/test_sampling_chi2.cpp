@@ -10,8 +10,8 @@
 #include <cmath>
 #include <vector>
 
-#include "kernel/bsdf.h"
-#include "kernel/light_sampling.h"
+#include "kernel/shading/bsdf.h"
+#include "kernel/shading/light_sampling.h"
 #include "test_util.h"
 
 namespace tracer {

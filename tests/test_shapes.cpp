@@ -6,9 +6,9 @@
 
 #include "accel/acceleration.h"
 #include "accel/bounds.h"
-#include "kernel/optics.h"
-#include "kernel/ray_offset.h"
-#include "kernel/surface.h"
+#include "kernel/shading/optics.h"
+#include "kernel/geom/ray_offset.h"
+#include "kernel/shading/surface.h"
 #include "test_util.h"
 
 using namespace tracer;

@@ -10,7 +10,7 @@
 #include <fstream>
 
 #include "image/image_io.h"
-#include "kernel/surface.h"
+#include "kernel/shading/surface.h"
 #include "io/input_error.h"
 #include "render/render_cpu.h"
 #include "test_util.h"

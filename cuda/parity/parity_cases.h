@@ -2,9 +2,9 @@
 // inputs. The CPU side of a test calls them directly; the GPU side calls the same
 // functions from kernels (parity_kernels.cu). Outputs are compared as bits.
 #pragma once
-#include "kernel/detmath.h"
-#include "kernel/philox.h"
-#include "kernel/render_pixel.h"
+#include "kernel/base/detmath.h"
+#include "kernel/base/philox.h"
+#include "kernel/integrator/render_pixel.h"
 
 namespace tracer::parity {
 

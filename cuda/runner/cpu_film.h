@@ -1,9 +1,9 @@
-// The runner's CPU scheduler: kernel/render_pixel.h for every pixel on std::threads (the
+// The runner's CPU scheduler: kernel/integrator/render_pixel.h for every pixel on std::threads (the
 // OpenMP runtime is a shared library the bare GPU machine lacks). Pixels do not depend on
 // the thread that computes them, so this film equals the tracer's OpenMP film bit for bit.
 #pragma once
 #include "render/film_buffer.h"
-#include "kernel/render_pixel.h"
+#include "kernel/integrator/render_pixel.h"
 #include "parity/parallel_for.h"
 
 namespace tracer {

@@ -1,5 +1,5 @@
 // Binned SAH BVH (Wald, "On fast Construction of SAH-based Bounding Volume Hierarchies",
-// 2007) into the flat node array of kernel/bvh_node.h. Reorders `items` into leaf order.
+// 2007) into the flat node array of kernel/accel/bvh_node.h. Reorders `items` into leaf order.
 // The build is sequential and deterministic.
 #pragma once
 #include "accel/bounds.h"

@@ -1,4 +1,4 @@
-// The uniform grid (kernel/grid.h): grid_resolution cells along the longest axis, the
+// The uniform grid (kernel/accel/grid.h): grid_resolution cells along the longest axis, the
 // others in proportion, or, when it is 0, about three cells per primitive spread by the
 // box's shape (cells per axis = extent x cbrt(3 N / volume)), capped at 2^24 cells.
 #pragma once

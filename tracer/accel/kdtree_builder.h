@@ -1,4 +1,4 @@
-// kd-trees over the bounded primitives (kernel/kd_node.h): SAH splits chosen among 32
+// kd-trees over the bounded primitives (kernel/accel/kd_node.h): SAH splits chosen among 32
 // binned candidates per axis with the cost model of Wald and Havran ("On building fast
 // kd-Trees for Ray Tracing", 2006: traversal 1, intersection 1.5, a 20 % bonus for an
 // empty side), or splits at the median centroid along the longest axis (the reference

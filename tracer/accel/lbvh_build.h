@@ -1,4 +1,4 @@
-// The LBVH build as a sequence of kernel/lbvh.h steps, with the parallel loop as a
+// The LBVH build as a sequence of kernel/accel/lbvh.h steps, with the parallel loop as a
 // parameter: the tracer passes an OpenMP loop (lbvh_builder.cpp), the GPU runner's CPU side
 // std::threads; cuda/lbvh_gpu.cu runs the same steps as CUDA grids. The steps' results do
 // not depend on the schedule, so every scheduler gives the same nodes bit for bit.
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "kernel/lbvh.h"
+#include "kernel/accel/lbvh.h"
 
 namespace tracer {
 

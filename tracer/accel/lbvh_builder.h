@@ -3,7 +3,7 @@
 // primitive id as tie-break, a binary radix tree whose internal nodes are built
 // independently in parallel, then a bottom-up pass of bounding boxes (the second child to
 // arrive at a node merges them), with no SAH. The steps are kernel functions
-// (kernel/lbvh.h) run here by OpenMP loops (lbvh_build.h) and on the GPU by cuda/lbvh_gpu.cu.
+// (kernel/accel/lbvh.h) run here by OpenMP loops (lbvh_build.h) and on the GPU by cuda/lbvh_gpu.cu.
 // The tree is laid out in the BvhNode format (children adjacent), so bvh's traversal runs it.
 #pragma once
 #include "accel/bounds.h"

@@ -6,7 +6,7 @@
 #include <unordered_map>
 
 #include "io/input_error.h"
-#include "kernel/detmath.h"
+#include "kernel/base/detmath.h"
 #include "io/text_file.h"
 
 namespace tracer {

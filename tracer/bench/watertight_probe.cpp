@@ -11,7 +11,7 @@
 
 #include "accel/bounds.h"
 #include "io/input_error.h"
-#include "kernel/trace.h"
+#include "kernel/accel/trace.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {

@@ -1,5 +1,5 @@
 // A scene bundle: everything the kernel reads to render one scene (every array of
-// kernel/scene_arrays.h with decoded textures and sky tables, the view's scalars with the
+// kernel/scene/scene_arrays.h with decoded textures and sky tables, the view's scalars with the
 // camera and render settings, the sample range), written by `tracer bundle` and rendered
 // by the GPU runner without the loaders. Sections of a "scene" BundleFile: "view" (one
 // SceneView, pointers zero), "samples" (one SampleRange), "source" (the scene and options

@@ -10,7 +10,7 @@
 #include <filesystem>
 
 #include "io/input_error.h"
-#include "kernel/detmath.h"
+#include "kernel/base/detmath.h"
 
 namespace tracer {
 namespace {

@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "io/input_error.h"
-#include "kernel/scene_view.h"
+#include "kernel/scene/scene_view.h"
 
 namespace tracer {
 namespace {

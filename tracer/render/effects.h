@@ -1,5 +1,5 @@
 // Names of the Whitted effects that `--effects` and `tracer bench device` switch
-// (EffectBit in kernel/scene_view.h): "shadows,reflections", "all", "none".
+// (EffectBit in kernel/scene/scene_view.h): "shadows,reflections", "all", "none".
 #pragma once
 #include <cstdint>
 #include <string>

@@ -1,10 +1,10 @@
-// A whole image's fixed-point film sums (kernel/film.h) for one range of samples: what a
+// A whole image's fixed-point film sums (kernel/base/film.h) for one range of samples: what a
 // renderer produces, what a partial file stores, and what `tracer merge` adds up.
 #pragma once
 #include <vector>
 
 #include "image/image.h"
-#include "kernel/film.h"
+#include "kernel/base/film.h"
 
 namespace tracer {
 

@@ -1,7 +1,7 @@
 // A partial render: `tracer render SCENE --samples A:B -o NAME.partial` stores the
 // fixed-point film sums of samples [A, B) of every pixel, and `tracer merge` adds the parts
 // of one render into the image of all its samples, identical bit for bit to rendering them
-// at once (kernel/film.h). The file: the line "tracer-partial/1", one line of JSON (the
+// at once (kernel/base/film.h). The file: the line "tracer-partial/1", one line of JSON (the
 // render's identity and the range), then width x height film sums, each three int64 and
 // two uint32, little-endian.
 #pragma once

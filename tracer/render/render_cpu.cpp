@@ -4,7 +4,7 @@
 
 #include <atomic>
 
-#include "kernel/render_pixel.h"
+#include "kernel/integrator/render_pixel.h"
 
 namespace tracer {
 

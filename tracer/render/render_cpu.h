@@ -1,4 +1,4 @@
-// The CPU scheduler: OpenMP over 16x16 tiles around kernel/render_pixel.h. Each pixel is
+// The CPU scheduler: OpenMP over 16x16 tiles around kernel/integrator/render_pixel.h. Each pixel is
 // computed by one thread from plain arrays into its fixed-point film sum, so the image does
 // not depend on the thread count, the order in which tiles finish, or how the samples are
 // split into ranges.
@@ -7,7 +7,7 @@
 
 #include "render/film_buffer.h"
 #include "image/image.h"
-#include "kernel/whitted.h"
+#include "kernel/integrator/whitted.h"
 #include "scene/scene.h"
 
 namespace tracer {

@@ -1,5 +1,5 @@
 // The CUDA renderer's host interface (cuda/render_cuda.cu): one GPU thread per pixel runs
-// kernel/render_pixel.h, the function the CPU's tile loop runs, over the scene's flat arrays
+// kernel/integrator/render_pixel.h, the function the CPU's tile loop runs, over the scene's flat arrays
 // copied to plain device buffers. Built whenever CMake finds nvcc; a build without it links
 // render_cuda_absent.cpp instead, whose functions raise DeviceUnavailable.
 #pragma once

@@ -1,6 +1,6 @@
 // Builds the kernel Camera from the scene's look-at description.
 #pragma once
-#include "kernel/camera.h"
+#include "kernel/camera/camera.h"
 
 namespace tracer {
 

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "io/input_error.h"
-#include "kernel/vec3.h"
+#include "kernel/base/vec3.h"
 
 namespace tracer {
 

@@ -4,15 +4,15 @@
 #include <cmath>
 
 #include "accel/bounds.h"
-#include "kernel/bsdf.h"
-#include "kernel/light_sampling.h"
+#include "kernel/shading/bsdf.h"
+#include "kernel/shading/light_sampling.h"
 
 namespace tracer {
 namespace {
 
 constexpr uint32_t kMaxSkyCellsPerSide = 128;
 
-// The cube-map sky's cells (kernel/sky_sampling.h); returns the integral of luminance over
+// The cube-map sky's cells (kernel/shading/sky_sampling.h); returns the integral of luminance over
 // the sphere the cells' weights estimate, for the sky's power.
 double build_sky_cells(Scene& scene) {
   const SceneView view = scene.view();

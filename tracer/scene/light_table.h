@@ -1,4 +1,4 @@
-// The path integrator's light table (kernel/light_sampling.h): every point light and every
+// The path integrator's light table (kernel/shading/light_sampling.h): every point light and every
 // emissive sphere, quad and triangle, chosen with probability proportional to its power
 // (luminance of the intensity times 4 pi for a point light; of the radiance times pi times
 // the area, twice for two-sided emitters, for a shape; of the sky's radiance integrated

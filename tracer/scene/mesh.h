@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/vec3.h"
+#include "kernel/base/vec3.h"
 
 namespace tracer {
 

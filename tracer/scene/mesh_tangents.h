@@ -2,7 +2,7 @@
 // triangle's dp/du (from its positions and uvs), weighted by its area, summed at every
 // vertex it shares (same position and same uv, so uv seams keep separate tangents), then
 // normalised. The kernel interpolates them and makes them orthogonal to the shading normal
-// (Gram-Schmidt, kernel/surface.h).
+// (Gram-Schmidt, kernel/shading/surface.h).
 #pragma once
 #include <vector>
 

@@ -10,7 +10,7 @@
 
 namespace tracer {
 
-// The arrays (SceneArrays, listed in kernel/scene_arrays.h) and the view's scalars.
+// The arrays (SceneArrays, listed in kernel/scene/scene_arrays.h) and the view's scalars.
 struct Scene : SceneArrays {
   std::string file;
   Vec3 kd_lo{0, 0, 0}, kd_hi{0, 0, 0};
@@ -19,7 +19,7 @@ struct Scene : SceneArrays {
   std::vector<std::string> material_names;
   uint32_t sky_cells_per_side = 0;
   uint32_t sky_light = kNoHit;          // the sky's light_table entry
-  float offset_scale = 1.0f;            // kernel/ray_offset.h
+  float offset_scale = 1.0f;            // kernel/geom/ray_offset.h
   Background background{};
   Vec3 ambient{0.0f, 0.0f, 0.0f};
   Camera camera{};

@@ -1,10 +1,10 @@
 // The host's copy of the arrays a SceneView points to, one std::vector per entry of
-// kernel/scene_arrays.h, and the one function that points a view at them.
+// kernel/scene/scene_arrays.h, and the one function that points a view at them.
 #pragma once
 #include <cstddef>
 #include <vector>
 
-#include "kernel/scene_view.h"
+#include "kernel/scene/scene_view.h"
 
 namespace tracer {
 

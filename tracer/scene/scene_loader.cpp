@@ -8,7 +8,7 @@
 #include "scene/camera_setup.h"
 #include "scene/json_reader.h"
 #include "scene/light_table.h"
-#include "kernel/whitted.h"
+#include "kernel/integrator/whitted.h"
 #include "scene/mesh.h"
 #include "scene/mesh_tangents.h"
 #include "scene/mtl_materials.h"
@@ -532,7 +532,7 @@ uint32_t shape_feature(ShapeKind kind) {
   return 0;
 }
 
-// kernel/ray_offset.h's scale: the smallest power of two at least the scene's size (its
+// kernel/geom/ray_offset.h's scale: the smallest power of two at least the scene's size (its
 // geometry, camera and lights), at most 1.
 float ray_offset_scale(const Scene& scene) {
   Bounds b;

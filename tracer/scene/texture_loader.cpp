@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "kernel/detmath.h"
+#include "kernel/base/detmath.h"
 
 namespace tracer {
 

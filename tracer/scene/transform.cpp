@@ -1,6 +1,6 @@
 #include "scene/transform.h"
 
-#include "kernel/detmath.h"
+#include "kernel/base/detmath.h"
 
 namespace tracer {
 

@@ -2,7 +2,7 @@
 // the order listed and baked into the geometry at load time. Rotations use the
 // deterministic sin/cos, so goldens do not depend on the machine's libm.
 #pragma once
-#include "kernel/vec3.h"
+#include "kernel/base/vec3.h"
 
 namespace tracer {
 

@@ -1,0 +1,129 @@
+// The scene as kernel code sees it: plain pointers to flat arrays, filled on the host or
+// copied to the device, and the primitive test every acceleration structure calls
+// (kernel/accel/trace.h dispatches the queries). The closest hit is the minimum of
+// (t, primitive id) compared lexicographically (DESIGN.md rule 4).
+#pragma once
+#include "kernel/accel/bvh_node.h"
+#include "kernel/camera/camera.h"
+#include "kernel/base/features.h"
+#include "kernel/accel/grid.h"
+#include "kernel/accel/kd_node.h"
+#include "kernel/shading/material.h"
+#include "kernel/geom/plane.h"
+#include "kernel/geom/primitive.h"
+#include "kernel/geom/quad.h"
+#include "kernel/scene/scene_arrays.h"
+#include "kernel/camera/sampler.h"
+#include "kernel/geom/sphere.h"
+#include "kernel/geom/triangle.h"
+#include "kernel/geom/triangle_moller_trumbore.h"
+
+namespace tracer {
+
+enum class AccelKind : uint32_t { Bvh, None, Kdtree, KdtreeMedian, Grid, Lbvh };
+enum class IntegratorKind : uint32_t { Whitted, Normals, Albedo, Depth, Path };
+enum class BackgroundKind : uint32_t { Constant, Gradient, Cubemap };
+enum class TriangleTest : uint32_t { Watertight, MollerTrumbore };
+
+struct PointLight {
+  Vec3 position;
+  Vec3 intensity;
+  float kc, kl, kq;         // attenuation, used when has_attenuation
+  uint32_t has_attenuation;  // 0: physical 1/d^2 falloff
+};
+
+// An entry of the path integrator's light table (kernel/shading/light_sampling.h).
+enum class LightKind : uint32_t { Point, Shape, Sky };
+struct LightEntry {
+  LightKind kind;
+  uint32_t index;  // into SceneView::lights, or the emitting primitive's id; 0 for the sky
+  float pmf;       // probability of choosing this light
+  float cdf;       // sum of the pmfs up to and including this entry; 1 for the last
+};
+
+// A cell of a cube-map sky's sampling distribution (kernel/shading/sky_sampling.h).
+struct SkyCell {
+  float pmf;  // probability of drawing the cell, a multiple of 2^-24
+  float cdf;  // sum of the pmfs up to and including this cell; 1 for the last
+};
+
+struct Background {
+  BackgroundKind kind;
+  Vec3 radiance;      // constant; the zenith colour for gradient
+  Vec3 horizon;       // gradient only
+  uint32_t faces[6];  // cubemap: textures of the faces +x, -x, +y, -y, +z, -z
+};
+
+// Whitted effects that can be switched off to measure their cost (`--effects`, `tracer
+// bench device`). Off, shadows let every light through; reflection and refraction rays
+// (including a dielectric's Fresnel reflection) are not traced.
+enum EffectBit : uint32_t { kEffectShadows = 1u, kEffectReflection = 2u, kEffectRefraction = 4u, kEffectAll = 7u };
+
+struct RenderSettings {
+  IntegratorKind integrator;
+  SamplerKind sampler;
+  AccelKind accel;
+  uint32_t spp;
+  uint32_t grid_n;  // sqrt(spp) for grid and stratified
+  uint32_t max_depth;
+  uint64_t seed;
+  uint32_t width, height;
+  uint32_t effects;  // EffectBit mask; kEffectAll unless a benchmark says otherwise
+  uint32_t nee;      // path: next-event estimation with MIS (1) or the plain estimator (0)
+  uint32_t rr_depth; // path: Russian roulette from this many bounces on
+  uint32_t grid_resolution;  // grid: cells along the longest axis; 0 picks by density
+  TriangleTest triangle_test;  // watertight (default) or Moller-Trumbore, for the trade
+  uint32_t sky_sampling;     // path with NEE: a cube-map sky is a light of the table (1) or only found by BSDF rays (0)
+};
+
+struct SceneView {
+#define TRACER_VIEW_POINTER(Type, name) const Type* name;
+  TRACER_SCENE_ARRAYS(TRACER_VIEW_POINTER)  // kernel/scene/scene_arrays.h
+#undef TRACER_VIEW_POINTER
+  uint32_t primitive_count;
+  uint32_t bounded_count;
+  uint32_t unbounded_count;
+  uint32_t bvh_node_count;
+  uint32_t kd_node_count;
+  uint32_t light_count;
+  uint32_t light_entry_count;
+  Vec3 kd_lo, kd_hi;               // the kd-tree's box
+  float kd_pad;                    // as GridInfo::pad
+  GridInfo grid;
+  uint32_t sky_cells_per_side;    // n
+  uint32_t sky_light;             // the sky's light_table entry, or kNoHit
+  float offset_scale;             // ray offsets near the origin (kernel/geom/ray_offset.h): a power of two <= 1
+  Background background;
+  Vec3 ambient;
+  Camera camera;
+  RenderSettings settings;
+  uint32_t features;  // FeatureBit mask
+};
+
+struct Hit {
+  float t;
+  uint32_t prim;  // kNoHit when nothing was hit
+  float b1, b2;   // triangle barycentrics of v1, v2 | quad (alpha, beta)
+};
+constexpr uint32_t kNoHit = 0xffffffffu;
+
+// Tests one primitive; keeps it when (t, id) is below the best so far.
+TRACER_HD void test_primitive(const SceneView& scene, uint32_t id, const Ray& ray,
+                              const RayShear& shear, Hit& best) {
+  const Primitive& p = scene.primitives[id];
+  float t = 0.0f, b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;
+  bool hit = false;
+  switch (p.kind) {
+    case ShapeKind::Sphere: hit = intersect_sphere(p.a, p.radius, ray, 0.0f, best.t, t); break;
+    case ShapeKind::Plane: hit = intersect_plane(p.a, p.b, ray, 0.0f, best.t, t); break;
+    case ShapeKind::Triangle:
+      hit = scene.settings.triangle_test == TriangleTest::Watertight
+                ? intersect_triangle(p.a, p.b, p.c, ray, shear, 0.0f, best.t, t, b0, b1, b2)
+                : intersect_triangle_moller_trumbore(p.a, p.b, p.c, ray, 0.0f, best.t, t, b0, b1, b2);
+      break;
+    case ShapeKind::Quad: hit = intersect_quad(p.a, p.b, p.c, ray, 0.0f, best.t, t, b1, b2); break;
+  }
+  if (hit && (t < best.t || id < best.prim)) best = {t, id, b1, b2};
+}
+
+}  // namespace tracer

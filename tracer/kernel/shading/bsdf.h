@@ -1,0 +1,140 @@
+// Scattering for the path integrator, one switch per operation over the material kinds
+// (docs/materials.md). wo points from the surface toward the previous vertex, n is the
+// unit shading normal flipped to wo's side, wi the sampled or queried direction; all in
+// world space. eval_bsdf_cos returns f(wo, wi) |cos(n, wi)|, pdf_bsdf the solid-angle
+// density with which sample_bsdf picks wi; both are 0 for specular (delta) choices.
+//   lambert:    f = albedo / pi, cosine-weighted sampling.
+//   metal:      roughness 0 is a mirror tinted by albedo. Otherwise a Phong lobe
+//               cos^e(alpha) about the mirror direction, e = 2 / roughness^2 - 2, sampled
+//               exactly, with f cos = albedo (e + 1) / (2 pi) cos^e(alpha): each sample
+//               weighs albedo, and lobe directions below the surface are absorbed.
+//   dielectric: reflection or refraction chosen by the Fresnel reflectance (Schlick or
+//               exact), total internal reflection always reflects; refraction is tinted.
+//   phong:      the normalised modified Phong BRDF (Lafortune and Willems 1994),
+//               kd / pi + ks (e + 2) / (2 pi) cos^e(alpha), sampled by picking the diffuse
+//               or the specular lobe in proportion to their luminance.
+//   emissive:   Lambertian with its optional albedo (0 by default: black).
+#pragma once
+#include "kernel/shading/material.h"
+#include "kernel/shading/optics.h"
+#include "kernel/shading/sampling.h"
+
+namespace tracer {
+
+struct BsdfSample {
+  Vec3 wi;
+  Vec3 weight;    // f |cos| / pdf, or the specular choice's throughput
+  float pdf;      // 0 for a specular choice
+  bool specular;
+};
+
+TRACER_HD float luminance(Vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+
+TRACER_HD float metal_exponent(float roughness) { return 2.0f / (roughness * roughness) - 2.0f; }
+
+TRACER_HD bool is_specular(const Material& m) {
+  return m.kind == MaterialKind::Dielectric || (m.kind == MaterialKind::Metal && m.roughness == 0.0f);
+}
+
+// Probability of sampling phong's diffuse lobe rather than its specular one.
+TRACER_HD float phong_diffuse_probability(const Material& m) {
+  const float d = luminance(m.albedo), s = luminance(m.specular);
+  return d + s > 0.0f ? d / (d + s) : 1.0f;
+}
+
+TRACER_HD Vec3 eval_bsdf_cos(const Material& m, Vec3 wo, Vec3 wi, Vec3 n) {
+  const float cos_i = dot(wi, n);
+  const Vec3 zero = {0.0f, 0.0f, 0.0f};
+  if (!(cos_i > 0.0f)) return zero;
+  switch (m.kind) {
+    case MaterialKind::Lambert:
+    case MaterialKind::Emissive: return m.albedo * (cos_i / kPi);
+    case MaterialKind::Metal:
+      if (m.roughness == 0.0f) return zero;
+      return m.albedo * phong_lobe_pdf(metal_exponent(m.roughness), dot(wi, reflect(-wo, n)));
+    case MaterialKind::Phong: {
+      const float cos_a = max_of(dot(wi, reflect(-wo, n)), 0.0f);
+      const float lobe = (m.shininess + 2.0f) / (2.0f * kPi) * det_pow(cos_a, m.shininess);
+      return m.albedo * (cos_i / kPi) + m.specular * (lobe * cos_i);
+    }
+    case MaterialKind::Dielectric: break;
+  }
+  return zero;
+}
+
+TRACER_HD float pdf_bsdf(const Material& m, Vec3 wo, Vec3 wi, Vec3 n) {
+  const float cos_i = dot(wi, n);
+  if (!(cos_i > 0.0f)) return 0.0f;
+  switch (m.kind) {
+    case MaterialKind::Lambert:
+    case MaterialKind::Emissive: return cos_i / kPi;
+    case MaterialKind::Metal:
+      if (m.roughness == 0.0f) return 0.0f;
+      return phong_lobe_pdf(metal_exponent(m.roughness), dot(wi, reflect(-wo, n)));
+    case MaterialKind::Phong: {
+      const float pd = phong_diffuse_probability(m);
+      return pd * cos_i / kPi + (1.0f - pd) * phong_lobe_pdf(m.shininess, dot(wi, reflect(-wo, n)));
+    }
+    case MaterialKind::Dielectric: break;
+  }
+  return 0.0f;
+}
+
+// `front`: wo is on the side the geometric normal points to (outside a dielectric).
+// u_choice picks a lobe or Fresnel's reflect/refract; (u1, u2) the direction. False when
+// the path is absorbed (a black material, a lobe direction below the surface).
+TRACER_HD bool sample_bsdf(const Material& m, Vec3 wo, Vec3 n, bool front, float u_choice, float u1, float u2,
+                           BsdfSample& s) {
+  s.specular = false;
+  switch (m.kind) {
+    case MaterialKind::Lambert:
+    case MaterialKind::Emissive: {
+      if (!(max_component(m.albedo) > 0.0f)) return false;
+      const Vec3 local = sample_cosine_hemisphere(u1, u2);
+      s.wi = frame_around(n).to_world(local);
+      s.pdf = local.z / kPi;
+      s.weight = m.albedo;
+      return local.z > 0.0f;
+    }
+    case MaterialKind::Metal: {
+      const Vec3 mirror = reflect(-wo, n);
+      if (m.roughness == 0.0f) {
+        s = {mirror, m.albedo, 0.0f, true};
+        return true;
+      }
+      const float e = metal_exponent(m.roughness);
+      const Vec3 local = sample_phong_lobe(e, u1, u2);
+      s.wi = frame_around(mirror).to_world(local);
+      s.pdf = phong_lobe_pdf(e, local.z);
+      s.weight = m.albedo;
+      return dot(s.wi, n) > 0.0f && s.pdf > 0.0f;
+    }
+    case MaterialKind::Dielectric: {
+      const float n_in = front ? 1.0f : m.ior, n_out = front ? m.ior : 1.0f;
+      const Vec3 d = -wo;
+      Vec3 refracted;
+      float cos_t;
+      const Vec3 one = {1.0f, 1.0f, 1.0f};
+      if (refract(d, n, n_in / n_out, refracted, cos_t) &&
+          !(u_choice < dielectric_reflectance(m.fresnel, dot(wo, n), cos_t, n_in, n_out))) {
+        s = {refracted, m.tint, 0.0f, true};
+      } else {
+        s = {reflect(d, n), one, 0.0f, true};  // Fresnel reflection or total internal reflection
+      }
+      return true;
+    }
+    case MaterialKind::Phong: {
+      const float pd = phong_diffuse_probability(m);
+      if (!(max_component(m.albedo) > 0.0f || max_component(m.specular) > 0.0f)) return false;
+      const Vec3 local = u_choice < pd ? sample_cosine_hemisphere(u1, u2) : sample_phong_lobe(m.shininess, u1, u2);
+      s.wi = frame_around(u_choice < pd ? n : reflect(-wo, n)).to_world(local);
+      s.pdf = pdf_bsdf(m, wo, s.wi, n);
+      if (!(s.pdf > 0.0f)) return false;
+      s.weight = eval_bsdf_cos(m, wo, s.wi, n) / s.pdf;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace tracer

@@ -1,0 +1,78 @@
+// Warps of uniform numbers in [0,1)^2 to directions and points, with their densities.
+// Each is checked by a chi-square goodness-of-fit test (tests/test_sampling_chi2.cpp).
+#pragma once
+#include "kernel/base/detmath.h"
+#include "kernel/base/vec3.h"
+
+namespace tracer {
+
+// An orthonormal frame around unit n (Duff et al., "Building an Orthonormal Basis,
+// Revisited", JCGT 2017), branch-free but for the sign.
+struct Frame {
+  Vec3 t, b, n;
+  TRACER_HD Vec3 to_world(Vec3 v) const { return t * v.x + b * v.y + n * v.z; }
+};
+
+TRACER_HD Frame frame_around(Vec3 n) {
+  const float sign = n.z >= 0.0f ? 1.0f : -1.0f;
+  const float a = -1.0f / (sign + n.z);
+  const float b = n.x * n.y * a;
+  return {{1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x}, {b, sign + n.y * n.y * a, -n.y}, n};
+}
+
+// Direction at polar angle acos(cos_theta) and azimuth 2 pi u about +z.
+TRACER_HD Vec3 direction_from(float cos_theta, float u) {
+  const float sin_theta = det_sqrt(max_of(0.0f, 1.0f - cos_theta * cos_theta));
+  const float phi = 2.0f * kPi * u;
+  return {sin_theta * det_cos(phi), sin_theta * det_sin(phi), cos_theta};
+}
+
+// Cosine-weighted hemisphere about +z (Malley's method with the polar disk map):
+// pdf = cos(theta) / pi.
+TRACER_HD Vec3 sample_cosine_hemisphere(float u1, float u2) {
+  return direction_from(det_sqrt(1.0f - u1), u2);
+}
+
+// A Phong lobe cos^e(alpha) about +z: cos(alpha) = u1^(1/(e+1)), pdf = (e+1)/(2 pi) cos^e.
+TRACER_HD Vec3 sample_phong_lobe(float exponent, float u1, float u2) {
+  return direction_from(det_pow(1.0f - u1, 1.0f / (exponent + 1.0f)), u2);
+}
+
+TRACER_HD float phong_lobe_pdf(float exponent, float cos_alpha) {
+  if (!(cos_alpha > 0.0f)) return 0.0f;
+  return (exponent + 1.0f) / (2.0f * kPi) * det_pow(cos_alpha, exponent);
+}
+
+// Uniform in the cone of half-angle theta_max about +z, given 1 - cos(theta_max) (which
+// callers compute without cancellation): pdf = 1 / (2 pi (1 - cos_max)).
+TRACER_HD Vec3 sample_cone(float one_minus_cos_max, float u1, float u2) {
+  return direction_from(1.0f - u1 * one_minus_cos_max, u2);
+}
+
+// Uniform on a triangle: weights (b1, b2) = sqrt(u1) (1 - u2, u2) of v1 and v2 (Osada et al. 2002).
+TRACER_HD void sample_triangle(float u1, float u2, float& b1, float& b2) {
+  const float s = det_sqrt(u1);
+  b1 = s * (1.0f - u2);
+  b2 = s * u2;
+}
+
+// The index of the first entry whose cdf exceeds u (entries[count - 1].cdf is 1), by
+// binary search: drawing an entry of a discrete distribution given a uniform u.
+template <class Entry> TRACER_HD uint32_t find_cdf_interval(const Entry* entries, uint32_t count, float u) {
+  uint32_t lo = 0, hi = count - 1;
+  while (lo < hi) {
+    const uint32_t mid = (lo + hi) / 2;
+    if (u < entries[mid].cdf) hi = mid;
+    else lo = mid + 1;
+  }
+  return lo;
+}
+
+// Power heuristic with beta = 2 (Veach 1997): the weight of a sample drawn with pdf `a`
+// when the other strategy would have drawn it with pdf `b`.
+TRACER_HD float power_heuristic(float a, float b) {
+  const float a2 = a * a, b2 = b * b;
+  return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
+}
+
+}  // namespace tracer

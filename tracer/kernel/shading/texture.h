@@ -1,0 +1,68 @@
+// Textures as plain data: images decoded once on the host into linear float RGB texels, and
+// the procedural checker. Sampled by our own bilinear filter (plain + - * and floor), so the
+// CPU and CUDA read the same values. Texture space: u to the right, v up; texel (x, y) has
+// its centre at u = (x + 0.5) / width, v = 1 - (y + 0.5) / height (row 0 is the image's top).
+#pragma once
+#include "kernel/base/platform.h"
+#include "kernel/base/vec3.h"
+
+namespace tracer {
+
+constexpr uint32_t kNoTexture = 0xffffffffu;
+
+enum class TextureKind : uint32_t { Image, Checker };
+enum class TextureWrap : uint32_t { Repeat, Clamp };
+
+struct Texture {
+  TextureKind kind;
+  TextureWrap wrap;
+  uint32_t width, height;
+  uint32_t offset;  // image: its texels start at texels[offset], 3 floats each, row by row
+  Vec3 even, odd;   // checker: colour where floor(u s) + floor(v s) is even / odd
+  float scale;      // checker: squares per unit of u and v
+};
+
+TRACER_HD int wrap_texel(int i, int n, TextureWrap wrap) {
+  if (wrap == TextureWrap::Clamp) return i < 0 ? 0 : (i >= n ? n - 1 : i);
+  const int r = i % n;
+  return r < 0 ? r + n : r;
+}
+
+TRACER_HD Vec3 texel_at(const float* texels, const Texture& t, int x, int y) {
+  const float* p = texels + t.offset + 3u * (static_cast<uint32_t>(wrap_texel(y, t.height, t.wrap)) * t.width +
+                                             static_cast<uint32_t>(wrap_texel(x, t.width, t.wrap)));
+  return {p[0], p[1], p[2]};
+}
+
+// Bilinear filter as two linear interpolations along x, then one along y, each a + (b - a) f:
+// a constant texture returns its value exactly, and a texel centre (f = 0) its texel.
+TRACER_HD Vec3 sample_texture(const Texture* textures, const float* texels, uint32_t index, float u, float v) {
+  const Texture& t = textures[index];
+  if (t.kind == TextureKind::Checker) {
+    if (!(abs_of(u * t.scale) < 0x1p23f && abs_of(v * t.scale) < 0x1p23f)) return t.even;  // NaN or beyond float's integers
+    const float cu = floorf(u * t.scale), cv = floorf(v * t.scale);
+    const float parity = cu + cv - 2.0f * floorf((cu + cv) * 0.5f);
+    return parity == 0.0f ? t.even : t.odd;
+  }
+  // Into [0, 1] first (repeat: the fraction; clamp: the nearest edge; NaN: 0), so texel
+  // indices stay small whatever the coordinates.
+  u = u == u ? u : 0.0f;
+  v = v == v ? v : 0.0f;
+  if (t.wrap == TextureWrap::Repeat) {
+    u = u - floorf(u);
+    v = v - floorf(v);
+  } else {
+    u = u < 0.0f ? 0.0f : (u > 1.0f ? 1.0f : u);
+    v = v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v);
+  }
+  const float x = u * static_cast<float>(t.width) - 0.5f, y = (1.0f - v) * static_cast<float>(t.height) - 0.5f;
+  const float x0 = floorf(x), y0 = floorf(y);
+  const float fx = x - x0, fy = y - y0;
+  const int ix = static_cast<int>(x0), iy = static_cast<int>(y0);
+  const Vec3 t00 = texel_at(texels, t, ix, iy), t10 = texel_at(texels, t, ix + 1, iy);
+  const Vec3 t01 = texel_at(texels, t, ix, iy + 1), t11 = texel_at(texels, t, ix + 1, iy + 1);
+  const Vec3 top = t00 + (t10 - t00) * fx, bottom = t01 + (t11 - t01) * fx;
+  return top + (bottom - top) * fy;
+}
+
+}  // namespace tracer
