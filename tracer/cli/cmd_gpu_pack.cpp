@@ -49,7 +49,7 @@ Scene golden_scene(const GoldenManifest& manifest, const std::string& name, cons
   return load_scene(manifest.scene_path(e), o);
 }
 
-// The cases of the GoogleTest parity suite (tests/test_cuda_parity.cpp), with the same
+// The cases of the GoogleTest parity suite (tests/cuda/test_cuda_parity.cpp), with the same
 // inputs, plus traversal through every acceleration structure, the LBVH build of 2^20
 // triangles and one whole golden's samples.
 std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {

@@ -56,7 +56,7 @@ TRACER_HD bool intersect_triangle(Vec3 v0, Vec3 v1, Vec3 v2, const Ray& ray, con
   // Reject t not conservatively above 0 (pbrt-v4 section 6.8.6's bound on t's error). The
   // sheared x' = x - sx z carries the error of its two terms, gamma(3) (|x'| + 2 |sx z|);
   // pbrt bounds |sx z| by the scaled |z / d_z|, which for a ray nearly in a sliver's plane
-  // is 1e5 times too loose and rejected its true hits (tests/test_extremes_degenerate.cpp).
+  // is 1e5 times too loose and rejected its true hits (tests/extremes/test_extremes_degenerate.cpp).
   const float max_zt = max_of(abs_of(az), max_of(abs_of(bz), abs_of(cz)));
   const float max_xt = max_of(abs_of(ax), max_of(abs_of(bx), abs_of(cx)));
   const float max_yt = max_of(abs_of(ay), max_of(abs_of(by), abs_of(cy)));

@@ -1,5 +1,5 @@
 // Warps of uniform numbers in [0,1)^2 to directions and points, with their densities.
-// Each is checked by a chi-square goodness-of-fit test (tests/test_sampling_chi2.cpp).
+// Each is checked by a chi-square goodness-of-fit test (tests/analytic/test_sampling_chi2.cpp).
 #pragma once
 #include "kernel/base/detmath.h"
 #include "kernel/base/vec3.h"

@@ -1,6 +1,6 @@
 // The feature audit of tests/README.md: its table has one row per type the loader accepts
 // (scene_types.cpp), no empty cell, goldens that exist and draw the row's type, and tests
-// that are defined in tests/*.cpp.
+// that are defined in tests/LABEL/*.cpp.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -64,11 +64,11 @@ std::vector<AuditRow> audit_table() {
   return rows;
 }
 
-// "Suite.Name" of every TEST, TEST_F and TEST_P in tests/*.cpp.
+// "Suite.Name" of every TEST, TEST_F and TEST_P in tests/LABEL/*.cpp.
 std::set<std::string> defined_tests() {
   std::set<std::string> names;
   const std::regex test(R"(\bTEST(?:_F|_P)?\((\w+),\s*(\w+)\))");
-  for (const auto& f : std::filesystem::directory_iterator(test::source_path("tests"))) {
+  for (const auto& f : std::filesystem::recursive_directory_iterator(test::source_path("tests"))) {
     if (f.path().extension() != ".cpp") continue;
     const std::string text = read_file(f.path().string());
     for (auto it = std::sregex_iterator(text.begin(), text.end(), test); it != std::sregex_iterator(); ++it)
