@@ -6,7 +6,7 @@
 #include <string>
 
 #include "render/film_buffer.h"
-#include "kernel/integrator/whitted.h"
+#include "kernel/integrator/ray_counts.h"
 #include "scene/scene_arrays.h"
 
 namespace tracer {

@@ -7,7 +7,9 @@
 #include <cmath>
 
 #include "kernel/shading/optics.h"
-#include "kernel/scene/scene_view.h"
+#include "kernel/geom/plane.h"
+#include "kernel/geom/sphere.h"
+#include "kernel/geom/triangle.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
 

@@ -5,6 +5,7 @@
 #pragma once
 #include <vector>
 
+#include "kernel/accel/primitive_hit.h"
 #include "scene/scene.h"
 
 namespace tracer {

@@ -7,7 +7,7 @@
 
 #include "render/film_buffer.h"
 #include "image/image.h"
-#include "kernel/integrator/whitted.h"
+#include "kernel/integrator/ray_counts.h"
 #include "scene/scene.h"
 
 namespace tracer {

@@ -8,7 +8,7 @@
 #include "scene/camera_setup.h"
 #include "scene/json_reader.h"
 #include "scene/light_table.h"
-#include "kernel/integrator/whitted.h"
+#include "kernel/integrator/ray_counts.h"
 #include "scene/mesh.h"
 #include "scene/mesh_tangents.h"
 #include "scene/mtl_materials.h"

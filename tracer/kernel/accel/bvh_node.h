@@ -19,9 +19,10 @@ TRACER_HD Vec3 inverse_direction(Vec3 d) { return {1.0f / d.x, 1.0f / d.y, 1.0f 
 // Robust slab test (Ize, "Robust BVH Ray Traversal", JCGT 2013): the far distance is
 // widened by 1 + 2 gamma(3) so rounding can only admit a box, never reject one that the
 // ray touches. NaN from 0 * inf leaves the interval unchanged (conservative).
+constexpr float kSlabWiden = 1.0f + 2.0f * error_gamma(3);
+
 TRACER_HD bool ray_box(Vec3 lo, Vec3 hi, Vec3 origin, Vec3 inv_dir, float tmin, float tmax,
                        float& t_enter) {
-  constexpr float kWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
   for (int axis = 0; axis < 3; ++axis) {
     float t0 = (lo[axis] - origin[axis]) * inv_dir[axis];
     float t1 = (hi[axis] - origin[axis]) * inv_dir[axis];
@@ -30,7 +31,7 @@ TRACER_HD bool ray_box(Vec3 lo, Vec3 hi, Vec3 origin, Vec3 inv_dir, float tmin, 
       t0 = t1;
       t1 = s;
     }
-    t1 = t1 * kWiden;
+    t1 = t1 * kSlabWiden;
     tmin = t0 > tmin ? t0 : tmin;
     tmax = t1 < tmax ? t1 : tmax;
     if (tmin > tmax) return false;
@@ -54,11 +55,10 @@ TRACER_HD RayBoxQuery make_ray_box_query(const Ray& ray) {
 }
 
 TRACER_HD bool ray_box(const BvhNode& box, const RayBoxQuery& q, float tmin, float tmax, float& t_enter) {
-  constexpr float kWiden = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f);
   const Vec3* bounds[2] = {&box.lo, &box.hi};
   for (int axis = 0; axis < 3; ++axis) {
     const float t0 = ((*bounds[q.negative[axis]])[axis] - q.origin[axis]) * q.inv_dir[axis];
-    const float t1 = ((*bounds[1 - q.negative[axis]])[axis] - q.origin[axis]) * q.inv_dir[axis] * kWiden;
+    const float t1 = ((*bounds[1 - q.negative[axis]])[axis] - q.origin[axis]) * q.inv_dir[axis] * kSlabWiden;
     tmin = t0 > tmin ? t0 : tmin;
     tmax = t1 < tmax ? t1 : tmax;
   }

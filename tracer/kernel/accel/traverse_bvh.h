@@ -2,7 +2,7 @@
 // child is pruned only when it starts strictly beyond the best hit, so a tie at equal t can
 // still be won by a smaller id. With `any`, returns at the first hit.
 #pragma once
-#include "kernel/scene/scene_view.h"
+#include "kernel/accel/primitive_hit.h"
 
 namespace tracer {
 

@@ -4,7 +4,7 @@
 // sit in every cell their padded bounds overlap, and the walk stops early only when the
 // best hit lies before the cell's exit minus the pad (DESIGN.md rule 4).
 #pragma once
-#include "kernel/scene/scene_view.h"
+#include "kernel/accel/primitive_hit.h"
 
 namespace tracer {
 

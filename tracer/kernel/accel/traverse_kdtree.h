@@ -5,7 +5,7 @@
 // before the leaf's exit minus the pad, so it can never miss a closer hit or a smaller id
 // at equal t in a later leaf (DESIGN.md rule 4).
 #pragma once
-#include "kernel/scene/scene_view.h"
+#include "kernel/accel/primitive_hit.h"
 
 namespace tracer {
 

@@ -1,4 +1,5 @@
-// Ray/infinite-plane intersection; planes are unbounded and live outside the BVH.
+// Ray/infinite-plane intersection; planes are unbounded and live outside the BVH. Quads
+// take their plane hit from here too. `normal` need not be a unit vector.
 #pragma once
 #include "kernel/base/vec3.h"
 

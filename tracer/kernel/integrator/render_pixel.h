@@ -1,36 +1,38 @@
 // One pixel from plain arrays: the single function that both schedulers (the OpenMP
-// tile loop and the CUDA grid) call. Each sample goes into the pixel's fixed-point film
-// sum (film.h), so a pixel cannot depend on the thread, block, device or sample range
-// that computes it (DESIGN.md rule 5).
+// tile loop and the CUDA grid) call. render_sample computes one sample of one pixel;
+// render_pixel adds a range of them into the pixel's fixed-point film sum (film.h), so a
+// pixel cannot depend on the thread, block, device or sample range that computes it
+// (DESIGN.md rule 5).
 #pragma once
-#include "kernel/integrator/debug_views.h"
 #include "kernel/base/film.h"
+#include "kernel/integrator/debug_views.h"
 #include "kernel/integrator/path.h"
 #include "kernel/integrator/whitted.h"
 
 namespace tracer {
 
+// Sample s of pixel (px, py): its film offset and lens point, the camera ray, and the
+// radiance the scene's integrator returns along it.
+TRACER_HD Vec3 render_sample(const SceneView& scene, uint32_t px, uint32_t py, uint32_t s, RayCounts& counts) {
+  const RenderSettings& rs = scene.settings;
+  const uint32_t pixel = py * rs.width + px;
+  float ox = 0.5f, oy = 0.5f, lu = 0.5f, lv = 0.5f;
+  film_offset(rs.sampler, rs.grid_n, rs.seed, pixel, s, ox, oy);
+  if (scene.features & kFeatureThinLens) sample_uniform2(rs.seed, pixel, s, kDimLens, lu, lv);
+  const Ray ray = camera_ray(scene.camera, static_cast<float>(px) + ox, static_cast<float>(py) + oy, lu, lv);
+  ++counts.camera;
+  switch (rs.integrator) {
+    case IntegratorKind::Whitted: return whitted_radiance(scene, ray, counts);
+    case IntegratorKind::Path: return path_radiance(scene, ray, pixel, s, counts);
+    default: return debug_view(scene, ray);
+  }
+}
+
 // Samples [sample_begin, sample_end) of pixel (px, py), added into a fresh film sum.
 TRACER_HD FilmSum render_pixel(const SceneView& scene, uint32_t px, uint32_t py, uint32_t sample_begin,
                                uint32_t sample_end, RayCounts& counts) {
-  const RenderSettings& rs = scene.settings;
-  const uint32_t pixel = py * rs.width + px;
   FilmSum sum = {{0, 0, 0}, 0u, 0u};
-  for (uint32_t s = sample_begin; s < sample_end; ++s) {
-    float ox = 0.5f, oy = 0.5f, lu = 0.5f, lv = 0.5f;
-    film_offset(rs.sampler, rs.grid_n, rs.seed, pixel, s, ox, oy);
-    if (scene.features & kFeatureThinLens) sample_uniform2(rs.seed, pixel, s, kDimLens, lu, lv);
-    const Ray ray = camera_ray(scene.camera, static_cast<float>(px) + ox,
-                               static_cast<float>(py) + oy, lu, lv);
-    ++counts.camera;
-    Vec3 value;
-    switch (rs.integrator) {
-      case IntegratorKind::Whitted: value = whitted_radiance(scene, ray, counts); break;
-      case IntegratorKind::Path: value = path_radiance(scene, ray, pixel, s, counts); break;
-      default: value = debug_view(scene, ray); break;
-    }
-    film_add(sum, value);
-  }
+  for (uint32_t s = sample_begin; s < sample_end; ++s) film_add(sum, render_sample(scene, px, py, s, counts));
   return sum;
 }
 

@@ -5,15 +5,10 @@
 #include "kernel/shading/light_sources.h"
 #include "kernel/shading/optics.h"
 #include "kernel/geom/ray_offset.h"
+#include "kernel/integrator/ray_counts.h"
 #include "kernel/shading/surface.h"
 
 namespace tracer {
-
-constexpr uint32_t kMaxDepth = 64;  // the loader rejects a larger max_depth
-
-struct RayCounts {
-  uint64_t camera, secondary, shadow;
-};
 
 // The classic model's coefficients for one material.
 struct WhittedResponse {

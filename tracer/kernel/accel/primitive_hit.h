@@ -1,0 +1,39 @@
+// A ray's hit and the primitive test every acceleration structure calls
+// (kernel/accel/trace.h dispatches the queries). The closest hit is the minimum of
+// (t, primitive id) compared lexicographically (DESIGN.md rule 4).
+#pragma once
+#include "kernel/geom/plane.h"
+#include "kernel/geom/quad.h"
+#include "kernel/geom/sphere.h"
+#include "kernel/geom/triangle.h"
+#include "kernel/geom/triangle_moller_trumbore.h"
+#include "kernel/scene/scene_view.h"
+
+namespace tracer {
+
+struct Hit {
+  float t;
+  uint32_t prim;  // kNoHit when nothing was hit
+  float b1, b2;   // triangle barycentrics of v1, v2 | quad (alpha, beta)
+};
+
+// Tests one primitive; keeps it when (t, id) is below the best so far.
+TRACER_HD void test_primitive(const SceneView& scene, uint32_t id, const Ray& ray,
+                              const RayShear& shear, Hit& best) {
+  const Primitive& p = scene.primitives[id];
+  float t = 0.0f, b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;
+  bool hit = false;
+  switch (p.kind) {
+    case ShapeKind::Sphere: hit = intersect_sphere(p.a, p.radius, ray, 0.0f, best.t, t); break;
+    case ShapeKind::Plane: hit = intersect_plane(p.a, p.b, ray, 0.0f, best.t, t); break;
+    case ShapeKind::Triangle:
+      hit = scene.settings.triangle_test == TriangleTest::Watertight
+                ? intersect_triangle(p.a, p.b, p.c, ray, shear, 0.0f, best.t, t, b0, b1, b2)
+                : intersect_triangle_moller_trumbore(p.a, p.b, p.c, ray, 0.0f, best.t, t, b0, b1, b2);
+      break;
+    case ShapeKind::Quad: hit = intersect_quad(p.a, p.b, p.c, ray, 0.0f, best.t, t, b1, b2); break;
+  }
+  if (hit && (t < best.t || id < best.prim)) best = {t, id, b1, b2};
+}
+
+}  // namespace tracer
