@@ -125,6 +125,25 @@ TEST(Cli, RenderWritesImageAndStats) {
   std::filesystem::remove_all(dir);
 }
 
+// --stats names the structure --accel chose and counts its nodes or cells.
+TEST(Cli, StatsNameEveryAccelerationStructure) {
+  const auto dir = test::temp_dir("cli-accel-stats");
+  std::ofstream(dir / "s.json") << kGoodScene;
+  for (const std::string accel : {"bvh", "lbvh", "kdtree", "kdtree-median", "grid", "none"}) {
+    std::string output;
+    ASSERT_EQ(test::run_tracer("render " + (dir / "s.json").string() + " --quiet --accel " + accel + " -o " +
+                                   (dir / "a.exr").string() + " --stats " + (dir / "stats.json").string(), &output), 0)
+        << output;
+    const Json stats = Json::parse(std::ifstream(dir / "stats.json"));
+    EXPECT_EQ(stats["accel"]["kind"], accel);
+    if (accel == "none" || accel == "grid") EXPECT_EQ(stats["accel"]["nodes"], 0) << accel;
+    else EXPECT_GT(stats["accel"]["nodes"].get<int>(), 0) << accel;
+    EXPECT_EQ(stats["accel"].contains("cells"), accel == "grid") << accel;
+    if (accel == "grid") EXPECT_GT(stats["accel"]["cells"].get<int>(), 0);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Cli, CompareExitCodes) {
   const auto dir = test::temp_dir("cli-compare");
   std::ofstream(dir / "s.json") << kGoodScene;

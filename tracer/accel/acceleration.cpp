@@ -4,6 +4,7 @@
 #include "accel/grid_builder.h"
 #include "accel/kdtree_builder.h"
 #include "accel/lbvh_builder.h"
+#include "scene/scene_types.h"
 
 namespace tracer {
 
@@ -35,6 +36,14 @@ void build_acceleration(Scene& scene) {
     case AccelKind::None: break;
   }
   for (const BuildItem& it : items) scene.bounded.push_back(it.id);
+}
+
+AccelSummary acceleration_summary(const Scene& s) {
+  AccelSummary a;
+  a.name = accepted_scene_types().at("accel").at(static_cast<size_t>(s.settings.accel));
+  a.nodes = s.bvh_nodes.size() + s.kd_nodes.size();
+  if (s.settings.accel == AccelKind::Grid) a.cells = s.grid_cell_start.empty() ? 0 : s.grid_cell_start.size() - 1;
+  return a;
 }
 
 size_t acceleration_bytes(const Scene& s) {

@@ -12,6 +12,14 @@ void build_acceleration(Scene& scene);
 // largest coordinate magnitude or extent, many ulps beyond any rounding of cell boundaries.
 float structure_pad(Vec3 lo, Vec3 hi);
 
+// What `tracer info` and `--stats` report of the built structure: its name as --accel
+// spells it, its nodes (bvh, lbvh, kd-trees) and its cells (grid).
+struct AccelSummary {
+  std::string name;
+  size_t nodes = 0, cells = 0;
+};
+AccelSummary acceleration_summary(const Scene& scene);
+
 // Bytes the built structure occupies (nodes, cells and index arrays), for `bench rays`.
 size_t acceleration_bytes(const Scene& scene);
 

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "accel/acceleration.h"
 #include "cli/commands.h"
 #include "render/effects.h"
 #include "image/image_io.h"
@@ -123,7 +124,9 @@ int run_render(const RenderCommand& cmd) {
     j["nonfinite_samples"] = stats.nonfinite_samples;
     j["overflow_samples"] = stats.overflow_samples;
     j["degenerate_triangles"] = scene.degenerate_triangles;
-    j["accel"] = {{"kind", rs.accel == AccelKind::Bvh ? "bvh" : "none"}, {"nodes", scene.bvh_nodes.size()}};
+    const AccelSummary accel = acceleration_summary(scene);
+    j["accel"] = {{"kind", accel.name}, {"nodes", accel.nodes}};
+    if (rs.accel == AccelKind::Grid) j["accel"]["cells"] = accel.cells;
     j["features"] = feature_names(scene.features);
     write_text_atomically(cmd.stats, j.dump(2) + "\n");
   }
@@ -161,9 +164,11 @@ int run_info(const std::string& scene_path) {
   std::printf("materials  %zu, point lights %zu\n", scene.materials.size(), scene.lights.size());
   std::printf("features  ");
   for (const std::string& f : feature_names(scene.features)) std::printf(" %s", f.c_str());
-  std::printf("\naccel      %s: %zu nodes over %zu bounded primitives, %zu unbounded; load and build %.3f s\n",
-              scene.settings.accel == AccelKind::Bvh ? "bvh" : "none", scene.bvh_nodes.size(),
-              scene.bounded.size(), scene.unbounded.size(), seconds);
+  const AccelSummary accel = acceleration_summary(scene);
+  const std::string size = scene.settings.accel == AccelKind::Grid ? std::to_string(accel.cells) + " cells"
+                                                                   : std::to_string(accel.nodes) + " nodes";
+  std::printf("\naccel      %s: %s over %zu bounded primitives, %zu unbounded; load and build %.3f s\n",
+              accel.name.c_str(), size.c_str(), scene.bounded.size(), scene.unbounded.size(), seconds);
   return 0;
 }
 
