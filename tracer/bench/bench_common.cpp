@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 #include "image/image_io.h"
@@ -46,6 +47,15 @@ ImageError image_error(const Image& image, const Image& reference) {
   return e;
 }
 
+std::string bench_reference_dir() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path dir = (ec ? std::filesystem::path(".") : self.parent_path()) / "bench-refs";
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create the benchmark reference directory: " + ec.message());
+  return dir.string();
+}
+
 Image reference_image(const std::string& scene_path, RenderOverrides overrides, const std::string& ref_file,
                       uint32_t ref_spp, int threads, const std::string& save_as) {
   const Scene probe = load_scene(scene_path, overrides);
@@ -61,9 +71,10 @@ Image reference_image(const std::string& scene_path, RenderOverrides overrides, 
   overrides.seed = probe.settings.seed + kReferenceSeedOffset;
   if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) overrides.sampler = "stochastic";
   const TimedRender r = timed_render(load_scene(scene_path, overrides), threads);
-  write_image(r.image, save_as);
+  const std::string path = (std::filesystem::path(bench_reference_dir()) / save_as).string();
+  write_image(r.image, path);
   std::printf("reference: %u spp, %.2f s, saved as %s (give --ref %s to reuse it)\n", ref_spp, r.seconds,
-              save_as.c_str(), save_as.c_str());
+              path.c_str(), path.c_str());
   return r.image;
 }
 

@@ -27,10 +27,14 @@ TimedRender timed_render(const Scene& scene, int threads, int repeats = 1);
 ImageError image_error(const Image& image, const Image& reference);
 
 // The reference: `ref_file` when given (it must match the size), else the scene rendered
-// at ref_spp samples with a seed no measured render uses, saved to `save_as` for --ref
-// next time. Prints what it used.
+// at ref_spp samples with a seed no measured render uses, saved as `save_as` in
+// bench_reference_dir() for --ref next time. Prints what it used.
 Image reference_image(const std::string& scene_path, RenderOverrides overrides, const std::string& ref_file,
                       uint32_t ref_spp, int threads, const std::string& save_as);
+
+// Where benchmarks save the references they render: bench-refs/ beside the tracer binary
+// (build/bench-refs/), never the source tree or the working directory.
+std::string bench_reference_dir();
 
 // "1,4,16" to numbers; InputError naming the option.
 std::vector<uint32_t> parse_spp_list(const std::string& option, const std::string& text);
