@@ -86,7 +86,7 @@ void plane_under_bright_top_face(bool sky_sampling) {
     return face == 2 ? Vec3{2.0f, 2.0f, 2.0f} : Vec3{0.0f, 0.0f, 0.0f};
   });
   RenderOverrides ov;
-  ov.sky_sampling = sky_sampling;
+  ov.sky_sampling = sky_sampling ? Switch::On : Switch::Off;
   RenderStats stats;
   const Image img = render_cpu(load_scene_text(R"({"format": "tracer-scene/1", "camera": {"from": [0, 2, 0], "to": [0, 0, 0.01], "vfov": 60},
     "film": {"width": 32, "height": 32}, "render": {"integrator": "path", "spp": 16, "sampler": "stochastic", "max_depth": 4},
@@ -107,7 +107,7 @@ TEST(PathAnalytic, PlaneUnderABrightCubeFaceWithoutSkySampling) { plane_under_br
 // Le + a Le + a^2 Le + ... = Le / (1 - a); with a = 0.5, Le = 0.5: 1.
 void closed_emitting_sphere(bool nee) {
   RenderOverrides ov;
-  ov.nee = nee;
+  ov.nee = nee ? Switch::On : Switch::Off;
   const Image img = render(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 0], "to": [0, 0, 1], "vfov": 70},
     "film": {"width": 40, "height": 40}, "render": {"integrator": "path", "spp": 16, "sampler": "stochastic", "max_depth": 64},
     "materials": {"shell": {"type": "emissive", "radiance": [0.5, 0.5, 0.5], "albedo": [0.5, 0.5, 0.5], "two_sided": true}},
@@ -152,7 +152,7 @@ Image render_room(uint32_t size, uint32_t spp, uint64_t seed, bool nee) {
   RenderOverrides ov;
   ov.spp = spp;
   ov.seed = seed;
-  ov.nee = nee;
+  ov.nee = nee ? Switch::On : Switch::Off;
   return render(lit_room(size), ov);
 }
 

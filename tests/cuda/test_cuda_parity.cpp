@@ -85,7 +85,7 @@ TEST(CudaParity, RayShapeTests) {
 Scene golden_scene(const std::string& name) {
   const GoldenManifest manifest = read_manifest(TRACER_SOURCE_DIR);
   const GoldenEntry& e = manifest.find(name);
-  return load_scene(manifest.scene_path(e), e.options.overrides());
+  return load_scene(manifest.scene_path(e), RenderOverrides{e.options});
 }
 
 // 2^20 rays per scene, origins uniform in its bounds, directions uniform on the sphere.
@@ -121,7 +121,7 @@ TEST(CudaParity, WholePixelsOfEveryGolden) {
   std::vector<std::vector<SampleAnswer>> cpu;
   for (const GoldenEntry& e : manifest.entries) {
     SCOPED_TRACE(e.name);
-    scenes.push_back(load_scene(manifest.scene_path(e), e.options.overrides()));
+    scenes.push_back(load_scene(manifest.scene_path(e), RenderOverrides{e.options}));
     const SceneView view = scenes.back().view();
     const size_t n = static_cast<size_t>(view.settings.width) * view.settings.height;
     cpu.emplace_back(n);

@@ -6,6 +6,7 @@
 
 #include <cstring>
 
+#include "options/enum_names.h"
 #include "golden/golden_check.h"
 #include "kernel/accel/trace.h"
 #include "scene/scene_loader.h"
@@ -54,7 +55,7 @@ TEST(AccelIdentity, EveryStructureGivesTheSameHitsInEveryShippedScene) {
     std::vector<Scene> built;
     for (const std::string& accel : structures()) {
       RenderOverrides ov;
-      ov.accel = accel;
+      ov.accel = parse_enum<AccelKind>(accel, "accel");
       built.push_back(load_scene(path, ov));
     }
     const std::vector<Ray> rays = probe_rays(built[0]);
@@ -93,7 +94,7 @@ TEST(AccelIdentity, HitsOnCellBoundariesAndStraddlingPrimitives) {
   std::vector<Scene> built;
   for (const std::string& accel : structures()) {
     RenderOverrides ov;
-    ov.accel = accel;
+    ov.accel = parse_enum<AccelKind>(accel, "accel");
     built.push_back(test::scene_from(json, ov));
   }
   std::vector<Ray> rays;
@@ -120,7 +121,7 @@ TEST(AccelIdentity, EveryGoldenWithEveryStructure) {
   for (const GoldenEntry& entry : manifest.entries)
     for (const std::string& accel : structures()) {
       GoldenEntry e = entry;
-      e.options.accel = accel;
+      e.options.accel = parse_enum<AccelKind>(accel, "accel");
       EXPECT_EQ(render_golden(manifest, e, 0).hash, entry.hash) << entry.name << " with " << accel;
     }
 }

@@ -4,6 +4,7 @@
 
 #include <cstring>
 
+#include "options/enum_names.h"
 #include "image/image_io.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
@@ -44,7 +45,7 @@ TEST(Determinism, ThreadCountsGiveIdenticalImagesThroughCli) {
 TEST(Determinism, StochasticSamplersAcrossThreadCounts) {
   for (const char* sampler : {"stochastic", "stratified"}) {
     RenderOverrides ov;
-    ov.sampler = sampler;
+    ov.sampler = parse_enum<SamplerKind>(sampler, "sampler");
     ov.spp = 4;
     ov.width = 48;
     ov.height = 36;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "options/enum_names.h"
 #include "kernel/geom/quad.h"
 #include "kernel/accel/trace.h"
 #include "kernel/geom/triangle_moller_trumbore.h"
@@ -92,7 +93,7 @@ TEST(ExtremesDegenerate, ZeroAreaMeshFacesAreNeverHitInAScene) {
   }
   for (const char* test : {"watertight", "moller-trumbore"}) {
     RenderOverrides ov;
-    ov.triangle_test = test;
+    ov.triangle_test = parse_enum<TriangleTest>(test, "triangle_test");
     const Scene scene = test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
       "film": {"width": 8, "height": 8}, "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
       "shapes": [{"type": "mesh", "material": "m", "positions": [)" + positions + "], \"indices\": [" + indices + "]}]}", ov);
@@ -140,8 +141,8 @@ TEST(ExtremesDegenerate, ZeroAreaTrianglesLeaveTheImageUnchanged) {
   for (const char* test : {"watertight", "moller-trumbore"}) {
     for (const char* integrator : {"path", "whitted"}) {
       RenderOverrides ov;
-      ov.triangle_test = test;
-      ov.integrator = integrator;
+      ov.triangle_test = parse_enum<TriangleTest>(test, "triangle_test");
+      ov.integrator = parse_enum<IntegratorKind>(integrator, "integrator");
       RenderStats with_stats, without_stats;
       const Image with = render_cpu(test::scene_from(floor_scene(true), ov), 0, with_stats);
       const Image without = render_cpu(test::scene_from(floor_scene(false), ov), 0, without_stats);
@@ -226,7 +227,7 @@ TEST(ExtremesDegenerate, EveryStructureFindsTheSlivers) {
     const std::vector<Ray> rays = sliver_rays(h, targets);
     for (const std::string& accel : accepted_scene_types().at("accel")) {
       RenderOverrides ov;
-      ov.accel = accel;
+      ov.accel = parse_enum<AccelKind>(accel, "accel");
       const Scene scene = test::scene_from(std::string(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40}, "film": {"width": 8, "height": 8},
         "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}}, "shapes": )") + shapes + "}", ov);
       const SceneView view = scene.view();

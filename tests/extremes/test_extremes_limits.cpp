@@ -37,7 +37,7 @@ TEST(ExtremesLimits, EmitterOf1e30IsReportedAsOverflowNotNaN) {
 // centre sample per pixel reads the lamp's 2 or exactly 0, where max_depth 1 lights the floor.
 TEST(ExtremesLimits, MaxDepthZeroShowsOnlyEmitters) {
   RenderOverrides ov;
-  ov.sampler = "center";
+  ov.sampler = SamplerKind::Center;
   ov.spp = 1;
   for (const uint32_t depth : {0u, 1u, 64u}) {
     RenderStats stats;

@@ -18,10 +18,10 @@ namespace {
 constexpr uint32_t kEdgePoints = 4;
 
 void expect_watertight(const std::string& obj, uint64_t min_rays) {
-  const Scene watertight = load_probe_mesh(obj, "watertight");
+  const Scene watertight = load_probe_mesh(obj, TriangleTest::Watertight);
   const std::vector<Vec3> origins = inside_points(watertight);
   const WatertightProbe w = probe_watertight(watertight, origins, kEdgePoints, 0);
-  const WatertightProbe mt = probe_watertight(load_probe_mesh(obj, "moller-trumbore"), origins, kEdgePoints, 0);
+  const WatertightProbe mt = probe_watertight(load_probe_mesh(obj, TriangleTest::MollerTrumbore), origins, kEdgePoints, 0);
   EXPECT_EQ(w.open_edges, 0u) << obj << " is not closed";
   EXPECT_GE(w.rays, min_rays);
   EXPECT_EQ(w.escapes, 0u) << obj << ": rays slipped through the watertight test";
@@ -52,7 +52,7 @@ TEST(ExtremesWatertight, InsidePointsOfAnOpenMeshAreAnError) {
   const auto dir = test::temp_dir("watertight-open");
   const std::string obj = (dir / "open.obj").string();
   write_text_atomically(obj, "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\n");
-  const Scene quad = load_probe_mesh(obj, "watertight");
+  const Scene quad = load_probe_mesh(obj, TriangleTest::Watertight);
   EXPECT_THROW(inside_points(quad), InputError);
   std::filesystem::remove_all(dir);
 }

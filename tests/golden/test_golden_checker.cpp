@@ -10,7 +10,7 @@
 #include "golden/golden_report.h"
 #include "golden_sandbox.h"
 #include "image/image_io.h"
-#include "scene/json_reader.h"
+#include "io/json_reader.h"
 #include "image/pixel_hash.h"
 
 namespace tracer {

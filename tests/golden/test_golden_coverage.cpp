@@ -16,7 +16,7 @@ TEST(GoldenCoverage, EveryAcceptedTypeAppearsInAGolden) {
   ASSERT_FALSE(manifest.entries.empty());
   std::set<std::string> used;
   for (const GoldenEntry& e : manifest.entries) {
-    const Scene scene = load_scene(manifest.scene_path(e), e.options.overrides());
+    const Scene scene = load_scene(manifest.scene_path(e), RenderOverrides{e.options});
     used.insert(scene.used_types.begin(), scene.used_types.end());
   }
   std::string missing;

@@ -5,7 +5,7 @@
 
 #include "golden/golden_manifest.h"
 #include "golden_sandbox.h"
-#include "scene/json_reader.h"
+#include "io/json_reader.h"
 
 namespace tracer {
 namespace {
@@ -105,10 +105,10 @@ TEST(GoldenUpdate, NewEntryGetsItsImageHashAndEveryOption) {
   EXPECT_NE(output.find("new"), std::string::npos) << output;
   const GoldenEntry e = read_manifest(box.root.string()).find("ball-grid");
   EXPECT_TRUE(e.options.complete());
-  EXPECT_EQ(*e.options.sampler, "grid");
+  EXPECT_EQ(*e.options.sampler, SamplerKind::Grid);
   EXPECT_EQ(*e.options.spp, 4u);
   EXPECT_EQ(*e.options.width, 24u);
-  EXPECT_EQ(*e.options.integrator, "whitted");
+  EXPECT_EQ(*e.options.integrator, IntegratorKind::Whitted);
   EXPECT_EQ(e.hash.size(), 45u);
   EXPECT_TRUE(std::filesystem::exists(box.root / "golden/ball-grid.exr"));
   EXPECT_EQ(test::run_tracer(box.check_args("ball-grid"), &output), 0) << output;

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "scene/json_reader.h"
+#include "io/json_reader.h"
 #include "test_util.h"
 
 using namespace tracer;

@@ -4,7 +4,7 @@
 
 #include <cstring>
 
-#include "render/effects.h"
+#include "options/effects.h"
 #include "io/input_error.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
@@ -13,20 +13,29 @@ namespace tracer {
 namespace {
 
 TEST(Effects, ParseAndName) {
-  EXPECT_EQ(parse_effects("all"), kEffectAll);
-  EXPECT_EQ(parse_effects("none"), 0u);
-  EXPECT_EQ(parse_effects("shadows,refractions"), kEffectShadows | kEffectRefraction);
-  EXPECT_EQ(effects_name(0), "shading only");
+  EXPECT_EQ(parse_effects("all", "--effects"), kEffectAll);
+  EXPECT_EQ(parse_effects("none", "--effects"), kEffectNone);
+  EXPECT_EQ(parse_effects("shadows,refractions", "--effects"), kEffectShadows | kEffectRefraction);
+  EXPECT_EQ(effects_name(kEffectNone), "shading only");
   EXPECT_EQ(effects_name(kEffectReflection), "shading + reflections");
   EXPECT_EQ(effects_name(kEffectAll), "all");
-  EXPECT_THROW(parse_effects("shadow"), InputError);
-  EXPECT_THROW(parse_effects("shadows,,reflections"), InputError);
+  for (const std::string list : {"shadow", "shadows,,reflections", ""}) {
+    try {
+      parse_effects(list, "scene.json: render.effects");
+      ADD_FAILURE() << "accepted \"" << list << "\"";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("scene.json: render.effects"), std::string::npos) << e.what();
+    }
+  }
+  // effects_text is the form parse_effects reads back, for every mask.
+  for (uint32_t mask = 0; mask <= kEffectAll; ++mask)
+    EXPECT_EQ(parse_effects(effects_text(static_cast<Effects>(mask)), "--effects"), mask);
 }
 
 // The Cornell box: a mirror sphere, a glass sphere, a point light; small and fast.
 RenderStats render_with(const std::string& scene, std::optional<uint32_t> effects, Image& image) {
   RenderOverrides ov;
-  ov.effects = effects;
+  if (effects) ov.effects = static_cast<Effects>(*effects);
   ov.width = 64;
   ov.height = 48;
   RenderStats stats;

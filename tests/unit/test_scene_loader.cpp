@@ -93,7 +93,7 @@ TEST(SceneLoader, FeatureMaskListsWhatTheSceneUses) {
 TEST(SceneLoader, DefaultsAndOverrides) {
   RenderOverrides ov;
   ov.spp = 9;
-  ov.sampler = "stratified";
+  ov.sampler = SamplerKind::Stratified;
   ov.width = 20;
   const Scene s = test::scene_from(scene_with(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})"), ov);
   EXPECT_EQ(s.settings.spp, 9u);

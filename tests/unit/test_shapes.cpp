@@ -4,6 +4,7 @@
 
 #include <random>
 
+#include "options/enum_names.h"
 #include "accel/acceleration.h"
 #include "accel/bounds.h"
 #include "kernel/shading/optics.h"
@@ -152,8 +153,8 @@ TEST(Bvh, ClosestAndAnyHitEqualBruteForce) {
     shapes += buf;
   }
   RenderOverrides bvh, none;
-  bvh.accel = "bvh";
-  none.accel = "none";
+  bvh.accel = AccelKind::Bvh;
+  none.accel = AccelKind::None;
   const Scene a = test::scene_from(one_shape_scene(shapes), bvh), b = test::scene_from(one_shape_scene(shapes), none);
   ASSERT_GT(a.bvh_nodes.size(), 1u);
   const SceneView va = a.view(), vb = b.view();
@@ -180,7 +181,7 @@ TEST(Bvh, TieOnEqualTGoesToSmallerId) {
     shapes += std::string(i ? "," : "") + R"({"type": "triangle", "vertices": [[-1, -1, 0], [1, -1, 0], [0, 1, 0]], "material": "m"})";
   for (const char* accel : {"bvh", "none"}) {
     RenderOverrides ov;
-    ov.accel = accel;
+    ov.accel = parse_enum<AccelKind>(accel, "accel");
     const Scene scene = test::scene_from(one_shape_scene(shapes), ov);
     const SceneView v = scene.view();
     for (float x : {-0.5f, 0.0f, 0.3f}) {

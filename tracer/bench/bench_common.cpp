@@ -69,7 +69,7 @@ Image reference_image(const std::string& scene_path, RenderOverrides overrides, 
   }
   overrides.spp = ref_spp;
   overrides.seed = probe.settings.seed + kReferenceSeedOffset;
-  if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) overrides.sampler = "stochastic";
+  if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) overrides.sampler = SamplerKind::Stochastic;
   const TimedRender r = timed_render(load_scene(scene_path, overrides), threads);
   const std::string path = (std::filesystem::path(bench_reference_dir()) / save_as).string();
   write_image(r.image, path);

@@ -55,7 +55,7 @@ int crossings(const Scene& mesh, const Ray& ray) {
 
 }  // namespace
 
-Scene load_probe_mesh(const std::string& obj_path, const std::string& triangle_test) {
+Scene load_probe_mesh(const std::string& obj_path, TriangleTest triangle_test) {
   RenderOverrides ov;
   ov.triangle_test = triangle_test;
   const std::filesystem::path p = std::filesystem::absolute(obj_path);

@@ -19,7 +19,7 @@ struct WatertightProbe {
 };
 
 // Loads the OBJ as a one-mesh scene (bvh) with the given triangle test.
-Scene load_probe_mesh(const std::string& obj_path, const std::string& triangle_test);
+Scene load_probe_mesh(const std::string& obj_path, TriangleTest triangle_test);
 
 // Origins: the centre of the mesh's bounds and points around it at 1/8 of its size, kept
 // when rays both ways along each axis cross the mesh an odd number of times (inside; one

@@ -8,7 +8,7 @@
 #include <omp.h>
 
 #include "cli/commands.h"
-#include "render/effects.h"
+#include "options/effects.h"
 #include "io/input_error.h"
 #include "render/render_cpu.h"
 #include "render/render_cuda.h"
@@ -47,19 +47,19 @@ FrameTiming time_frames(const Scene& scene, bool cuda, int frames, int threads) 
 
 struct SamplerSetup {
   const char* label;
-  const char* sampler;
+  SamplerKind sampler;
   uint32_t spp;
 };
-constexpr SamplerSetup kSamplers[] = {{"1 spp center", "center", 1}, {"2 spp stochastic", "stochastic", 2}, {"4 spp grid", "grid", 4}};
+constexpr SamplerSetup kSamplers[] = {{"1 spp center", SamplerKind::Center, 1}, {"2 spp stochastic", SamplerKind::Stochastic, 2}, {"4 spp grid", SamplerKind::Grid, 4}};
 
-Scene load_at(const std::string& path, uint32_t width, uint32_t height, const SamplerSetup& s, uint32_t effects) {
+Scene load_at(const std::string& path, uint32_t width, uint32_t height, const SamplerSetup& s, Effects effects) {
   RenderOverrides ov;
   ov.width = width;
   ov.height = height;
   ov.sampler = s.sampler;
   ov.spp = s.spp;
   ov.effects = effects;
-  ov.integrator = "whitted";
+  ov.integrator = IntegratorKind::Whitted;
   return load_scene(path, ov);
 }
 
@@ -128,7 +128,7 @@ int run_bench_device(const BenchDeviceCommand& cmd) {
   std::printf("%-32s", "effects");
   for (const SamplerSetup& s : kSamplers) std::printf(" %18s", s.label);
   std::printf("\n");
-  for (const uint32_t effects : {0u, uint32_t{kEffectShadows}, uint32_t{kEffectReflection}, uint32_t{kEffectRefraction}, uint32_t{kEffectAll}}) {
+  for (const Effects effects : {kEffectNone, kEffectShadows, kEffectReflection, kEffectRefraction, kEffectAll}) {
     std::printf("%-32s", effects_name(effects).c_str());
     for (const SamplerSetup& s : kSamplers)
       std::printf(" %18.1f", time_frames(load_at(cornell, 720, 480, s, effects), cuda, cmd.frames, threads).fps());

@@ -51,21 +51,22 @@ int run_bench_converge(const BenchConvergeCommand& cmd) {
   RenderOverrides base;
   if (cmd.width) base.width = cmd.width;
   if (cmd.height) base.height = cmd.height;
-  if (cmd.nee == "on" || cmd.nee == "both") base.nee = true;
-  if (cmd.nee == "off") base.nee = false;
+  if (cmd.nee == "on" || cmd.nee == "both") base.nee = Switch::On;
+  if (cmd.nee == "off") base.nee = Switch::Off;
   uint32_t max_spp = 0;
   for (uint32_t s : spps) max_spp = std::max(max_spp, s);
   const Scene probe = load_scene(cmd.scene, base);
   if (probe.settings.sampler == SamplerKind::Center && max_spp > 1)
-    base.sampler = "stochastic";  // the center sampler takes one sample only
+    base.sampler = SamplerKind::Stochastic;  // the center sampler takes one sample only
   std::printf("tracer bench converge %s: %ux%u, %s\n", cmd.scene.c_str(), probe.settings.width, probe.settings.height,
               cmd.nee == "both" ? "NEE+MIS and the plain estimator" : "the scene's estimator");
   const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 8 * max_spp, cmd.threads,
                                     stem + "-converge-ref.exr");
 
-  std::vector<std::pair<std::string, bool>> series_setups;
-  if (cmd.nee == "both") series_setups = {{"NEE+MIS", true}, {"plain", false}};
-  else series_setups = {{probe.settings.integrator == IntegratorKind::Path ? (probe.settings.nee ? "NEE+MIS" : "plain") : "render", probe.settings.nee != 0}};
+  const bool nee = probe.settings.nee == Switch::On;
+  std::vector<std::pair<std::string, Switch>> series_setups;
+  if (cmd.nee == "both") series_setups = {{"NEE+MIS", Switch::On}, {"plain", Switch::Off}};
+  else series_setups = {{probe.settings.integrator == IntegratorKind::Path ? (nee ? "NEE+MIS" : "plain") : "render", probe.settings.nee}};
 
   std::ofstream out(csv);
   if (!out) throw InputError(csv + ": cannot write");

@@ -15,9 +15,10 @@
 #include "accel/bounds.h"
 #include "scene/camera_setup.h"
 #include "cli/commands.h"
+#include "options/enum_names.h"
 #include "bench/embree_bench.h"
 #include "io/input_error.h"
-#include "scene/json_reader.h"
+#include "io/json_reader.h"
 #include "kernel/base/philox.h"
 #include "kernel/geom/ray_offset.h"
 #include "kernel/shading/sampling.h"
@@ -37,11 +38,11 @@ struct RaySets {
 };
 
 // An OBJ becomes a one-mesh scene; the camera frames the mesh in either case.
-Scene load_bench_scene(const std::string& path, const std::string& accel, uint32_t grid_resolution) {
+Scene load_bench_scene(const std::string& path, AccelKind accel, uint32_t grid_resolution) {
   RenderOverrides ov;
   ov.accel = accel;
   ov.width = ov.height = kCamera;
-  ov.integrator = "whitted";
+  ov.integrator = IntegratorKind::Whitted;
   if (grid_resolution) ov.grid_resolution = grid_resolution;
   const std::filesystem::path p(path);
   if (p.extension() != ".obj") return load_scene(path, ov);
@@ -107,15 +108,12 @@ size_t node_count(const Scene& s) {
 
 int run_bench_rays(const BenchRaysCommand& cmd) {
   const int threads = cmd.threads > 0 ? cmd.threads : omp_get_max_threads();
-  std::vector<std::string> accels;
+  std::vector<AccelKind> accels;
   if (cmd.accel.empty()) {
-    accels = {"bvh", "lbvh", "kdtree", "kdtree-median", "grid"};
+    accels = {AccelKind::Bvh, AccelKind::Lbvh, AccelKind::Kdtree, AccelKind::KdtreeMedian, AccelKind::Grid};
   } else {
     std::stringstream list(cmd.accel);
-    for (std::string a; std::getline(list, a, ',');) {
-      if (!is_accepted_type("accel", a)) throw InputError("--accel " + cmd.accel + ": unknown structure \"" + a + "\"");
-      accels.push_back(a);
-    }
+    for (std::string a; std::getline(list, a, ',');) accels.push_back(parse_enum<AccelKind>(a, "--accel " + cmd.accel));
   }
   std::printf("tracer bench rays %s: %d threads; primary: %ux%u pinhole, incoherent: %u rays, shadow: any-hit\n",
               cmd.scene.c_str(), threads, kCamera, kCamera, cmd.incoherent);
@@ -125,7 +123,7 @@ int run_bench_rays(const BenchRaysCommand& cmd) {
   uint64_t reference = 0;
   std::vector<Hit> reference_primary, reference_incoherent;
   double bvh_rates[3] = {0, 0, 0};
-  for (const std::string& accel : accels) {
+  for (const AccelKind accel : accels) {
     const Scene scene = load_bench_scene(cmd.scene, accel, cmd.grid_resolution);
     if (rays.primary.empty()) {
       rays = make_rays(scene, cmd.incoherent);
@@ -152,19 +150,19 @@ int run_bench_rays(const BenchRaysCommand& cmd) {
     const double ms = throughput(rays.shadow.size(), threads, [&](size_t i) {
       occluded[i] = trace_any(view, rays.shadow[i], rays.shadow_tmax[i]) ? 1 : 0;
     });
-    if (accel == "bvh") bvh_rates[0] = mp, bvh_rates[1] = mi, bvh_rates[2] = ms;
+    if (accel == AccelKind::Bvh) bvh_rates[0] = mp, bvh_rates[1] = mi, bvh_rates[2] = ms;
     uint64_t sum = 0;
     for (const auto* hits : {&primary, &incoherent})
       for (const Hit& h : *hits) sum = mix(mix(sum, h.prim), bits_of(h.t));
     for (uint8_t o : occluded) sum = mix(sum, o);
     if (reference == 0) reference = sum;
-    std::printf("%-14s %10.3f %10.1f %10zu | %10.2f %10.2f %10.2f | %016llx %s\n", accel.c_str(), scene.build_seconds,
+    std::printf("%-14s %10.3f %10.1f %10zu | %10.2f %10.2f %10.2f | %016llx %s\n", enum_name(accel), scene.build_seconds,
                 acceleration_bytes(scene) / 1048576.0, node_count(scene), mp, mi, ms, static_cast<unsigned long long>(sum),
                 sum == reference ? "same" : "DIFFERENT");
-    if (sum != reference) throw std::runtime_error(accel + ": hits differ from " + accels[0] + "'s (DESIGN.md rule 4)");
+    if (sum != reference) throw std::runtime_error(std::string(enum_name(accel)) + ": hits differ from " + enum_name(accels[0]) + "'s (DESIGN.md rule 4)");
   }
   if (embree_available()) {
-    const Scene scene = load_bench_scene(cmd.scene, "none", 0);
+    const Scene scene = load_bench_scene(cmd.scene, AccelKind::None, 0);
     const EmbreeRow e = embree_bench(scene, rays.primary, rays.incoherent, rays.shadow, rays.shadow_tmax,
                                      reference_primary, reference_incoherent, threads);
     std::printf("%-14s %10.3f %10.1f %10s | %10.2f %10.2f %10.2f | %.4f%% of closest hits on the same primitive\n",

@@ -37,18 +37,18 @@ std::vector<Knob> knobs(bool cubemap_sky) {
     return o;
   };
   k.push_back({"baseline", "scene settings", {}, false});
-  k.push_back({"nee", "on", with([](RenderOverrides& o) { o.nee = true; }), false});
-  k.push_back({"nee", "off", with([](RenderOverrides& o) { o.nee = false; }), false});
+  k.push_back({"nee", "on", with([](RenderOverrides& o) { o.nee = Switch::On; }), false});
+  k.push_back({"nee", "off", with([](RenderOverrides& o) { o.nee = Switch::Off; }), false});
   if (cubemap_sky) {
-    k.push_back({"sky_sampling", "on", with([](RenderOverrides& o) { o.sky_sampling = true; }), false});
-    k.push_back({"sky_sampling", "off", with([](RenderOverrides& o) { o.sky_sampling = false; }), false});
+    k.push_back({"sky_sampling", "on", with([](RenderOverrides& o) { o.sky_sampling = Switch::On; }), false});
+    k.push_back({"sky_sampling", "off", with([](RenderOverrides& o) { o.sky_sampling = Switch::Off; }), false});
   }
-  k.push_back({"sampler", "stochastic", with([](RenderOverrides& o) { o.sampler = "stochastic"; }), false});
-  k.push_back({"sampler", "stratified", with([](RenderOverrides& o) { o.sampler = "stratified"; }), true});
+  k.push_back({"sampler", "stochastic", with([](RenderOverrides& o) { o.sampler = SamplerKind::Stochastic; }), false});
+  k.push_back({"sampler", "stratified", with([](RenderOverrides& o) { o.sampler = SamplerKind::Stratified; }), true});
   k.push_back({"fresnel", "schlick", with([](RenderOverrides& o) { o.fresnel = FresnelKind::Schlick; }), false});
   k.push_back({"fresnel", "exact", with([](RenderOverrides& o) { o.fresnel = FresnelKind::Exact; }), false});
-  k.push_back({"triangle", "watertight", with([](RenderOverrides& o) { o.triangle_test = "watertight"; }), false});
-  k.push_back({"triangle", "moller-trumbore", with([](RenderOverrides& o) { o.triangle_test = "moller-trumbore"; }), false});
+  k.push_back({"triangle", "watertight", with([](RenderOverrides& o) { o.triangle_test = TriangleTest::Watertight; }), false});
+  k.push_back({"triangle", "moller-trumbore", with([](RenderOverrides& o) { o.triangle_test = TriangleTest::MollerTrumbore; }), false});
   for (uint32_t d : {1u, 3u, 8u, 65u})
     k.push_back({"rr_depth", d == 65u ? "off" : std::to_string(d), with([d](RenderOverrides& o) { o.rr_depth = d; }), false});
   for (uint32_t d : {1u, 2u, 4u, 8u, 16u})
@@ -58,13 +58,8 @@ std::vector<Knob> knobs(bool cubemap_sky) {
 
 // Applies a knob's overrides on top of the common ones.
 RenderOverrides combine(RenderOverrides base, const RenderOverrides& knob) {
-  if (knob.nee) base.nee = knob.nee;
-  if (knob.sky_sampling) base.sky_sampling = knob.sky_sampling;
-  if (knob.sampler) base.sampler = knob.sampler;
-  if (knob.triangle_test) base.triangle_test = knob.triangle_test;
+  base.override_with(knob);
   if (knob.fresnel) base.fresnel = knob.fresnel;
-  if (knob.rr_depth) base.rr_depth = knob.rr_depth;
-  if (knob.max_depth) base.max_depth = knob.max_depth;
   return base;
 }
 
@@ -78,7 +73,7 @@ int run_bench_trade(const BenchTradeCommand& cmd) {
   const Scene probe = load_scene(cmd.scene, base);
   if (probe.settings.integrator != IntegratorKind::Path)
     throw InputError(cmd.scene + ": bench trade measures the path integrator's knobs; give a scene with \"integrator\": \"path\"");
-  if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) base.sampler = "stochastic";
+  if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) base.sampler = SamplerKind::Stochastic;
   std::printf("tracer bench trade %s: %ux%u, %u spp budget; seconds are the median of %d renders\n",
               cmd.scene.c_str(), probe.settings.width, probe.settings.height, cmd.spp, kRepeats);
   const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 16 * cmd.spp, cmd.threads,

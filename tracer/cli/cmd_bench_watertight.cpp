@@ -33,7 +33,7 @@ int run_bench_watertight(const BenchWatertightCommand& cmd) {
     WatertightProbe result[2];
     uint32_t triangles = 0;
     for (int k = 0; k < 2; ++k) {
-      const Scene mesh = load_probe_mesh(path, k == 0 ? "watertight" : "moller-trumbore");
+      const Scene mesh = load_probe_mesh(path, k == 0 ? TriangleTest::Watertight : TriangleTest::MollerTrumbore);
       triangles = static_cast<uint32_t>(mesh.primitives.size());
       result[k] = probe_watertight(mesh, inside_points(mesh), cmd.edge_points, cmd.threads);
     }

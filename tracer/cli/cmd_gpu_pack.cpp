@@ -10,6 +10,7 @@
 
 #include "bundle/scene_bundle.h"
 #include "cli/commands.h"
+#include "options/enum_names.h"
 #include "golden/golden_manifest.h"
 #include "io/input_error.h"
 #include "bench/mesh_generators.h"
@@ -40,12 +41,12 @@ const char* kRunScript =
 
 const char* kMathNames[] = {"sin", "cos", "tan", "asin", "acos", "atan2", "exp", "log", "pow"};
 const char* kTraceScenes[] = {"cornell-box", "mesh", "refraction"};
-const char* kAccels[] = {"bvh", "lbvh", "kdtree", "kdtree-median", "grid", "none"};
+const AccelKind kAccels[] = {AccelKind::Bvh, AccelKind::Lbvh, AccelKind::Kdtree, AccelKind::KdtreeMedian, AccelKind::Grid, AccelKind::None};
 
-Scene golden_scene(const GoldenManifest& manifest, const std::string& name, const char* accel) {
+Scene golden_scene(const GoldenManifest& manifest, const std::string& name, std::optional<AccelKind> accel) {
   const GoldenEntry& e = manifest.find(name);
-  RenderOverrides o = e.options.overrides();
-  if (accel) o.accel = accel;
+  RenderOverrides o{e.options};
+  o.accel = accel ? accel : e.options.accel;
   return load_scene(manifest.scene_path(e), o);
 }
 
@@ -59,17 +60,17 @@ std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
   cases.push_back({"philox", {ParityKind::Philox, 0, 7, 1u << 21, 0, {}, {}}, {}});
   cases.push_back({"shapes", {ParityKind::Shapes, 0, 11, 1u << 20, 0, {}, {}}, {}});
   for (const char* name : kTraceScenes) {
-    const Scene bvh = golden_scene(manifest, name, "bvh");
+    const Scene bvh = golden_scene(manifest, name, AccelKind::Bvh);
     const BvhNode& root = bvh.bvh_nodes.at(0);  // ray origins fill the scene's bounds
-    for (const char* accel : kAccels) {
-      const Scene scene = std::string(accel) == "bvh" ? bvh : golden_scene(manifest, name, accel);
-      const std::string label = std::string("trace-") + name + "-" + accel;
+    for (const AccelKind accel : kAccels) {
+      const Scene scene = accel == AccelKind::Bvh ? bvh : golden_scene(manifest, name, accel);
+      const std::string label = std::string("trace-") + name + "-" + enum_name(accel);
       cases.push_back({label, {ParityKind::Trace, 0, 13, 1u << 18, 0, root.lo, root.hi},
                        make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, label)});
     }
   }
   cases.push_back({"lbvh-build-1m", {ParityKind::Lbvh, 0, 17, 1u << 20, 0, {}, {}}, {}});
-  const Scene sample = golden_scene(manifest, "cornell-box", nullptr);
+  const Scene sample = golden_scene(manifest, "cornell-box", std::nullopt);
   cases.push_back({"sample-cornell-box", {ParityKind::Sample, 0, 0, 0, 0, {}, {}},
                    make_scene_bundle(sample, sample.view(), {0, sample.settings.spp}, "sample-cornell-box")});
   return cases;
@@ -79,14 +80,14 @@ std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
 // the Cornell box per sampler, per effect and per resolution, and a generated 100k-triangle
 // mesh. bench.tsv rows: "TABLE LABEL FILE"; `tracer-gpu bench` times them.
 std::string write_bench(const fs::path& root, const fs::path& out) {
-  struct Sampler { const char* label; const char* sampler; uint32_t spp; };
-  const Sampler samplers[] = {{"1spp-center", "center", 1}, {"2spp-stochastic", "stochastic", 2}, {"4spp-grid", "grid", 4}};
+  struct Sampler { const char* label; SamplerKind sampler; uint32_t spp; };
+  const Sampler samplers[] = {{"1spp-center", SamplerKind::Center, 1}, {"2spp-stochastic", SamplerKind::Stochastic, 2}, {"4spp-grid", SamplerKind::Grid, 4}};
   fs::create_directories(out / "bench");
   std::string list = "# table label file: `tracer-gpu bench DIR` times every row\n";
   const auto add = [&](const std::string& table, const std::string& label, const std::string& scene_path,
-                       uint32_t width, uint32_t height, const Sampler& s, uint32_t effects) {
+                       uint32_t width, uint32_t height, const Sampler& s, Effects effects) {
     RenderOverrides o;
-    o.width = width, o.height = height, o.sampler = s.sampler, o.spp = s.spp, o.effects = effects, o.integrator = "whitted";
+    o.width = width, o.height = height, o.sampler = s.sampler, o.spp = s.spp, o.effects = effects, o.integrator = IntegratorKind::Whitted;
     const Scene scene = load_scene(scene_path, o);
     const std::string file = "bench/" + table + "-" + label + ".bundle";
     write_bundle((out / file).string(),
@@ -95,7 +96,7 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
   };
   const std::string cornell = (root / "scenes/cornell-box.json").string();
   for (const Sampler& s : {samplers[0], samplers[2]}) add("main", std::string("cornell-box-") + s.label, cornell, 720, 480, s, kEffectAll);
-  const std::pair<const char*, uint32_t> effects[] = {{"none", 0u},
+  const std::pair<const char*, Effects> effects[] = {{"none", kEffectNone},
                                                       {"shadows", kEffectShadows},
                                                       {"reflections", kEffectReflection},
                                                       {"refractions", kEffectRefraction},
@@ -160,7 +161,7 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
   fs::create_directories(out / "parity");
   std::string list = "# kind name file expected: the golden's pixel hash, or - (the parity case holds its own)\n";
   for (const GoldenEntry& e : manifest.entries) {
-    const Scene scene = load_scene(manifest.scene_path(e), e.options.overrides());
+    const Scene scene = load_scene(manifest.scene_path(e), RenderOverrides{e.options});
     const std::string file = "bundles/" + e.name + ".bundle";
     write_bundle((out / file).string(),
                  encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, e.scene)));

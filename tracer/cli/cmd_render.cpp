@@ -9,12 +9,11 @@
 
 #include "accel/acceleration.h"
 #include "cli/commands.h"
-#include "render/effects.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
 #include "render/partial_file.h"
 #include "render/progress.h"
-#include "render/render_options.h"
+#include "options/render_options.h"
 #include "render/render_cpu.h"
 #include "render/render_cuda.h"
 #include "scene/scene_loader.h"
@@ -41,20 +40,17 @@ void check_output_path(const std::string& path, bool partial) {
   if (!OIIO::ImageOutput::create(path)) throw InputError(path + ": no image writer for extension " + p.extension().string());
 }
 
-// What makes two partial files parts of one render: every resolved option and the effects.
+// What makes two partial files parts of one render: every option its identity records.
 Json render_identity(const Scene& scene) {
-  Json j = Json::parse(resolved_options(scene).to_json().dump());
-  j["effects"] = scene.settings.effects;
-  return j;
+  return Json::parse(recorded_options(scene.settings, scene.background.kind).to_json().dump());
 }
 
 }  // namespace
 
 RenderOverrides scene_overrides(const RenderCommand& cmd) {
-  RenderOverrides overrides = cmd.overrides;
-  if (!cmd.effects.empty()) overrides.effects = parse_effects(cmd.effects);
-  if (!cmd.nee.empty()) overrides.nee = cmd.nee == "on";
-  if (!cmd.sky_sampling.empty()) overrides.sky_sampling = cmd.sky_sampling == "on";
+  RenderOverrides overrides;
+  for (const auto& [name, text] : cmd.options)
+    if (text) parse_option_text(name, *text, cmd.scene + ": command line ", overrides);
   return overrides;
 }
 
@@ -128,6 +124,7 @@ int run_render(const RenderCommand& cmd) {
     j["accel"] = {{"kind", accel.name}, {"nodes", accel.nodes}};
     if (rs.accel == AccelKind::Grid) j["accel"]["cells"] = accel.cells;
     j["features"] = feature_names(scene.features);
+    j["options"] = resolved_options(rs).to_json();
     write_text_atomically(cmd.stats, j.dump(2) + "\n");
   }
   if (!cmd.quiet && cmd.device == "cuda")

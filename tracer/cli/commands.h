@@ -1,6 +1,8 @@
 // The CLI's subcommands; each returns the process exit code (0 ok, 1 comparison failed,
 // 2 bad input or error). main.cpp parses the command line with CLI11.
 #pragma once
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,12 +14,9 @@ namespace tracer {
 
 struct RenderCommand {
   std::string scene, output, stats;
-  RenderOverrides overrides;
+  std::map<std::string, std::optional<std::string>> options;  // --spp 4: "spp" -> "4", for every option of the table
   int threads = 0;
   std::string device = "cpu";
-  std::string effects;  // --effects list; empty: all
-  std::string nee;      // --nee on|off; empty: the scene's render.nee (default on)
-  std::string sky_sampling;  // --sky-sampling on|off; empty: the scene's render.sky_sampling (default on)
   std::string samples;  // --samples A:B: write samples [A, B) to a partial file
   bool quiet = false;
 };
@@ -83,7 +82,7 @@ struct GenerateCommand {
 };
 
 int run_render(const RenderCommand& cmd);
-RenderOverrides scene_overrides(const RenderCommand& cmd);  // --spp ... plus --effects, --nee, --sky-sampling
+RenderOverrides scene_overrides(const RenderCommand& cmd);  // the options given on the command line
 int run_bundle(const RenderCommand& cmd);
 int run_gpu_pack(const GpuPackCommand& cmd);
 int run_bench_rays(const BenchRaysCommand& cmd);

@@ -19,22 +19,7 @@ void add_bench_size_options(CLI::App* app, uint32_t& width, uint32_t& height, in
 // The options that decide what a render computes: `render` and `bundle` share them.
 void add_scene_options(CLI::App* app, tracer::RenderCommand& cmd) {
   app->add_option("scene", cmd.scene, "scene file (JSON)")->required();
-  app->add_option("--spp", cmd.overrides.spp, "samples per pixel");
-  app->add_option("--seed", cmd.overrides.seed, "64-bit seed");
-  app->add_option("--width", cmd.overrides.width, "image width in pixels");
-  app->add_option("--height", cmd.overrides.height, "image height in pixels");
-  app->add_option("--integrator", cmd.overrides.integrator, "whitted, path, normals, albedo or depth");
-  app->add_option("--max-depth", cmd.overrides.max_depth, "maximum ray depth");
-  app->add_option("--sampler", cmd.overrides.sampler, "center, grid, stochastic or stratified");
-  app->add_option("--accel", cmd.overrides.accel, "bvh (default), kdtree, kdtree-median, grid, lbvh or none");
-  app->add_option("--triangle-test", cmd.overrides.triangle_test, "watertight (default) or moller-trumbore");
-  app->add_option("--grid-resolution", cmd.overrides.grid_resolution, "grid: cells along the longest axis (default: about 3 per primitive)");
-  app->add_option("--nee", cmd.nee, "path: next-event estimation with MIS, on (default) or off (the plain estimator)")
-      ->check(CLI::IsMember({"on", "off"}));
-  app->add_option("--sky-sampling", cmd.sky_sampling, "path: sample a cube-map sky as a light, on (default) or off (only BSDF rays find it)")
-      ->check(CLI::IsMember({"on", "off"}));
-  app->add_option("--rr-depth", cmd.overrides.rr_depth, "path: Russian roulette from this many bounces on (default 3)");
-  app->add_option("--effects", cmd.effects, "Whitted effects to trace: all (default), none, or a list of shadows,reflections,refractions");
+  for (const tracer::OptionInfo& o : tracer::option_table()) app->add_option(tracer::option_flag(o.name), cmd.options[o.name], o.help);
   app->add_option("--samples", cmd.samples, "A:B renders only samples [A, B) of every pixel (render: into NAME.partial, for tracer merge)");
 }
 

@@ -30,7 +30,7 @@ GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& en
   if (!std::filesystem::is_regular_file(scene_path))
     throw InputError(manifest.path + ": goldens." + entry.name + ".scene: scene file " + scene_path + " does not exist");
   const auto start = std::chrono::steady_clock::now();
-  const Scene scene = load_scene(scene_path, entry.options.overrides());
+  const Scene scene = load_scene(scene_path, RenderOverrides{entry.options});
   GoldenRender r;
   RenderStats stats;
   if (device == GoldenDevice::Cuda) {
@@ -43,7 +43,7 @@ GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& en
   r.nonfinite_samples = stats.nonfinite_samples;
   r.overflow_samples = stats.overflow_samples;
   r.hash = pixel_hash(r.image);
-  r.options = resolved_options(scene);
+  r.options = recorded_options(scene.settings, scene.background.kind);
   return r;
 }
 

@@ -17,27 +17,10 @@ bool valid_name(const std::string& name) {
                      [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-'; });
 }
 
-uint32_t read_u32(JsonObject& obj, const std::string& key) {
-  const uint64_t v = obj.unsigned_integer(key);
-  if (v > 0xffffffffu) obj.fail(key, "must fit in 32 bits");
-  return static_cast<uint32_t>(v);
-}
-
-RenderOptions read_options(const Json& value, const std::string& path, const std::string& file) {
+RenderOptions read_entry_options(const Json& value, const std::string& path, const std::string& file) {
   JsonObject obj(value, path, file);
   RenderOptions o;
-  if (obj.find("integrator")) o.integrator = obj.string("integrator");
-  if (obj.find("sampler")) o.sampler = obj.string("sampler");
-  if (obj.find("accel")) o.accel = obj.string("accel");
-  if (obj.find("spp")) o.spp = read_u32(obj, "spp");
-  if (obj.find("width")) o.width = read_u32(obj, "width");
-  if (obj.find("height")) o.height = read_u32(obj, "height");
-  if (obj.find("max_depth")) o.max_depth = read_u32(obj, "max_depth");
-  if (obj.find("seed")) o.seed = obj.unsigned_integer("seed");
-  if (obj.find("nee")) o.nee = obj.boolean_or("nee", true);
-  if (obj.find("rr_depth")) o.rr_depth = read_u32(obj, "rr_depth");
-  if (obj.find("sky_sampling")) o.sky_sampling = obj.boolean_or("sky_sampling", true);
-  if (obj.find("triangle_test")) o.triangle_test = obj.string("triangle_test");
+  read_options(obj, nullptr, o);
   obj.finish();
   return o;
 }
@@ -68,7 +51,7 @@ GoldenEntry read_entry(const std::string& name, const Json& value, const std::st
     obj.fail("scene", "expected a path relative to the source root, got \"" + e.scene + "\"");
   const Json empty = Json::object();
   const Json* options = obj.find("options");
-  e.options = read_options(options ? *options : empty, obj.child("options"), file);
+  e.options = read_entry_options(options ? *options : empty, obj.child("options"), file);
   e.hash = obj.string_or("hash", "");
   if (!e.hash.empty() && (e.hash.rfind("sha1:", 0) != 0 || e.hash.size() != 45))
     obj.fail("hash", "expected \"sha1:\" and 40 hex digits, got \"" + e.hash + "\"");

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/json_reader.h"
-#include "render/render_options.h"
+#include "io/json_reader.h"
+#include "options/render_options.h"
 #include "scene/scene.h"
 
 namespace tracer {

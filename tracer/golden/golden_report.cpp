@@ -8,7 +8,7 @@
 
 #include "image/image_io.h"
 #include "io/input_error.h"
-#include "scene/json_reader.h"
+#include "io/json_reader.h"
 #include "golden/shell.h"
 #include "io/text_file.h"
 
@@ -41,12 +41,13 @@ std::string html_escape(const std::string& s) {
   return out;
 }
 
+// "integrator whitted, sampler grid, spp 4, ...": every recorded option, in table order.
 std::string options_summary(const RenderOptions& o) {
-  std::ostringstream s;
-  s << o.integrator.value_or("?") << ", " << o.spp.value_or(0) << " spp " << o.sampler.value_or("?") << ", seed "
-    << o.seed.value_or(0) << ", " << o.width.value_or(0) << "x" << o.height.value_or(0) << ", "
-    << o.accel.value_or("?") << ", max_depth " << o.max_depth.value_or(0);
-  return s.str();
+  const nlohmann::ordered_json options = o.to_json();
+  std::string out;
+  for (const auto& [key, value] : options.items())
+    out += (out.empty() ? "" : ", ") + key + " " + (value.is_string() ? value.get<std::string>() : value.dump());
+  return out;
 }
 
 std::string format_scale(double scale) {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "render/film_buffer.h"
-#include "scene/json_reader.h"
+#include "io/json_reader.h"
 
 namespace tracer {
 

@@ -19,4 +19,23 @@ Camera make_camera(const CameraSpec& spec, uint32_t width, uint32_t height) {
   return cam;
 }
 
+CameraSpec read_camera_spec(const Json& value, const std::string& file) {
+  JsonObject obj(value, "camera", file);
+  CameraSpec spec;
+  spec.from = obj.vec3("from");
+  spec.to = obj.vec3("to");
+  spec.up = obj.vec3_or("up", {0, 1, 0});
+  spec.vfov_degrees = obj.number("vfov");
+  spec.aperture = obj.number_or("aperture", 0.0f);
+  const float dist = length(spec.to - spec.from);
+  spec.focus_distance = obj.number_or("focus_distance", dist);
+  if (!(dist > 0.0f)) obj.fail("to", "must differ from camera.from");
+  if (!(spec.vfov_degrees > 0.0f && spec.vfov_degrees < 180.0f)) obj.fail("vfov", "must be in (0, 180) degrees");
+  if (!(spec.aperture >= 0.0f)) obj.fail("aperture", "must be >= 0");
+  if (!(spec.focus_distance > 0.0f)) obj.fail("focus_distance", "must be > 0");
+  if (!(length(cross(spec.up, spec.to - spec.from)) > 0.0f)) obj.fail("up", "must not be parallel to the view direction");
+  obj.finish();
+  return spec;
+}
+
 }  // namespace tracer

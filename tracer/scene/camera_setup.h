@@ -1,5 +1,8 @@
-// Builds the kernel Camera from the scene's look-at description.
+// The scene file's `camera` key (a look-at description) and the kernel Camera built from it.
 #pragma once
+#include <string>
+
+#include "io/json_reader.h"
 #include "kernel/camera/camera.h"
 
 namespace tracer {
@@ -10,6 +13,9 @@ struct CameraSpec {
   float aperture;        // lens diameter; 0 is a pinhole
   float focus_distance;  // distance to the plane in focus
 };
+
+// Reads and checks the `camera` object; errors name the file and key.
+CameraSpec read_camera_spec(const Json& value, const std::string& file);
 
 Camera make_camera(const CameraSpec& spec, uint32_t width, uint32_t height);
 

@@ -86,7 +86,7 @@ void build_light_table(Scene& scene) {
     scene.light_table.push_back({LightKind::Shape, id, 0.0f, 0.0f});
     power.push_back(kPi * luminance(m.radiance) * primitive_area(p) * (m.two_sided ? 2.0 : 1.0));
   }
-  if (scene.background.kind == BackgroundKind::Cubemap && scene.settings.sky_sampling != 0 &&
+  if (scene.background.kind == BackgroundKind::Cubemap && scene.settings.sky_sampling == Switch::On &&
       scene.settings.integrator == IntegratorKind::Path) {
     const double luminance_integral = build_sky_cells(scene);
     if (luminance_integral > 0.0) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "options/render_options.h"
 #include "scene/scene_arrays.h"
 
 namespace tracer {
@@ -31,20 +32,6 @@ struct Scene : SceneArrays {
   double build_seconds = 0.0;                    // acceleration-structure build time
 
   SceneView view() const;
-};
-
-// Command-line overrides of the scene's `render` and `film` keys.
-struct RenderOverrides {
-  std::optional<uint32_t> spp, width, height, max_depth;
-  std::optional<uint32_t> effects;  // EffectBit mask (`--effects`); all effects when unset
-  std::optional<bool> nee;          // path: next-event estimation (`--nee on|off`)
-  std::optional<bool> sky_sampling; // path: a cube-map sky sampled as a light (`--sky-sampling on|off`)
-  std::optional<uint32_t> rr_depth; // path: Russian roulette depth (`--rr-depth`)
-  std::optional<FresnelKind> fresnel;  // every dielectric's Fresnel model (`bench trade`)
-  std::optional<uint32_t> grid_resolution;  // `--grid-resolution`
-  std::optional<std::string> triangle_test;  // watertight or moller-trumbore (`--triangle-test`)
-  std::optional<uint64_t> seed;
-  std::optional<std::string> integrator, sampler, accel;
 };
 
 }  // namespace tracer

@@ -1,18 +1,30 @@
 #include "scene/scene_types.h"
 
 #include <algorithm>
+#include <iterator>
+
+#include "options/enum_names.h"
 
 namespace tracer {
+
+namespace {
+
+template <class E>
+std::vector<std::string> names_of() {
+  return {std::begin(EnumNames<E>::names), std::end(EnumNames<E>::names)};
+}
+
+}  // namespace
 
 const std::map<std::string, std::vector<std::string>>& accepted_scene_types() {
   static const std::map<std::string, std::vector<std::string>> types = {
       {"shape", {"sphere", "plane", "triangle", "quad", "box", "mesh"}},
-      {"material", {"lambert", "metal", "dielectric", "phong", "emissive"}},
+      {"material", names_of<MaterialKind>()},
       {"light", {"point"}},
-      {"background", {"constant", "gradient", "cubemap"}},
-      {"integrator", {"whitted", "normals", "albedo", "depth", "path"}},
-      {"sampler", {"center", "grid", "stochastic", "stratified"}},
-      {"accel", {"bvh", "none", "kdtree", "kdtree-median", "grid", "lbvh"}},
+      {"background", names_of<BackgroundKind>()},
+      {"integrator", names_of<IntegratorKind>()},
+      {"sampler", names_of<SamplerKind>()},
+      {"accel", names_of<AccelKind>()},
       {"texture", {"image", "checker", "specular_map", "normal_map", "bump_map"}},
       {"transform", {"translate", "scale", "rotate", "rotate_xyz"}},
   };
@@ -24,14 +36,13 @@ bool is_accepted_type(const std::string& category, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-std::string expected_types(const std::string& category) {
-  const auto& names = accepted_scene_types().at(category);
-  std::string out;
-  for (size_t i = 0; i < names.size(); ++i) {
-    if (i > 0) out += i + 1 == names.size() ? " or " : ", ";
-    out += names[i];
-  }
-  return out;
+std::string expected_types(const std::string& category) { return name_list(accepted_scene_types().at(category)); }
+
+std::string read_type(JsonObject& obj, const std::string& category) {
+  const std::string type = obj.string("type");
+  if (!is_accepted_type(category, type))
+    obj.fail("type", "unknown " + category + " type \"" + type + "\" (expected " + expected_types(category) + ")");
+  return type;
 }
 
 }  // namespace tracer

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "io/json_reader.h"
+
 namespace tracer {
 
 // Category ("shape", "material", "light", "background", "integrator", "sampler", "accel",
@@ -15,6 +17,9 @@ namespace tracer {
 const std::map<std::string, std::vector<std::string>>& accepted_scene_types();
 
 bool is_accepted_type(const std::string& category, const std::string& name);
+
+// Reads the `type` key of a section and checks it against the table of `category`.
+std::string read_type(JsonObject& obj, const std::string& category);
 
 // "sphere, plane, triangle, quad, box or mesh": for "expected ..." messages.
 std::string expected_types(const std::string& category);

@@ -9,7 +9,7 @@
 #include <tuple>
 #include <string>
 
-#include "scene/json_reader.h"
+#include "io/json_reader.h"
 #include "scene/scene.h"
 
 namespace tracer {

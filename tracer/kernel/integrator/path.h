@@ -27,7 +27,7 @@ TRACER_HD bool light_visible(const SceneView& scene, const Surface& s, const Lig
 
 TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, uint32_t sample, RayCounts& counts) {
   const RenderSettings& rs = scene.settings;
-  const bool nee = rs.nee != 0 && scene.light_entry_count > 0;
+  const bool nee = rs.nee == Switch::On && scene.light_entry_count > 0;
   Vec3 radiance = {0.0f, 0.0f, 0.0f}, throughput = {1.0f, 1.0f, 1.0f};
   float bsdf_pdf = 0.0f;
   bool specular = true;  // the camera ray: emission it sees counts fully

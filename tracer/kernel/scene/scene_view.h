@@ -10,15 +10,13 @@
 #include "kernel/accel/kd_node.h"
 #include "kernel/shading/material.h"
 #include "kernel/geom/primitive.h"
+#include "kernel/scene/render_settings.h"
 #include "kernel/scene/scene_arrays.h"
 #include "kernel/camera/sampler.h"
 
 namespace tracer {
 
-enum class AccelKind : uint32_t { Bvh, None, Kdtree, KdtreeMedian, Grid, Lbvh };
-enum class IntegratorKind : uint32_t { Whitted, Normals, Albedo, Depth, Path };
 enum class BackgroundKind : uint32_t { Constant, Gradient, Cubemap };
-enum class TriangleTest : uint32_t { Watertight, MollerTrumbore };
 
 struct PointLight {
   Vec3 position;
@@ -47,28 +45,6 @@ struct Background {
   Vec3 radiance;      // constant; the zenith colour for gradient
   Vec3 horizon;       // gradient only
   uint32_t faces[6];  // cubemap: textures of the faces +x, -x, +y, -y, +z, -z
-};
-
-// Whitted effects that can be switched off to measure their cost (`--effects`, `tracer
-// bench device`). Off, shadows let every light through; reflection and refraction rays
-// (including a dielectric's Fresnel reflection) are not traced.
-enum EffectBit : uint32_t { kEffectShadows = 1u, kEffectReflection = 2u, kEffectRefraction = 4u, kEffectAll = 7u };
-
-struct RenderSettings {
-  IntegratorKind integrator;
-  SamplerKind sampler;
-  AccelKind accel;
-  uint32_t spp;
-  uint32_t grid_n;  // sqrt(spp) for grid and stratified
-  uint32_t max_depth;
-  uint64_t seed;
-  uint32_t width, height;
-  uint32_t effects;  // EffectBit mask; kEffectAll unless a benchmark says otherwise
-  uint32_t nee;      // path: next-event estimation with MIS (1) or the plain estimator (0)
-  uint32_t rr_depth; // path: Russian roulette from this many bounces on
-  uint32_t grid_resolution;  // grid: cells along the longest axis; 0 picks by density
-  TriangleTest triangle_test;  // watertight (default) or Moller-Trumbore, for the trade
-  uint32_t sky_sampling;     // path with NEE: a cube-map sky is a light of the table (1) or only found by BSDF rays (0)
 };
 
 struct SceneView {

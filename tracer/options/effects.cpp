@@ -1,39 +1,49 @@
-#include "render/effects.h"
+#include "options/effects.h"
 
 #include <sstream>
 
 #include "io/input_error.h"
-#include "kernel/scene/scene_view.h"
 
 namespace tracer {
 namespace {
 
 struct EffectName {
   const char* name;
-  uint32_t bit;
+  Effects bit;
 };
 constexpr EffectName kEffects[] = {{"shadows", kEffectShadows}, {"reflections", kEffectReflection}, {"refractions", kEffectRefraction}};
 
 }  // namespace
 
-uint32_t parse_effects(const std::string& list) {
+Effects parse_effects(const std::string& list, const std::string& where) {
   if (list == "all") return kEffectAll;
-  if (list == "none") return 0;
+  if (list == "none") return kEffectNone;
   uint32_t mask = 0;
   std::stringstream items(list);
   std::string item;
+  bool any = false;
   while (std::getline(items, item, ',')) {
     bool known = false;
     for (const EffectName& e : kEffects)
       if (item == e.name) mask |= e.bit, known = true;
     if (!known)
-      throw InputError("--effects " + list + ": unknown effect \"" + item +
+      throw InputError(where + ": unknown effect \"" + item +
                        "\" (expected a comma-separated list of shadows, reflections, refractions, or all, or none)");
+    any = true;
   }
-  return mask;
+  if (!any) throw InputError(where + ": expected all, none, or a comma-separated list of shadows, reflections, refractions");
+  return static_cast<Effects>(mask);
 }
 
-std::string effects_name(uint32_t mask) {
+std::string effects_text(Effects mask) {
+  if (mask == kEffectAll) return "all";
+  std::string out;
+  for (const EffectName& e : kEffects)
+    if (mask & e.bit) out += (out.empty() ? "" : ",") + std::string(e.name);
+  return out.empty() ? "none" : out;
+}
+
+std::string effects_name(Effects mask) {
   if (mask == kEffectAll) return "all";
   std::string out = "shading";
   for (const EffectName& e : kEffects)

@@ -1,4 +1,4 @@
-#include "scene/json_reader.h"
+#include "io/json_reader.h"
 
 #include <cmath>
 

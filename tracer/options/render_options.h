@@ -1,0 +1,64 @@
+// The host side of the options table (TRACER_RENDER_OPTIONS in kernel/scene/render_settings.h):
+// every setting read from the scene file's `render` and `film` keys, overridden by the
+// command line, recorded in a golden's manifest entry and in a partial file's identity, and
+// reported by --stats, all by looping over that one list.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "kernel/scene/render_settings.h"
+#include "kernel/shading/material.h"
+#include "io/json_reader.h"
+#include "kernel/scene/scene_view.h"
+
+namespace tracer {
+
+// When an identity (manifest entry, partial file) records an option: it decides the pixels.
+enum class Record { Always, PathTracer, PathTracerUnderCubemap, UnlessDefault };
+
+// One row of the table, for loops that need no value: the CLI's flags, docs, messages.
+struct OptionInfo {
+  const char* name;     // field, scene key and manifest key: "max_depth"
+  const char* section;  // the scene file's object holding it: "render" or "film"
+  Record recorded;
+  const char* help;
+};
+const std::vector<OptionInfo>& option_table();
+std::string option_flag(const std::string& name);  // "--max-depth"
+
+// Every option, each unset unless given.
+struct RenderOptions {
+#define TRACER_OPTION_FIELD(name, Type, ...) std::optional<Type> name;
+  TRACER_RENDER_OPTIONS(TRACER_OPTION_FIELD)
+#undef TRACER_OPTION_FIELD
+
+  bool complete() const;                    // every option recorded Always is set
+  bool has(const std::string& name) const;  // the option of that name is set
+  void apply_to(RenderSettings& settings) const;  // the set options replace the settings' values
+  void override_with(const RenderOptions& other);  // the options set in `other` replace these
+  nlohmann::ordered_json to_json() const;   // the set options in table order
+};
+
+// Command-line overrides of a scene: the options, and the Fresnel model of every dielectric
+// (a `bench trade` knob, not an option of the renderer).
+struct RenderOverrides : RenderOptions {
+  std::optional<FresnelKind> fresnel;
+};
+
+// Reads the options of `section` ("render", "film"; nullptr: every option) present in obj;
+// errors name the file and key.
+void read_options(JsonObject& obj, const char* section, RenderOptions& into);
+
+// Sets the option `name` from command-line text; an InputError names `context` (the scene
+// file and "command line ") and the flag. Numbers are decimal digits only; switches are on or off.
+void parse_option_text(const std::string& name, const std::string& text, const std::string& context,
+                       RenderOptions& into);
+
+// Every option of resolved settings, and those of them an identity records (the background
+// decides whether sky sampling matters).
+RenderOptions resolved_options(const RenderSettings& settings);
+RenderOptions recorded_options(const RenderSettings& settings, BackgroundKind background);
+
+}  // namespace tracer

@@ -1,0 +1,51 @@
+#include "scene/settings_reader.h"
+
+#include "kernel/integrator/ray_counts.h"
+#include "options/enum_names.h"
+
+namespace tracer {
+
+RenderSettings read_settings(const Json* render, const Json& film, const std::string& file,
+                             const RenderOverrides& overrides, std::set<std::string>& used_types) {
+  const Json empty = Json::object();
+  RenderOptions from_file;
+  JsonObject render_obj(render ? *render : empty, "render", file);
+  read_options(render_obj, "render", from_file);
+  render_obj.finish();
+  JsonObject film_obj(film, "film", file);
+  read_options(film_obj, "film", from_file);
+  film_obj.finish();
+
+  RenderSettings rs{};
+  from_file.apply_to(rs);
+  overrides.apply_to(rs);
+  // Where an option's value came from, for the messages below.
+  const auto where = [&](const std::string& name) {
+    if (overrides.has(name)) return file + ": command line " + option_flag(name);
+    for (const OptionInfo& o : option_table())
+      if (name == o.name) return file + ": " + o.section + "." + name;
+    return file + ": " + name;
+  };
+
+  used_types.insert(std::string("sampler:") + enum_name(rs.sampler));
+  used_types.insert(std::string("integrator:") + enum_name(rs.integrator));
+  used_types.insert(std::string("accel:") + enum_name(rs.accel));
+  if (rs.spp == 0) throw InputError(where("spp") + ": spp must be at least 1");
+  if (rs.max_depth > kMaxDepth) throw InputError(where("max_depth") + ": must be at most " + std::to_string(kMaxDepth));
+  if (rs.grid_resolution > 1024)
+    throw InputError(where("grid_resolution") + ": must be at most 1024 cells along the longest axis");
+  for (const auto& [size, name] : {std::pair{rs.width, "width"}, std::pair{rs.height, "height"}})
+    if (size < 1 || size > kMaxResolution)
+      throw InputError(where(name) + ": must be in [1, " + std::to_string(kMaxResolution) + "], got " + std::to_string(size));
+  rs.grid_n = 1;
+  while (static_cast<uint64_t>(rs.grid_n) * rs.grid_n < rs.spp) ++rs.grid_n;
+  const bool square = static_cast<uint64_t>(rs.grid_n) * rs.grid_n == rs.spp;
+  if (rs.sampler == SamplerKind::Center && rs.spp != 1)
+    throw InputError(where("sampler") + ": the center sampler takes exactly 1 spp, got " + std::to_string(rs.spp));
+  if ((rs.sampler == SamplerKind::Grid || rs.sampler == SamplerKind::Stratified) && !square)
+    throw InputError(where("spp") + ": the " + enum_name(rs.sampler) +
+                     " sampler needs a square spp (1, 4, 9, 16, ...), got " + std::to_string(rs.spp));
+  return rs;
+}
+
+}  // namespace tracer
