@@ -97,7 +97,7 @@ TEST(ExtremesDegenerate, ZeroAreaMeshFacesAreNeverHitInAScene) {
     const Scene scene = test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
       "film": {"width": 8, "height": 8}, "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
       "shapes": [{"type": "mesh", "material": "m", "positions": [)" + positions + "], \"indices\": [" + indices + "]}]}", ov);
-    EXPECT_EQ(scene.degenerate_triangles, tris.size());
+    EXPECT_EQ(scene.report.degenerate_triangles, tris.size());
     const SceneView view = scene.view();
     Stream s{23};
     int hits = 0;
@@ -129,7 +129,7 @@ std::string floor_scene(bool with_degenerate) {
 
 TEST(ExtremesDegenerate, LoaderLeavesZeroAreaMeshTrianglesOut) {
   const Scene scene = test::scene_from(floor_scene(true));
-  EXPECT_EQ(scene.degenerate_triangles, 4u);
+  EXPECT_EQ(scene.report.degenerate_triangles, 4u);
   int triangles = 0;
   for (const Primitive& p : scene.primitives) triangles += p.kind == ShapeKind::Triangle;
   EXPECT_EQ(triangles, 1);

@@ -101,7 +101,7 @@ TEST(FeatureAudit, EveryGoldenExistsAndDrawsItsType) {
           ADD_FAILURE() << row.category << " " << row.type << ": golden " << name << " is not in golden/manifest.json";
           continue;
         }
-        drawn[name] = load_scene(manifest.scene_path(*it), RenderOverrides{it->options}).used_types;
+        drawn[name] = load_scene(manifest.scene_path(*it), RenderOverrides{it->options}).report.used_types;
       }
       EXPECT_TRUE(drawn[name].count(row.category + ":" + row.type)) << "golden " << name << " does not draw " << row.category << " " << row.type;
     }

@@ -17,7 +17,7 @@ TEST(GoldenCoverage, EveryAcceptedTypeAppearsInAGolden) {
   std::set<std::string> used;
   for (const GoldenEntry& e : manifest.entries) {
     const Scene scene = load_scene(manifest.scene_path(e), RenderOverrides{e.options});
-    used.insert(scene.used_types.begin(), scene.used_types.end());
+    used.insert(scene.report.used_types.begin(), scene.report.used_types.end());
   }
   std::string missing;
   size_t accepted = 0;
@@ -40,7 +40,7 @@ TEST(GoldenCoverage, UsedTypesAreRecordedPerCategory) {
     "shapes": [{"type": "box", "min": [0, 0, 0], "max": [1, 1, 1], "material": "m"}]})");
   const std::set<std::string> expected = {"accel:none",  "background:gradient", "integrator:depth", "light:point",
                                           "material:metal", "sampler:grid",     "shape:box"};
-  EXPECT_EQ(scene.used_types, expected) << "a material no shape uses is not drawn, so it is not counted";
+  EXPECT_EQ(scene.report.used_types, expected) << "a material no shape uses is not drawn, so it is not counted";
 }
 
 }  // namespace

@@ -94,7 +94,7 @@ TEST(Mtl, EveryMappingRowAndFacesWithoutUsemtl) {
   EXPECT_NE(clay.bump_map, kNoTexture);
   EXPECT_EQ(clay.albedo.x, 0.25f) << "a float map is linear; the colour holds its mean";
   for (const char* t : {"material:emissive", "material:dielectric", "material:metal", "material:phong", "material:lambert"})
-    EXPECT_TRUE(scene.used_types.count(t)) << t;
+    EXPECT_TRUE(scene.report.used_types.count(t)) << t;
   std::filesystem::remove_all(dir);
 }
 

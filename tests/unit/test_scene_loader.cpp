@@ -56,7 +56,7 @@ TEST(SceneLoader, BoxIsSixOutwardQuads) {
     const Vec3 face_centre = p.a + p.b * 0.5f + p.c * 0.5f;
     EXPECT_GT(dot(cross(p.b, p.c), face_centre - centre), 0.0f) << "inward-facing box face";
   }
-  EXPECT_EQ(s.shape_counts.at("box"), 1u);
+  EXPECT_EQ(s.report.shape_counts.at("box"), 1u);
 }
 
 TEST(SceneLoader, ObjPolygonsAreFanTriangulatedWithNormalsAndUvs) {

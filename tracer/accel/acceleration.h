@@ -1,26 +1,36 @@
-// Builds the scene's acceleration structure (render.accel): fills scene.bounded (the
-// primitive ids a BVH's leaves index, in leaf order) and scene.unbounded (planes, tested
-// for every ray), then the arrays of the chosen structure.
+// Builds the acceleration structure render.accel names over a scene's primitives: the
+// bounded primitives' ids (in BVH leaf order), the unbounded ones (planes, tested for every
+// ray), and the arrays of the chosen structure. The builders take the primitives and return
+// arrays; the scene loader moves them into the Scene.
 #pragma once
-#include "scene/scene.h"
+#include <span>
+#include <string>
+#include <vector>
+
+#include "accel/accel_summary.h"
+#include "accel/grid_builder.h"
+#include "accel/kdtree_builder.h"
+#include "kernel/accel/bvh_node.h"
+#include "kernel/scene/render_settings.h"
 
 namespace tracer {
 
-void build_acceleration(Scene& scene);
+struct Acceleration {
+  std::vector<uint32_t> bounded, unbounded;
+  std::vector<BvhNode> bvh_nodes;  // bvh and lbvh
+  KdTree kd;                       // kdtree and kdtree-median
+  UniformGrid grid;                // grid
+};
+
+Acceleration build_acceleration(AccelKind kind, std::span<const Primitive> primitives, uint32_t grid_resolution);
 
 // World-space padding of primitive bounds for the kd-tree and the grid: 2^-18 of the
 // largest coordinate magnitude or extent, many ulps beyond any rounding of cell boundaries.
 float structure_pad(Vec3 lo, Vec3 hi);
 
-// What `tracer info` and `--stats` report of the built structure: its name as --accel
-// spells it, its nodes (bvh, lbvh, kd-trees) and its cells (grid).
-struct AccelSummary {
-  std::string name;
-  size_t nodes = 0, cells = 0;
-};
-AccelSummary acceleration_summary(const Scene& scene);
+AccelSummary acceleration_summary(AccelKind kind, const Acceleration& a);
 
 // Bytes the built structure occupies (nodes, cells and index arrays), for `bench rays`.
-size_t acceleration_bytes(const Scene& scene);
+size_t acceleration_bytes(const Acceleration& a);
 
 }  // namespace tracer

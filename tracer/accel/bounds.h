@@ -2,7 +2,7 @@
 #pragma once
 #include <vector>
 
-#include "scene/scene.h"
+#include "kernel/geom/primitive.h"
 
 namespace tracer {
 

@@ -3,6 +3,7 @@
 // The build is sequential and deterministic.
 #pragma once
 #include "accel/bounds.h"
+#include "kernel/accel/bvh_node.h"
 
 namespace tracer {
 

@@ -7,11 +7,9 @@
 
 namespace tracer {
 
-void build_grid(Scene& scene, const std::vector<BuildItem>& items) {
-  scene.grid = GridInfo{};
-  scene.grid_cell_start.clear();
-  scene.grid_prims.clear();
-  if (items.empty()) return;
+UniformGrid build_grid(const std::vector<BuildItem>& items, uint32_t resolution) {
+  UniformGrid grid;
+  if (items.empty()) return grid;
   Bounds box;
   for (const BuildItem& it : items) box.grow(it.bounds);
   const float pad = structure_pad(box.lo, box.hi);
@@ -21,7 +19,6 @@ void build_grid(Scene& scene, const std::vector<BuildItem>& items) {
   const Vec3 extent = box.hi - box.lo;
   const double longest = max_component(extent);
   uint32_t n[3];
-  const uint32_t resolution = scene.settings.grid_resolution;
   const double density = std::cbrt(3.0 * items.size() / (double(extent.x) * extent.y * extent.z));
   for (int a = 0; a < 3; ++a) {
     const double cells = resolution > 0 ? resolution * extent[a] / longest : extent[a] * density;
@@ -29,7 +26,7 @@ void build_grid(Scene& scene, const std::vector<BuildItem>& items) {
   }
   while (uint64_t(n[0]) * n[1] * n[2] > (1u << 24))
     for (uint32_t& c : n) c = std::max(1u, c / 2);
-  GridInfo& g = scene.grid;
+  GridInfo& g = grid.info;
   g.lo = box.lo;
   g.hi = box.hi;
   g.cell = {extent.x / n[0], extent.y / n[1], extent.z / n[2]};
@@ -42,14 +39,14 @@ void build_grid(Scene& scene, const std::vector<BuildItem>& items) {
     last = std::clamp(static_cast<int>(std::floor((it.bounds.hi[a] + pad - g.lo[a]) / g.cell[a])), 0, int(n[a]) - 1);
   };
   const size_t cells = size_t(n[0]) * n[1] * n[2];
-  scene.grid_cell_start.assign(cells + 1, 0);
+  grid.cell_start.assign(cells + 1, 0);
   for (int pass = 0; pass < 2; ++pass) {
     if (pass == 1) {
-      for (size_t c = 0; c < cells; ++c) scene.grid_cell_start[c + 1] += scene.grid_cell_start[c];
-      scene.grid_prims.resize(scene.grid_cell_start[cells]);
+      for (size_t c = 0; c < cells; ++c) grid.cell_start[c + 1] += grid.cell_start[c];
+      grid.prims.resize(grid.cell_start[cells]);
     }
-    std::vector<uint32_t> fill(pass == 1 ? scene.grid_cell_start.begin() : scene.grid_cell_start.end(),
-                               scene.grid_cell_start.end());
+    std::vector<uint32_t> fill(pass == 1 ? grid.cell_start.begin() : grid.cell_start.end(),
+                               grid.cell_start.end());
     for (const BuildItem& it : items) {
       int lo[3], hi[3];
       for (int a = 0; a < 3; ++a) range(it, a, lo[a], hi[a]);
@@ -57,11 +54,12 @@ void build_grid(Scene& scene, const std::vector<BuildItem>& items) {
         for (int y = lo[1]; y <= hi[1]; ++y)
           for (int x = lo[0]; x <= hi[0]; ++x) {
             const size_t c = size_t(x) + n[0] * (size_t(y) + n[1] * size_t(z));
-            if (pass == 0) ++scene.grid_cell_start[c + 1];
-            else scene.grid_prims[fill[c]++] = it.id;
+            if (pass == 0) ++grid.cell_start[c + 1];
+            else grid.prims[fill[c]++] = it.id;
           }
     }
   }
+  return grid;
 }
 
 }  // namespace tracer

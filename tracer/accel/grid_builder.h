@@ -3,9 +3,16 @@
 // box's shape (cells per axis = extent x cbrt(3 N / volume)), capped at 2^24 cells.
 #pragma once
 #include "accel/bounds.h"
+#include "kernel/accel/grid.h"
 
 namespace tracer {
 
-void build_grid(Scene& scene, const std::vector<BuildItem>& items);
+// The grid over `items`: its geometry, and per cell a range of grid_prims (cell_start has
+// one entry per cell and a last one past the end).
+struct UniformGrid {
+  GridInfo info{};
+  std::vector<uint32_t> cell_start, prims;
+};
+UniformGrid build_grid(const std::vector<BuildItem>& items, uint32_t resolution);
 
 }  // namespace tracer

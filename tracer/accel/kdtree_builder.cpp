@@ -13,14 +13,14 @@ constexpr float kTraversalCost = 1.0f, kIntersectionCost = 1.5f, kEmptyBonus = 0
 
 class KdBuilder {
  public:
-  KdBuilder(Scene& scene, const std::vector<BuildItem>& items, KdSplit split, float pad)
-      : scene_(scene), items_(items), split_(split), pad_(pad),
+  KdBuilder(KdTree& tree, const std::vector<BuildItem>& items, KdSplit split, float pad)
+      : tree_(tree), items_(items), split_(split), pad_(pad),
         max_depth_(8 + static_cast<int>(1.3 * std::log2(std::max<size_t>(items.size(), 1)))) {}
 
   void build(const Bounds& box) {
     std::vector<uint32_t> all(items_.size());
     for (uint32_t i = 0; i < all.size(); ++i) all[i] = i;
-    scene_.kd_nodes.push_back({});
+    tree_.nodes.push_back({});
     build_node(0, box, all, 0);
   }
 
@@ -29,8 +29,8 @@ class KdBuilder {
   float hi_of(uint32_t i, int axis) const { return items_[i].bounds.hi[axis] + pad_; }
 
   void make_leaf(uint32_t node, const std::vector<uint32_t>& list) {
-    scene_.kd_nodes[node] = {kKdLeaf, static_cast<uint32_t>(scene_.kd_prims.size()), static_cast<uint32_t>(list.size()), 0.0f};
-    for (uint32_t i : list) scene_.kd_prims.push_back(items_[i].id);
+    tree_.nodes[node] = {kKdLeaf, static_cast<uint32_t>(tree_.prims.size()), static_cast<uint32_t>(list.size()), 0.0f};
+    for (uint32_t i : list) tree_.prims.push_back(items_[i].id);
   }
 
   // The SAH's best split, or false when a leaf is cheaper.
@@ -84,10 +84,10 @@ class KdBuilder {
         if (hi_of(i, axis) >= split) above.push_back(i);
       }
     if (!divide || (below.size() == list.size() && above.size() == list.size())) return make_leaf(node, list);
-    const uint32_t b = static_cast<uint32_t>(scene_.kd_nodes.size());
-    scene_.kd_nodes.push_back({});
-    scene_.kd_nodes.push_back({});
-    scene_.kd_nodes[node] = {static_cast<uint32_t>(axis), b, b + 1, split};
+    const uint32_t b = static_cast<uint32_t>(tree_.nodes.size());
+    tree_.nodes.push_back({});
+    tree_.nodes.push_back({});
+    tree_.nodes[node] = {static_cast<uint32_t>(axis), b, b + 1, split};
     Bounds box_below = box, box_above = box;
     box_below.hi[axis] = split;
     box_above.lo[axis] = split;
@@ -95,7 +95,7 @@ class KdBuilder {
     build_node(b + 1, box_above, above, depth + 1);
   }
 
-  Scene& scene_;
+  KdTree& tree_;
   const std::vector<BuildItem>& items_;
   KdSplit split_;
   float pad_;
@@ -104,19 +104,17 @@ class KdBuilder {
 
 }  // namespace
 
-void build_kdtree(Scene& scene, const std::vector<BuildItem>& items, KdSplit split) {
-  scene.kd_nodes.clear();
-  scene.kd_prims.clear();
-  if (items.empty()) return;
+KdTree build_kdtree(const std::vector<BuildItem>& items, KdSplit split) {
+  KdTree tree;
+  if (items.empty()) return tree;
   Bounds box;
   for (const BuildItem& it : items) box.grow(it.bounds);
-  scene.kd_pad = structure_pad(box.lo, box.hi);
-  const Vec3 p = {scene.kd_pad, scene.kd_pad, scene.kd_pad};
-  box.lo = box.lo - p;
-  box.hi = box.hi + p;
-  scene.kd_lo = box.lo;
-  scene.kd_hi = box.hi;
-  KdBuilder(scene, items, split, scene.kd_pad).build(box);
+  tree.pad = structure_pad(box.lo, box.hi);
+  const Vec3 p = {tree.pad, tree.pad, tree.pad};
+  tree.lo = box.lo - p;
+  tree.hi = box.hi + p;
+  KdBuilder(tree, items, split, tree.pad).build({tree.lo, tree.hi});
+  return tree;
 }
 
 }  // namespace tracer

@@ -5,11 +5,19 @@
 // design's variant). A primitive goes to every child its padded bounds touch.
 #pragma once
 #include "accel/bounds.h"
+#include "kernel/accel/kd_node.h"
 
 namespace tracer {
 
 enum class KdSplit { Sah, Median };
 
-void build_kdtree(Scene& scene, const std::vector<BuildItem>& items, KdSplit split);
+// The tree over `items`: nodes, the primitive ids its leaves list, and its padded box.
+struct KdTree {
+  std::vector<KdNode> nodes;
+  std::vector<uint32_t> prims;
+  Vec3 lo{0, 0, 0}, hi{0, 0, 0};
+  float pad = 0.0f;  // as GridInfo::pad
+};
+KdTree build_kdtree(const std::vector<BuildItem>& items, KdSplit split);
 
 }  // namespace tracer

@@ -7,6 +7,7 @@
 // The tree is laid out in the BvhNode format (children adjacent), so bvh's traversal runs it.
 #pragma once
 #include "accel/bounds.h"
+#include "kernel/accel/bvh_node.h"
 
 namespace tracer {
 

@@ -92,17 +92,6 @@ double throughput(size_t n, int threads, const std::function<void(size_t)>& quer
 
 uint64_t mix(uint64_t h, uint64_t v) { return (h ^ v) * 0x100000001B3ull; }
 
-size_t node_count(const Scene& s) {
-  switch (s.settings.accel) {
-    case AccelKind::Bvh:
-    case AccelKind::Lbvh: return s.bvh_nodes.size();
-    case AccelKind::Kdtree:
-    case AccelKind::KdtreeMedian: return s.kd_nodes.size();
-    case AccelKind::Grid: return size_t(s.grid.n[0]) * s.grid.n[1] * s.grid.n[2];
-    case AccelKind::None: break;
-  }
-  return 0;
-}
 
 }  // namespace
 
@@ -156,8 +145,8 @@ int run_bench_rays(const BenchRaysCommand& cmd) {
       for (const Hit& h : *hits) sum = mix(mix(sum, h.prim), bits_of(h.t));
     for (uint8_t o : occluded) sum = mix(sum, o);
     if (reference == 0) reference = sum;
-    std::printf("%-14s %10.3f %10.1f %10zu | %10.2f %10.2f %10.2f | %016llx %s\n", enum_name(accel), scene.build_seconds,
-                acceleration_bytes(scene) / 1048576.0, node_count(scene), mp, mi, ms, static_cast<unsigned long long>(sum),
+    std::printf("%-14s %10.3f %10.1f %10zu | %10.2f %10.2f %10.2f | %016llx %s\n", enum_name(accel), scene.report.build_seconds,
+                scene.report.accel_bytes / 1048576.0, scene.report.accel.nodes + scene.report.accel.cells, mp, mi, ms, static_cast<unsigned long long>(sum),
                 sum == reference ? "same" : "DIFFERENT");
     if (sum != reference) throw std::runtime_error(std::string(enum_name(accel)) + ": hits differ from " + enum_name(accels[0]) + "'s (DESIGN.md rule 4)");
   }

@@ -71,7 +71,7 @@ int run_render(const RenderCommand& cmd) {
   const std::string scene_text = read_text_file(cmd.scene, "scene file");
   const Scene scene = load_scene_text(scene_text, cmd.scene, overrides);  // loading includes the BVH build
   const double load_build_s = seconds_since(t_load);
-  const double build_s = scene.build_seconds;
+  const double build_s = scene.report.build_seconds;
 
   const RenderSettings& rs = scene.settings;
   const SampleRange range = partial ? parse_sample_range(cmd.samples, rs.spp) : SampleRange{0, rs.spp};
@@ -119,8 +119,8 @@ int run_render(const RenderCommand& cmd) {
     j["mrays_per_second"] = mrays;
     j["nonfinite_samples"] = stats.nonfinite_samples;
     j["overflow_samples"] = stats.overflow_samples;
-    j["degenerate_triangles"] = scene.degenerate_triangles;
-    const AccelSummary accel = acceleration_summary(scene);
+    j["degenerate_triangles"] = scene.report.degenerate_triangles;
+    const AccelSummary& accel = scene.report.accel;
     j["accel"] = {{"kind", accel.name}, {"nodes", accel.nodes}};
     if (rs.accel == AccelKind::Grid) j["accel"]["cells"] = accel.cells;
     j["features"] = feature_names(scene.features);
@@ -134,9 +134,9 @@ int run_render(const RenderCommand& cmd) {
     std::fprintf(stderr, "%ux%u, %u spp, %.3f s, %.2fM rays, %.2f Mrays/s, %llu NaN/inf samples\n", rs.width,
                  rs.height, rs.spp, render_s, static_cast<double>(rays) / 1e6, mrays,
                  static_cast<unsigned long long>(stats.nonfinite_samples));
-  if (!cmd.quiet && scene.degenerate_triangles > 0)
+  if (!cmd.quiet && scene.report.degenerate_triangles > 0)
     std::fprintf(stderr, "note: %u mesh triangles of zero area were left out (they have no normal)\n",
-                 scene.degenerate_triangles);
+                 scene.report.degenerate_triangles);
   if (stats.overflow_samples > 0)
     std::fprintf(stderr,
                  "warning: %llu samples were left out (film overflow): a sample of 2^30 or more, or a pixel's sum "
@@ -152,16 +152,16 @@ int run_info(const std::string& scene_path) {
   const double seconds = seconds_since(t);
   std::printf("scene      %s\n", scene_path.c_str());
   std::printf("shapes    ");
-  for (const auto& [type, count] : scene.shape_counts) std::printf(" %s: %u", type.c_str(), count);
+  for (const auto& [type, count] : scene.report.shape_counts) std::printf(" %s: %u", type.c_str(), count);
   uint32_t by_kind[4] = {};
   for (const Primitive& p : scene.primitives) ++by_kind[static_cast<int>(p.kind)];
   std::printf("\nprimitives %zu (spheres %u, planes %u, triangles %u, quads %u)\n", scene.primitives.size(),
               by_kind[0], by_kind[1], by_kind[2], by_kind[3]);
-  if (scene.degenerate_triangles > 0) std::printf("left out   %u mesh triangles of zero area\n", scene.degenerate_triangles);
+  if (scene.report.degenerate_triangles > 0) std::printf("left out   %u mesh triangles of zero area\n", scene.report.degenerate_triangles);
   std::printf("materials  %zu, point lights %zu\n", scene.materials.size(), scene.lights.size());
   std::printf("features  ");
   for (const std::string& f : feature_names(scene.features)) std::printf(" %s", f.c_str());
-  const AccelSummary accel = acceleration_summary(scene);
+  const AccelSummary& accel = scene.report.accel;
   const std::string size = scene.settings.accel == AccelKind::Grid ? std::to_string(accel.cells) + " cells"
                                                                    : std::to_string(accel.nodes) + " nodes";
   std::printf("\naccel      %s: %s over %zu bounded primitives, %zu unbounded; load and build %.3f s\n",

@@ -6,12 +6,24 @@
 #include <string>
 #include <vector>
 
+#include "accel/accel_summary.h"
 #include "options/render_options.h"
 #include "scene/scene_arrays.h"
 
 namespace tracer {
 
-// The arrays (SceneArrays, listed in kernel/scene/scene_arrays.h) and the view's scalars.
+// What loading found, for `tracer info`, --stats and the feature audit; kernel code never reads it.
+struct LoadReport {
+  std::map<std::string, uint32_t> shape_counts;  // by the scene file's shape type
+  uint32_t degenerate_triangles = 0;             // mesh triangles of zero area, left out
+  std::set<std::string> used_types;              // "shape:box", "sampler:grid": scene_types.h
+  AccelSummary accel;                            // the built structure's name, nodes and cells
+  size_t accel_bytes = 0;                        // its nodes, cells and index arrays
+  double build_seconds = 0.0;                    // its build time
+};
+
+// The arrays (SceneArrays, listed in kernel/scene/scene_arrays.h) and the view's scalars,
+// and the load report.
 struct Scene : SceneArrays {
   std::string file;
   Vec3 kd_lo{0, 0, 0}, kd_hi{0, 0, 0};
@@ -26,10 +38,7 @@ struct Scene : SceneArrays {
   Camera camera{};
   RenderSettings settings{};
   uint32_t features = 0;
-  std::map<std::string, uint32_t> shape_counts;  // by the scene file's shape type
-  uint32_t degenerate_triangles = 0;             // mesh triangles of zero area, left out
-  std::set<std::string> used_types;              // "shape:box", "sampler:grid": scene_types.h
-  double build_seconds = 0.0;                    // acceleration-structure build time
+  LoadReport report;
 
   SceneView view() const;
 };

@@ -45,6 +45,21 @@ float ray_offset_scale(const Scene& scene) {
   return scale;
 }
 
+// The structure's arrays become the scene's; its summary goes to the load report.
+void install_acceleration(Acceleration a, Scene& scene) {
+  scene.report.accel = acceleration_summary(scene.settings.accel, a);
+  scene.report.accel_bytes = acceleration_bytes(a);
+  scene.bounded = std::move(a.bounded);
+  scene.unbounded = std::move(a.unbounded);
+  scene.bvh_nodes = std::move(a.bvh_nodes);
+  scene.kd_nodes = std::move(a.kd.nodes);
+  scene.kd_prims = std::move(a.kd.prims);
+  scene.kd_lo = a.kd.lo, scene.kd_hi = a.kd.hi, scene.kd_pad = a.kd.pad;
+  scene.grid = a.grid.info;
+  scene.grid_cell_start = std::move(a.grid.cell_start);
+  scene.grid_prims = std::move(a.grid.prims);
+}
+
 }  // namespace
 
 Scene load_scene_text(const std::string& text, const std::string& path, const RenderOverrides& overrides) {
@@ -55,14 +70,14 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
   const std::string format = top.string("format");
   if (format != "tracer-scene/1") top.fail("format", "expected \"tracer-scene/1\", got \"" + format + "\"");
 
-  scene.settings = read_settings(top.find("render"), top.get("film"), path, overrides, scene.used_types);
+  scene.settings = read_settings(top.find("render"), top.get("film"), path, overrides, scene.report.used_types);
   const CameraSpec camera = read_camera_spec(top.get("camera"), path);
   scene.camera = make_camera(camera, scene.settings.width, scene.settings.height);
   if (camera.aperture > 0.0f) scene.features |= kFeatureThinLens;
   TextureLoader textures(scene, std::filesystem::path(path).parent_path().string());
   std::string background_type;
   scene.background = read_background(top.find("background"), path, background_type, textures);
-  scene.used_types.insert("background:" + background_type);
+  scene.report.used_types.insert("background:" + background_type);
   scene.ambient = top.find("ambient") ? top.color("ambient") : Vec3{0, 0, 0};
 
   std::map<std::string, uint32_t> material_ids;
@@ -79,7 +94,7 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
   if (const Json* lights = top.find("lights")) {
     if (!lights->is_array()) top.fail("lights", "expected an array, got " + describe(*lights));
     for (size_t i = 0; i < lights->size(); ++i)
-      scene.lights.push_back(read_light((*lights)[i], "lights[" + std::to_string(i) + "]", path, scene.used_types));
+      scene.lights.push_back(read_light((*lights)[i], "lights[" + std::to_string(i) + "]", path, scene.report.used_types));
   }
 
   read_shapes(top.get("shapes"), path, material_ids, material_types, textures, scene);
@@ -96,8 +111,8 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
   scene.offset_scale = ray_offset_scale(scene);
   build_light_table(scene);
   const auto build_start = std::chrono::steady_clock::now();
-  build_acceleration(scene);
-  scene.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
+  install_acceleration(build_acceleration(scene.settings.accel, scene.primitives, scene.settings.grid_resolution), scene);
+  scene.report.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
   return scene;
 }
 

@@ -70,7 +70,7 @@ class ShapeReader {
     if (!is_accepted_type("shape", type))
       obj.fail("type", "unknown shape type \"" + type + "\" (expected " + expected_types("shape") + ")");
     const Json* tv = obj.find("transform");
-    const Transform xf = tv ? read_transform(*tv, obj.child("transform"), scene_.file, scene_.used_types) : Transform{};
+    const Transform xf = tv ? read_transform(*tv, obj.child("transform"), scene_.file, scene_.report.used_types) : Transform{};
     const Json* mat = obj.find("material");
     if (!mat && type == "mesh" && obj.find("file")) return add_mtl_mesh(obj, xf);
     if (!mat) obj.fail("material", type == "mesh" ? "missing: give the mesh a \"material\", or a file whose MTL has them"
@@ -110,9 +110,9 @@ class ShapeReader {
       }
     }
     obj.finish();
-    ++scene_.shape_counts[type];
-    scene_.used_types.insert("shape:" + type);
-    scene_.used_types.insert("material:" + material_types[material]);
+    ++scene_.report.shape_counts[type];
+    scene_.report.used_types.insert("shape:" + type);
+    scene_.report.used_types.insert("material:" + material_types[material]);
   }
 
  private:
@@ -129,7 +129,7 @@ class ShapeReader {
       std::string type;
       scene_.materials.push_back(material_from_mtl(mtl, textures_, file.parent_path().string(), obj.child("file"), type));
       scene_.material_names.push_back(file.filename().string() + ":" + mtl.name);
-      scene_.used_types.insert("material:" + type);
+      scene_.report.used_types.insert("material:" + type);
     }
     Material grey{};
     grey.kind = MaterialKind::Lambert;
@@ -143,8 +143,8 @@ class ShapeReader {
     for (const MeshTriangle& t : tris) materials.push_back(t.mtl >= 0 ? base + static_cast<uint32_t>(t.mtl) : fallback);
     add_triangles(obj, tris, xf, materials);
     obj.finish();
-    ++scene_.shape_counts["mesh"];
-    scene_.used_types.insert("shape:mesh");
+    ++scene_.report.shape_counts["mesh"];
+    scene_.report.used_types.insert("shape:mesh");
   }
 
   void add(const Primitive& p) {
@@ -275,7 +275,7 @@ class ShapeReader {
     }
     if (kept == 0 && single) obj.fail("vertices", "zero-area triangle (its vertices are collinear or coincide)");
     if (kept == 0) obj.fail(obj.find("file") ? "file" : "indices", "every triangle of the mesh has zero area");
-    scene_.degenerate_triangles += static_cast<uint32_t>(tris.size() - kept);
+    scene_.report.degenerate_triangles += static_cast<uint32_t>(tris.size() - kept);
   }
 
   Scene& scene_;

@@ -29,7 +29,7 @@ Vec3 TextureLoader::colour(JsonObject& obj, const std::string& key, uint32_t& te
     const std::string wrap = spec.string_or("wrap", "repeat");
     if (wrap != "repeat" && wrap != "clamp") spec.fail("wrap", "expected \"repeat\" or \"clamp\", got \"" + wrap + "\"");
     texture = image(spec.child("texture"), resolve(file), wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat, mean);
-    scene_.used_types.insert("texture:image");
+    scene_.report.used_types.insert("texture:image");
   } else if (spec.find("checker")) {
     JsonObject checker(spec.get("checker"), spec.child("checker"), obj.file());
     Texture t{};
@@ -45,7 +45,7 @@ Vec3 TextureLoader::colour(JsonObject& obj, const std::string& key, uint32_t& te
     mean = (t.even + t.odd) * 0.5f;
     texture = static_cast<uint32_t>(scene_.textures.size());
     scene_.textures.push_back(t);
-    scene_.used_types.insert("texture:checker");
+    scene_.report.used_types.insert("texture:checker");
   } else {
     spec.fail("", "expected [r, g, b], {\"texture\": FILE} or {\"checker\": {...}}");
   }
@@ -81,7 +81,7 @@ void TextureLoader::cube_faces(JsonObject& background, uint32_t faces[6]) {
 
 uint32_t TextureLoader::image_file(const std::string& where, const std::string& path, bool data, Vec3& mean) {
   scene_.features |= kFeatureTextures;
-  if (!data) scene_.used_types.insert("texture:image");
+  if (!data) scene_.report.used_types.insert("texture:image");
   return image(where, path, TextureWrap::Repeat, mean, data);
 }
 
@@ -90,7 +90,7 @@ uint32_t TextureLoader::data_map(JsonObject& obj, const std::string& key) {
   Vec3 mean;
   const uint32_t index = image(obj.child(key), resolve(obj.string(key)), TextureWrap::Repeat, mean, true);
   scene_.features |= kFeatureTextures;
-  scene_.used_types.insert("texture:" + key);
+  scene_.report.used_types.insert("texture:" + key);
   return index;
 }
 
