@@ -7,12 +7,19 @@
 #include <fstream>
 
 #include "bench/bench_common.h"
+#include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "io/input_error.h"
 #include "bench/loglog_plot.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
+
+struct BenchConvergeCommand {
+  std::string scene, ref, csv, plot, spp = "1,4,16,64,256", nee = "scene";
+  uint32_t ref_spp = 0, width = 0, height = 0;
+  int threads = 0;
+};
 namespace {
 
 struct Point {
@@ -41,7 +48,7 @@ double seconds_to_reach(const std::vector<Point>& series, double ImageError::*me
 
 }  // namespace
 
-int run_bench_converge(const BenchConvergeCommand& cmd) {
+static int run_bench_converge(const BenchConvergeCommand& cmd) {
   const std::vector<uint32_t> spps = parse_spp_list("--spp", cmd.spp);
   if (cmd.nee != "scene" && cmd.nee != "on" && cmd.nee != "off" && cmd.nee != "both")
     throw InputError("--nee " + cmd.nee + ": expected scene, on, off or both");
@@ -113,5 +120,19 @@ int run_bench_converge(const BenchConvergeCommand& cmd) {
               std::filesystem::absolute(plot).string().c_str());
   return 0;
 }
+
+const RegisterCommand kBenchConvergeCommand({"bench", "converge", "RMSE and relMSE against time as spp grows; CSV and a log-log plot",
+                                             [](CLI::App& app) {
+  auto cmd = std::make_shared<BenchConvergeCommand>();
+  app.add_option("scene", cmd->scene, "scene file (JSON)")->required();
+  app.add_option("--spp", cmd->spp, "comma-separated sample counts (default 1,4,16,64,256)");
+  app.add_option("--nee", cmd->nee, "scene (default), on, off, or both: NEE+MIS and the plain estimator side by side");
+  app.add_option("--ref", cmd->ref, "reference image (EXR); default: render one at --ref-spp");
+  app.add_option("--ref-spp", cmd->ref_spp, "reference samples per pixel (default 8 x the largest --spp)");
+  app.add_option("--csv", cmd->csv, "table output (default SCENE-converge.csv)");
+  app.add_option("--plot", cmd->plot, "log-log plot of RMSE against seconds (default SCENE-converge.png)");
+  add_bench_size_options(app, cmd->width, cmd->height, cmd->threads);
+  return [cmd] { return run_bench_converge(*cmd); };
+}});
 
 }  // namespace tracer

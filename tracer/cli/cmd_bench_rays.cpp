@@ -14,6 +14,7 @@
 #include "accel/acceleration.h"
 #include "accel/bounds.h"
 #include "scene/camera_setup.h"
+#include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "options/enum_names.h"
 #include "bench/embree_bench.h"
@@ -28,6 +29,12 @@
 #include "scene/scene_types.h"
 
 namespace tracer {
+
+struct BenchRaysCommand {
+  std::string scene, accel;
+  uint32_t incoherent = 1u << 22, grid_resolution = 0;
+  int threads = 0;
+};
 namespace {
 
 constexpr uint32_t kCamera = 512;
@@ -95,7 +102,7 @@ uint64_t mix(uint64_t h, uint64_t v) { return (h ^ v) * 0x100000001B3ull; }
 
 }  // namespace
 
-int run_bench_rays(const BenchRaysCommand& cmd) {
+static int run_bench_rays(const BenchRaysCommand& cmd) {
   const int threads = cmd.threads > 0 ? cmd.threads : omp_get_max_threads();
   std::vector<AccelKind> accels;
   if (cmd.accel.empty()) {
@@ -166,11 +173,15 @@ int run_bench_rays(const BenchRaysCommand& cmd) {
   return 0;
 }
 
-int run_generate(const GenerateCommand& cmd) {
-  const std::vector<MeshTriangle> mesh = generate_mesh(cmd.kind, cmd.triangles);
-  write_obj(mesh, cmd.output);
-  std::printf("wrote %s: %zu triangles\n", std::filesystem::absolute(cmd.output).string().c_str(), mesh.size());
-  return 0;
-}
+const RegisterCommand kBenchRaysCommand({"bench", "rays", "build time, memory and Mrays/s of each acceleration structure",
+                                         [](CLI::App& app) {
+  auto cmd = std::make_shared<BenchRaysCommand>();
+  app.add_option("scene", cmd->scene, "scene file (JSON) or OBJ mesh")->required();
+  app.add_option("--accel", cmd->accel, "comma-separated structures (default bvh,lbvh,kdtree,kdtree-median,grid)");
+  app.add_option("--rays", cmd->incoherent, "incoherent rays (default 2^22)");
+  app.add_option("--grid-resolution", cmd->grid_resolution, "grid cells along the longest axis (default: by density)");
+  add_threads_option(app, cmd->threads);
+  return [cmd] { return run_bench_rays(*cmd); };
+}});
 
 }  // namespace tracer

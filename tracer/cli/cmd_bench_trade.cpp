@@ -8,11 +8,18 @@
 #include <filesystem>
 
 #include "bench/bench_common.h"
+#include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "io/input_error.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
+
+struct BenchTradeCommand {
+  std::string scene, ref;
+  uint32_t spp = 64, ref_spp = 0, width = 0, height = 0;
+  int threads = 0;
+};
 namespace {
 
 constexpr int kRepeats = 3;  // each timing is the median of three renders
@@ -65,7 +72,7 @@ RenderOverrides combine(RenderOverrides base, const RenderOverrides& knob) {
 
 }  // namespace
 
-int run_bench_trade(const BenchTradeCommand& cmd) {
+static int run_bench_trade(const BenchTradeCommand& cmd) {
   if (cmd.spp == 0) throw InputError("--spp: must be at least 1");
   RenderOverrides base;
   if (cmd.width) base.width = cmd.width;
@@ -100,5 +107,16 @@ int run_bench_trade(const BenchTradeCommand& cmd) {
   }
   return 0;
 }
+
+const RegisterCommand kBenchTradeCommand({"bench", "trade", "time and error of each knob, at a fixed sample budget and at equal time",
+                                          [](CLI::App& app) {
+  auto cmd = std::make_shared<BenchTradeCommand>();
+  app.add_option("scene", cmd->scene, "scene file (JSON)")->required();
+  app.add_option("--spp", cmd->spp, "the fixed sample budget (default 64)");
+  app.add_option("--ref", cmd->ref, "reference image (EXR); default: render one at --ref-spp");
+  app.add_option("--ref-spp", cmd->ref_spp, "reference samples per pixel (default 16 x --spp)");
+  add_bench_size_options(app, cmd->width, cmd->height, cmd->threads);
+  return [cmd] { return run_bench_trade(*cmd); };
+}});
 
 }  // namespace tracer

@@ -7,13 +7,20 @@
 #include <filesystem>
 #include <unistd.h>
 
+#include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "bench/mesh_generators.h"
 #include "bench/watertight_probe.h"
 
 namespace tracer {
 
-int run_bench_watertight(const BenchWatertightCommand& cmd) {
+struct BenchWatertightCommand {
+  std::vector<std::string> meshes;  // closed OBJ meshes; none: a generated icosphere and cube (and the bunny)
+  uint32_t edge_points = 16;
+  int threads = 0;
+};
+
+static int run_bench_watertight(const BenchWatertightCommand& cmd) {
   std::vector<std::string> meshes = cmd.meshes;
   const auto temp = std::filesystem::temp_directory_path() / ("tracer-watertight-" + std::to_string(getpid()));
   if (meshes.empty()) {
@@ -46,5 +53,15 @@ int run_bench_watertight(const BenchWatertightCommand& cmd) {
   std::filesystem::remove_all(temp);
   return 0;
 }
+
+const RegisterCommand kBenchWatertightCommand({"bench", "watertight",
+                                               "rays that escape closed meshes through cracks: watertight test vs Moller-Trumbore",
+                                               [](CLI::App& app) {
+  auto cmd = std::make_shared<BenchWatertightCommand>();
+  app.add_option("meshes", cmd->meshes, "closed OBJ meshes (default: a generated icosphere and cube, and scenes/generated/bunny.obj)");
+  app.add_option("--edge-points", cmd->edge_points, "points aimed at along every edge (default 16)");
+  add_threads_option(app, cmd->threads);
+  return [cmd] { return run_bench_watertight(*cmd); };
+}});
 
 }  // namespace tracer

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "bundle/scene_bundle.h"
+#include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "io/input_error.h"
 #include "render/partial_file.h"
@@ -14,7 +15,7 @@
 
 namespace tracer {
 
-int run_bundle(const RenderCommand& cmd) {
+static int run_bundle(const RenderCommand& cmd) {
   const std::filesystem::path out(cmd.output);
   if (out.extension() != ".bundle") throw InputError(cmd.output + ": name the bundle NAME.bundle");
   const std::filesystem::path dir = out.parent_path().empty() ? "." : out.parent_path();
@@ -32,5 +33,13 @@ int run_bundle(const RenderCommand& cmd) {
               scene.settings.width, scene.settings.height, range.begin, range.end, scene.primitives.size());
   return 0;
 }
+
+const RegisterCommand kBundleCommand({"", "bundle", "write what the kernel reads for one render as a scene bundle for tracer-gpu",
+                                      [](CLI::App& app) {
+  auto cmd = std::make_shared<RenderCommand>();
+  add_scene_options(app, *cmd);
+  app.add_option("-o,--output", cmd->output, "output bundle, NAME.bundle")->required();
+  return [cmd] { return run_bundle(*cmd); };
+}});
 
 }  // namespace tracer

@@ -2,13 +2,27 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "golden/golden_check.h"
+#include "golden/golden_update.h"
 #include "render/device_error.h"
 #include "golden/golden_report.h"
 #include "io/input_error.h"
 
 namespace tracer {
+
+// `golden check`'s exit code when the device is not on this machine (CTest's SKIP_RETURN_CODE).
+constexpr int kExitSkipped = 77;
+
+struct GoldenCheckCommand {
+  std::string name, root = ".", report, device = "cpu";
+  int threads = 0;
+};
+struct GoldenReportCommand {
+  std::string report;
+  bool reset = false;
+};
 namespace {
 
 void print_row(const char* name, const char* status, const std::string& differing, const std::string& max_error,
@@ -25,7 +39,7 @@ std::string number(double v) {
 
 }  // namespace
 
-int run_golden_check(const GoldenCheckCommand& cmd) {
+static int run_golden_check(const GoldenCheckCommand& cmd) {
   GoldenManifest manifest;
   manifest.root = cmd.root;
   manifest.path = manifest_path(cmd.root);
@@ -60,7 +74,7 @@ int run_golden_check(const GoldenCheckCommand& cmd) {
   return outcome.status == GoldenStatus::Pass ? 0 : outcome.status == GoldenStatus::Fail ? 1 : 2;
 }
 
-int run_golden_update(const UpdateRequest& request) {
+static int run_golden_update(const UpdateRequest& request) {
   const std::vector<GoldenChange> changes = update_goldens(request);
   int changed = 0;
   print_row("golden", "status", "pixels differing", "max error", "RMS error", "PSNR dB");
@@ -79,7 +93,7 @@ int run_golden_update(const UpdateRequest& request) {
   return 0;
 }
 
-int run_golden_report(const GoldenReportCommand& cmd) {
+static int run_golden_report(const GoldenReportCommand& cmd) {
   if (cmd.reset) {
     reset_report(cmd.report);
     return 0;
@@ -91,9 +105,44 @@ int run_golden_report(const GoldenReportCommand& cmd) {
   return 0;
 }
 
-int run_golden_list(const std::string& root) {
+static int run_golden_list(const std::string& root) {
   for (const GoldenEntry& e : read_manifest(root).entries) std::printf("%s\n", e.name.c_str());
   return 0;
 }
+
+const RegisterCommand kGoldenCheckCommand({"golden", "check", "render one golden and compare it bit for bit with its reference",
+                                           [](CLI::App& app) {
+  auto cmd = std::make_shared<GoldenCheckCommand>();
+  app.add_option("name", cmd->name, "golden name (golden/manifest.json)")->required();
+  app.add_option("--root", cmd->root, "source root holding golden/ and scenes/ (default .)");
+  app.add_option("--report", cmd->report, "report directory: writes a row, and images on a difference");
+  add_threads_option(app, cmd->threads);
+  app.add_option("--device", cmd->device, "cpu or cuda; exit 77 (skipped) when the device is missing");
+  return [cmd] { return run_golden_check(*cmd); };
+}});
+
+const RegisterCommand kGoldenUpdateCommand({"golden", "update", "rewrite the goldens that are new or differ, print what changed",
+                                            [](CLI::App& app) {
+  auto request = std::make_shared<UpdateRequest>();
+  app.add_option("--root", request->root, "source root holding golden/ and scenes/ (default .)");
+  app.add_option("--filter", request->filter, "only goldens whose name matches this regular expression");
+  app.add_flag("--force", request->force, "run even when golden/ has uncommitted edits");
+  add_threads_option(app, request->threads);
+  return [request] { return run_golden_update(*request); };
+}});
+
+const RegisterCommand kGoldenReportCommand({"golden", "report", "assemble the HTML report from the rows the checks wrote",
+                                            [](CLI::App& app) {
+  auto cmd = std::make_shared<GoldenReportCommand>();
+  app.add_option("--report", cmd->report, "report directory")->required();
+  app.add_flag("--reset", cmd->reset, "remove all rows and images instead");
+  return [cmd] { return run_golden_report(*cmd); };
+}});
+
+const RegisterCommand kGoldenListCommand({"golden", "list", "print the golden names, one per line", [](CLI::App& app) {
+  auto root = std::make_shared<std::string>(".");
+  app.add_option("--root", *root, "source root holding golden/ (default .)");
+  return [root] { return run_golden_list(*root); };
+}});
 
 }  // namespace tracer

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "bundle/scene_bundle.h"
+#include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "options/enum_names.h"
 #include "golden/golden_manifest.h"
@@ -20,6 +21,11 @@
 #include "io/text_file.h"
 
 namespace tracer {
+
+struct GpuPackCommand {
+  std::string dir, root = ".", runner;
+  int threads = 0;
+};
 namespace {
 
 namespace fs = std::filesystem;
@@ -187,7 +193,7 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
 
 }  // namespace
 
-int run_gpu_pack(const GpuPackCommand& cmd) {
+static int run_gpu_pack(const GpuPackCommand& cmd) {
   const fs::path dir(cmd.dir);
   if (fs::exists(dir) && !(fs::is_directory(dir) && fs::is_empty(dir)))
     throw InputError(cmd.dir + ": exists and is not an empty directory; gpu-pack writes a new one");
@@ -211,5 +217,15 @@ int run_gpu_pack(const GpuPackCommand& cmd) {
               static_cast<double>(directory_bytes(dir)) / (1 << 20), cmd.dir.c_str());
   return 0;
 }
+
+const RegisterCommand kGpuPackCommand({"", "gpu-pack", "write the GPU pack: golden bundles, parity cases, tracer-gpu and run.sh",
+                                       [](CLI::App& app) {
+  auto cmd = std::make_shared<GpuPackCommand>();
+  app.add_option("dir", cmd->dir, "new directory to create")->required();
+  app.add_option("--root", cmd->root, "source root holding golden/ and scenes/ (default .)");
+  app.add_option("--runner", cmd->runner, "tracer-gpu binary to include (default: beside this tracer)");
+  add_threads_option(app, cmd->threads);
+  return [cmd] { return run_gpu_pack(*cmd); };
+}});
 
 }  // namespace tracer

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
@@ -11,7 +12,12 @@
 
 namespace tracer {
 
-int run_merge(const MergeCommand& cmd) {
+struct MergeCommand {
+  std::vector<std::string> parts;
+  std::string output;
+};
+
+static int run_merge(const MergeCommand& cmd) {
   std::filesystem::path out(cmd.output);
   const std::filesystem::path dir = out.parent_path().empty() ? "." : out.parent_path();
   if (!std::filesystem::is_directory(dir)) throw InputError(cmd.output + ": output directory does not exist");
@@ -70,5 +76,13 @@ int run_merge(const MergeCommand& cmd) {
               std::filesystem::absolute(cmd.output).string().c_str());
   return 0;
 }
+
+const RegisterCommand kMergeCommand({"", "merge", "add partial renders (--samples) into the image of all their samples",
+                                     [](CLI::App& app) {
+  auto cmd = std::make_shared<MergeCommand>();
+  app.add_option("parts", cmd->parts, "partial files of one render covering samples [0, spp) once")->required();
+  app.add_option("-o,--output", cmd->output, "output image (.exr, .png, ...)")->required();
+  return [cmd] { return run_merge(*cmd); };
+}});
 
 }  // namespace tracer

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "accel/acceleration.h"
+#include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
@@ -47,6 +48,12 @@ Json render_identity(const Scene& scene) {
 
 }  // namespace
 
+void add_scene_options(CLI::App& app, RenderCommand& cmd) {
+  app.add_option("scene", cmd.scene, "scene file (JSON)")->required();
+  for (const OptionInfo& o : option_table()) app.add_option(option_flag(o.name), cmd.options[o.name], o.help);
+  app.add_option("--samples", cmd.samples, "A:B renders only samples [A, B) of every pixel (render: into NAME.partial, for tracer merge)");
+}
+
 RenderOverrides scene_overrides(const RenderCommand& cmd) {
   RenderOverrides overrides;
   for (const auto& [name, text] : cmd.options)
@@ -54,7 +61,7 @@ RenderOverrides scene_overrides(const RenderCommand& cmd) {
   return overrides;
 }
 
-int run_render(const RenderCommand& cmd) {
+static int run_render(const RenderCommand& cmd) {
   if (cmd.device != "cpu" && cmd.device != "cuda")
     throw InputError("--device " + cmd.device + ": expected cpu or cuda");
   const std::string output =
@@ -146,36 +153,15 @@ int run_render(const RenderCommand& cmd) {
   return 0;
 }
 
-int run_info(const std::string& scene_path) {
-  const auto t = Clock::now();
-  const Scene scene = load_scene(scene_path);
-  const double seconds = seconds_since(t);
-  std::printf("scene      %s\n", scene_path.c_str());
-  std::printf("shapes    ");
-  for (const auto& [type, count] : scene.report.shape_counts) std::printf(" %s: %u", type.c_str(), count);
-  uint32_t by_kind[4] = {};
-  for (const Primitive& p : scene.primitives) ++by_kind[static_cast<int>(p.kind)];
-  std::printf("\nprimitives %zu (spheres %u, planes %u, triangles %u, quads %u)\n", scene.primitives.size(),
-              by_kind[0], by_kind[1], by_kind[2], by_kind[3]);
-  if (scene.report.degenerate_triangles > 0) std::printf("left out   %u mesh triangles of zero area\n", scene.report.degenerate_triangles);
-  std::printf("materials  %zu, point lights %zu\n", scene.materials.size(), scene.lights.size());
-  std::printf("features  ");
-  for (const std::string& f : feature_names(scene.features)) std::printf(" %s", f.c_str());
-  const AccelSummary& accel = scene.report.accel;
-  const std::string size = scene.settings.accel == AccelKind::Grid ? std::to_string(accel.cells) + " cells"
-                                                                   : std::to_string(accel.nodes) + " nodes";
-  std::printf("\naccel      %s: %s over %zu bounded primitives, %zu unbounded; load and build %.3f s\n",
-              accel.name.c_str(), size.c_str(), scene.bounded.size(), scene.unbounded.size(), seconds);
-  return 0;
-}
-
-int run_compare(const CompareCommand& cmd) {
-  const Image a = read_image(cmd.a), b = read_image(cmd.b);
-  const CompareResult r = compare_images(a, b, cmd.options);
-  if (!cmd.diff.empty() && r.same_size) write_image(difference_image(a, b), cmd.diff);
-  const char* verdict = r.verdict == Verdict::Pass ? "PASS" : r.verdict == Verdict::Warn ? "WARNING" : "FAIL";
-  std::printf("%s: %s\n", verdict, describe(r).c_str());
-  return r.verdict == Verdict::Fail ? 1 : 0;
-}
+const RegisterCommand kRenderCommand({"", "render", "render a scene to an image", [](CLI::App& app) {
+  auto cmd = std::make_shared<RenderCommand>();
+  add_scene_options(app, *cmd);
+  app.add_option("-o,--output", cmd->output, "output image (.exr linear float, .png sRGB, ...); default SCENE.png");
+  add_threads_option(app, cmd->threads);
+  app.add_option("--device", cmd->device, "cpu or cuda");
+  app.add_option("--stats", cmd->stats, "write timings and ray counts as JSON");
+  app.add_flag("--quiet", cmd->quiet, "no progress bar or summary");
+  return [cmd] { return run_render(*cmd); };
+}});
 
 }  // namespace tracer

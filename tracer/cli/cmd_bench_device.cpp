@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <omp.h>
 
+#include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "options/effects.h"
 #include "io/input_error.h"
@@ -15,6 +16,12 @@
 #include "scene/scene_loader.h"
 
 namespace tracer {
+
+struct BenchDeviceCommand {
+  std::string device = "cuda", scenes = "scenes";
+  int frames = 5;
+  int threads = 0;
+};
 namespace {
 
 struct FrameTiming {
@@ -93,7 +100,7 @@ std::string largest_mesh_scene(const std::string& dir, uint64_t& triangles) {
 
 }  // namespace
 
-int run_bench_device(const BenchDeviceCommand& cmd) {
+static int run_bench_device(const BenchDeviceCommand& cmd) {
   if (cmd.device != "cpu" && cmd.device != "cuda") throw InputError("--device " + cmd.device + ": expected cpu or cuda");
   if (cmd.frames < 1) throw InputError("--frames: must be at least 1");
   const bool cuda = cmd.device == "cuda";
@@ -148,5 +155,15 @@ int run_bench_device(const BenchDeviceCommand& cmd) {
   }
   return 0;
 }
+
+const RegisterCommand kBenchDeviceCommand({"bench", "device", "Whitted frames/s and Mrays/s on a device: per effect, per resolution",
+                                           [](CLI::App& app) {
+  auto cmd = std::make_shared<BenchDeviceCommand>();
+  app.add_option("--device", cmd->device, "cuda (default; the CPU is timed too, as the baseline) or cpu");
+  app.add_option("--frames", cmd->frames, "frames per measurement; the median is reported (default 5)");
+  app.add_option("--scenes", cmd->scenes, "scene directory: cornell-box.json and the mesh scenes (default scenes)");
+  add_threads_option(app, cmd->threads);
+  return [cmd] { return run_bench_device(*cmd); };
+}});
 
 }  // namespace tracer

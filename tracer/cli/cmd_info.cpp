@@ -1,0 +1,45 @@
+// `tracer info SCENE`: what the loader made of a scene: shapes and primitives, materials and
+// lights, the feature mask, the acceleration structure and how long loading took.
+#include <chrono>
+#include <cstdio>
+
+#include "cli/command_registry.h"
+#include "scene/scene_loader.h"
+
+namespace tracer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+static int run_info(const std::string& scene_path) {
+  const auto t = Clock::now();
+  const Scene scene = load_scene(scene_path);
+  const double seconds = std::chrono::duration<double>(Clock::now() - t).count();
+  std::printf("scene      %s\n", scene_path.c_str());
+  std::printf("shapes    ");
+  for (const auto& [type, count] : scene.report.shape_counts) std::printf(" %s: %u", type.c_str(), count);
+  uint32_t by_kind[4] = {};
+  for (const Primitive& p : scene.primitives) ++by_kind[static_cast<int>(p.kind)];
+  std::printf("\nprimitives %zu (spheres %u, planes %u, triangles %u, quads %u)\n", scene.primitives.size(),
+              by_kind[0], by_kind[1], by_kind[2], by_kind[3]);
+  if (scene.report.degenerate_triangles > 0) std::printf("left out   %u mesh triangles of zero area\n", scene.report.degenerate_triangles);
+  std::printf("materials  %zu, point lights %zu\n", scene.materials.size(), scene.lights.size());
+  std::printf("features  ");
+  for (const std::string& f : feature_names(scene.features)) std::printf(" %s", f.c_str());
+  const AccelSummary& accel = scene.report.accel;
+  const std::string size = scene.settings.accel == AccelKind::Grid ? std::to_string(accel.cells) + " cells"
+                                                                   : std::to_string(accel.nodes) + " nodes";
+  std::printf("\naccel      %s: %s over %zu bounded primitives, %zu unbounded; load and build %.3f s\n",
+              accel.name.c_str(), size.c_str(), scene.bounded.size(), scene.unbounded.size(), seconds);
+  return 0;
+}
+
+}  // namespace
+
+const RegisterCommand kInfoCommand({"", "info", "primitive counts, feature mask and acceleration stats", [](CLI::App& app) {
+  auto scene = std::make_shared<std::string>();
+  app.add_option("scene", *scene, "scene file (JSON)")->required();
+  return [scene] { return run_info(*scene); };
+}});
+
+}  // namespace tracer
