@@ -1,4 +1,4 @@
-// Loads a scene file (SCENE_FORMAT.md, version 1) into flat arrays, applies command-line
+// Loads a scene file (docs/scene-format.md, version 1) into flat arrays, applies command-line
 // overrides, validates everything, computes the feature mask and builds the acceleration
 // structure. Every problem is an InputError naming the file and the key path.
 #pragma once

@@ -1,4 +1,4 @@
-// The type names the scene loader accepts, by category (SCENE_FORMAT.md). The loader
+// The type names the scene loader accepts, by category (docs/scene-format.md). The loader
 // rejects any name missing from these tables, and records which names a scene uses, so the
 // golden coverage test can check that every accepted type is drawn by some golden.
 #pragma once
@@ -13,7 +13,7 @@ namespace tracer {
 // Category ("shape", "material", "light", "background", "integrator", "sampler", "accel",
 // "texture": a material colour given as an image or a checker, or a map; "transform": a
 // step of a shape's transform list)
-// to the names the loader accepts in it, in the order SCENE_FORMAT.md lists them.
+// to the names the loader accepts in it, in the order docs/scene-format.md lists them.
 const std::map<std::string, std::vector<std::string>>& accepted_scene_types();
 
 bool is_accepted_type(const std::string& category, const std::string& name);

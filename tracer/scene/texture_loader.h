@@ -1,4 +1,4 @@
-// Material colours that may be textures (SCENE_FORMAT.md): [r, g, b], {"texture": FILE,
+// Material colours that may be textures (docs/scene-format.md): [r, g, b], {"texture": FILE,
 // optional "wrap": "repeat" (default) or "clamp"} with FILE relative to the scene file, or
 // {"checker": {"scale": S, "even": RGB, "odd": RGB}}. Each image file is read once with
 // OpenImageIO into scene.texels as linear RGB: 8- and 16-bit images are sRGB-decoded,

@@ -1,4 +1,4 @@
-// Affine transforms of SCENE_FORMAT (translate, scale, rotate, rotate_xyz), composed in
+// Affine transforms of docs/scene-format.md (translate, scale, rotate, rotate_xyz), composed in
 // the order listed and baked into the geometry at load time. Rotations use the
 // deterministic sin/cos, so goldens do not depend on the machine's libm.
 #pragma once

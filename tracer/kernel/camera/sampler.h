@@ -1,4 +1,4 @@
-// Sub-pixel sample positions for the four samplers of SCENE_FORMAT.
+// Sub-pixel sample positions for the four samplers of docs/scene-format.md.
 #pragma once
 #include "kernel/base/philox.h"
 

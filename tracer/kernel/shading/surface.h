@@ -31,7 +31,7 @@ TRACER_HD Surface surface_at(const SceneView& scene, const Ray& ray, const Hit& 
       const Vec3 rel = ray_at(ray, hit.t) - prim.a;
       s.ng = normalize(rel);
       s.p = prim.a + s.ng * prim.radius;
-      // u = 0.5 + atan2(z, x) / 2 pi, v = 0.5 - asin(y) / pi (SCENE_FORMAT's sphere map)
+      // u = 0.5 + atan2(z, x) / 2 pi, v = 0.5 - asin(y) / pi (the sphere map of docs/textures.md)
       s.u = 0.5f + det_atan2(s.ng.z, s.ng.x) / (2.0f * kPi);
       s.v = 0.5f - det_asin(clamp_of(s.ng.y, -1.0f, 1.0f)) / kPi;
       s.ns = s.ng;
