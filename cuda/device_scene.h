@@ -14,7 +14,7 @@ class DeviceScene {
 #define TRACER_UPLOAD(Type, name) name##_(arrays.name),
         TRACER_SCENE_ARRAYS(TRACER_UPLOAD)
 #undef TRACER_UPLOAD
-        view_(host_view) {
+            view_(host_view) {
     point_view_at(view_, arrays);  // the counts
 #define TRACER_POINT_AT_DEVICE(Type, name) view_.name = name##_.get();
     TRACER_SCENE_ARRAYS(TRACER_POINT_AT_DEVICE)

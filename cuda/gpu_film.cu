@@ -27,7 +27,6 @@ __global__ void render_kernel(const SceneView scene, SampleRange range, FilmSum*
   if (sum.overflow) atomicAdd(&counters[kOverflow], static_cast<unsigned long long>(sum.overflow));
 }
 
-
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
@@ -44,8 +43,8 @@ std::string describe_render_kernel() {
   const int by_registers = attr.numRegs > 0 ? prop.regsPerMultiprocessor / (attr.numRegs * kThreads) : blocks;
   const int by_threads = prop.maxThreadsPerMultiProcessor / kThreads;
   const char* limit = by_registers <= by_threads && by_registers <= prop.maxBlocksPerMultiProcessor ? "registers"
-                      : by_threads <= prop.maxBlocksPerMultiProcessor                                ? "threads per SM"
-                                                                                                     : "blocks per SM";
+                      : by_threads <= prop.maxBlocksPerMultiProcessor                               ? "threads per SM"
+                                                                                                    : "blocks per SM";
   char text[512];
   std::snprintf(text, sizeof text,
                 "render_kernel: %d registers, %zu bytes of local memory (stack and spills) per thread; 16x16 blocks: "
@@ -56,7 +55,8 @@ std::string describe_render_kernel() {
   return text;
 }
 
-GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, SampleRange range, const std::string& label) {
+GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, SampleRange range,
+                           const std::string& label) {
   const cudaDeviceProp prop = select_cuda_device();
   GpuFilm r;
   r.device = describe_cuda_device(prop);

@@ -5,8 +5,8 @@
 #pragma once
 #include <string>
 
-#include "render/film_buffer.h"
 #include "kernel/integrator/ray_counts.h"
+#include "render/film_buffer.h"
 #include "scene/scene_arrays.h"
 
 namespace tracer {
@@ -27,6 +27,7 @@ std::string describe_render_kernel();
 
 // DeviceUnavailable (no device; too little free memory, naming `label`) or
 // std::runtime_error naming the failing CUDA call.
-GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, SampleRange range, const std::string& label);
+GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, SampleRange range,
+                           const std::string& label);
 
 }  // namespace tracer

@@ -49,7 +49,9 @@ GpuLbvh build_lbvh_on_gpu(const LbvhInput& in) {
   const int n = static_cast<int>(in.boxes.size());
   GpuLbvh r;
   if (n < 2) {  // nothing to build in parallel
-    r.tree = build_lbvh_tree(in, [](size_t count, const auto& fn) { for (size_t i = 0; i < count; ++i) fn(i); });
+    r.tree = build_lbvh_tree(in, [](size_t count, const auto& fn) {
+      for (size_t i = 0; i < count; ++i) fn(i);
+    });
     return r;
   }
   Vec3 lo, scale;
@@ -73,7 +75,8 @@ GpuLbvh build_lbvh_on_gpu(const LbvhInput& in) {
   check_launch();
   radix_kernel<<<blocks_for(n - 1), kBlock>>>(keys.get(), n, inner.get(), parent.get());
   check_launch();
-  climb_kernel<<<blocks_for(n), kBlock>>>(n, inner.get(), parent.get(), leaf_boxes.get(), inner_boxes.get(), visits.get());
+  climb_kernel<<<blocks_for(n), kBlock>>>(n, inner.get(), parent.get(), leaf_boxes.get(), inner_boxes.get(),
+                                          visits.get());
   check_launch();
   TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
   r.build_seconds = seconds_between(start, stop);

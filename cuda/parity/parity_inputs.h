@@ -38,10 +38,38 @@ struct MathInputs {
   std::vector<float> a, b;
 };
 inline MathInputs math_inputs(MathFunction f, uint64_t seed, uint32_t random, uint32_t domain) {
-  const float edges[] = {0.0f, -0.0f, FLT_TRUE_MIN, -FLT_TRUE_MIN, FLT_MIN, -FLT_MIN, 0.5f, -0.5f, 1.0f, -1.0f,
-                         2.0f, -2.0f, 1.5707964f, -1.5707964f, 3.1415927f, -3.1415927f, 1e-30f, 88.72f, -103.9f,
-                         1e4f, 1e10f, 1e30f, 16777216.0f, 0x1p120f, FLT_MAX, -FLT_MAX, kInfinity, -kInfinity,
-                         std::numeric_limits<float>::quiet_NaN(), 0.99999994f, 1.0000001f, -0.99999994f};
+  const float edges[] = {0.0f,
+                         -0.0f,
+                         FLT_TRUE_MIN,
+                         -FLT_TRUE_MIN,
+                         FLT_MIN,
+                         -FLT_MIN,
+                         0.5f,
+                         -0.5f,
+                         1.0f,
+                         -1.0f,
+                         2.0f,
+                         -2.0f,
+                         1.5707964f,
+                         -1.5707964f,
+                         3.1415927f,
+                         -3.1415927f,
+                         1e-30f,
+                         88.72f,
+                         -103.9f,
+                         1e4f,
+                         1e10f,
+                         1e30f,
+                         16777216.0f,
+                         0x1p120f,
+                         FLT_MAX,
+                         -FLT_MAX,
+                         kInfinity,
+                         -kInfinity,
+                         std::numeric_limits<float>::quiet_NaN(),
+                         0.99999994f,
+                         1.0000001f,
+                         -0.99999994f};
   const float lo[] = {-100, -100, -100, -1, -1, -50, -104, 0, 0}, hi[] = {100, 100, 100, 1, 1, 50, 89, 1e6f, 10};
   const uint32_t fi = static_cast<uint32_t>(f);
   MathInputs in;
@@ -59,9 +87,11 @@ inline std::vector<PhiloxQuery> philox_inputs(uint64_t seed, uint32_t count) {
   std::vector<PhiloxQuery> q;
   for (uint32_t i = 0; i < count; ++i) {
     const bool structured = i < count / 2;
-    q.push_back({{{structured ? i : static_cast<uint32_t>(in.next()), structured ? i % 64 : static_cast<uint32_t>(in.next()),
-                   structured ? i % 3 : static_cast<uint32_t>(in.next()), structured ? 0u : static_cast<uint32_t>(in.next())}},
-                 static_cast<uint32_t>(in.next()), static_cast<uint32_t>(in.next())});
+    q.push_back(
+        {{{structured ? i : static_cast<uint32_t>(in.next()), structured ? i % 64 : static_cast<uint32_t>(in.next()),
+           structured ? i % 3 : static_cast<uint32_t>(in.next()), structured ? 0u : static_cast<uint32_t>(in.next())}},
+         static_cast<uint32_t>(in.next()),
+         static_cast<uint32_t>(in.next())});
   }
   return q;
 }

@@ -62,11 +62,11 @@ ParityAnswers evaluate_parity_case(const ParityCase& c, bool on_gpu, unsigned th
       hash_into(sha, in.b);
       r.inputs = in.a.size(), r.inputs_sha1 = sha.hex_digest();
       set_answers(r, timed([&] {
-        if (on_gpu) return gpu_math(f, in.a, in.b);
-        std::vector<float> out(in.a.size());
-        parallel_for(out.size(), threads, [&](size_t i) { out[i] = eval_math(f, in.a[i], in.b[i]); });
-        return out;
-      }));
+                    if (on_gpu) return gpu_math(f, in.a, in.b);
+                    std::vector<float> out(in.a.size());
+                    parallel_for(out.size(), threads, [&](size_t i) { out[i] = eval_math(f, in.a[i], in.b[i]); });
+                    return out;
+                  }));
       break;
     }
     case ParityKind::Philox: {
@@ -86,9 +86,10 @@ ParityAnswers evaluate_parity_case(const ParityCase& c, bool on_gpu, unsigned th
       r.inputs = rays.size(), r.inputs_sha1 = sha1_of(rays);
       const SceneView view = c.scene.view();
       set_answers(r, timed([&] {
-        return on_gpu ? gpu_trace(c.scene.arrays, view, rays)
-                      : on_cpu<TraceAnswer>(rays, threads, [&](const Ray& ray) { return eval_trace(view, ray); });
-      }));
+                    return on_gpu ? gpu_trace(c.scene.arrays, view, rays)
+                                  : on_cpu<TraceAnswer>(rays, threads,
+                                                        [&](const Ray& ray) { return eval_trace(view, ray); });
+                  }));
       break;
     }
     case ParityKind::Sample: {
@@ -97,9 +98,10 @@ ParityAnswers evaluate_parity_case(const ParityCase& c, bool on_gpu, unsigned th
       for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = static_cast<uint32_t>(i);
       r.inputs = pixels.size(), r.inputs_sha1 = sha1_of(pixels);
       set_answers(r, timed([&] {
-        return on_gpu ? gpu_samples(c.scene.arrays, view)
-                      : on_cpu<SampleAnswer>(pixels, threads, [&](uint32_t p) { return eval_sample(view, p); });
-      }));
+                    return on_gpu ? gpu_samples(c.scene.arrays, view)
+                                  : on_cpu<SampleAnswer>(pixels, threads,
+                                                         [&](uint32_t p) { return eval_sample(view, p); });
+                  }));
       break;
     }
     case ParityKind::Lbvh: {

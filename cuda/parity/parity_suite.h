@@ -17,11 +17,11 @@ struct ParitySpec {
   ParityKind kind;
   uint32_t function;  // Math: the MathFunction
   uint64_t seed;
-  uint32_t count;     // Math: random pairs (and half as many domain points); Philox: queries;
-                      // Shapes: spheres and triangles each; Trace: rays; Sample: unused;
-                      // Lbvh: triangles, built into nodes and leaf order
+  uint32_t count;  // Math: random pairs (and half as many domain points); Philox: queries;
+                   // Shapes: spheres and triangles each; Trace: rays; Sample: unused;
+                   // Lbvh: triangles, built into nodes and leaf order
   uint32_t reserved;
-  Vec3 lo, hi;        // Trace: the box the ray origins are drawn from
+  Vec3 lo, hi;  // Trace: the box the ray origins are drawn from
 };
 
 struct ParityCase {

@@ -2,9 +2,9 @@
 // OpenMP runtime is a shared library the bare GPU machine lacks). Pixels do not depend on
 // the thread that computes them, so this film equals the tracer's OpenMP film bit for bit.
 #pragma once
-#include "render/film_buffer.h"
 #include "kernel/integrator/render_pixel.h"
 #include "parity/parallel_for.h"
+#include "render/film_buffer.h"
 
 namespace tracer {
 

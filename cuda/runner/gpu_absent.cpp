@@ -1,14 +1,16 @@
 // The GPU entry points of a runner built without nvcc: each says so, and the runner's
 // `--device cpu` still runs every bundle and parity case.
-#include "render/device_error.h"
 #include "gpu_film.h"
 #include "lbvh_gpu.h"
 #include "parity/parity_gpu.h"
+#include "render/device_error.h"
 
 namespace tracer {
 
 namespace {
-[[noreturn]] void no_cuda() { throw DeviceUnavailable("this tracer-gpu was built without CUDA (no nvcc at build time)"); }
+[[noreturn]] void no_cuda() {
+  throw DeviceUnavailable("this tracer-gpu was built without CUDA (no nvcc at build time)");
+}
 }  // namespace
 
 GpuFilm render_film_on_gpu(const SceneArrays&, const SceneView&, SampleRange, const std::string&) { no_cuda(); }

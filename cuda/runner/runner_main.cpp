@@ -12,12 +12,12 @@
 #include "bundle/scene_bundle.h"
 #include "bundle/sha1.h"
 #include "cpu_film.h"
-#include "render/device_error.h"
 #include "gpu_film.h"
-#include "parity/parity_gpu.h"
-#include "parity/parity_suite.h"
 #include "image/pixel_hash.h"
 #include "io/text_file.h"
+#include "parity/parity_gpu.h"
+#include "parity/parity_suite.h"
+#include "render/device_error.h"
 
 namespace tracer {
 namespace {
@@ -53,14 +53,22 @@ Options parse(int argc, char** argv) {
       if (i + 1 >= argc) throw InputError(a + " needs a value");
       return argv[++i];
     };
-    if (a == "--device") o.device = value();
-    else if (a == "--threads") o.threads = parse_count(a, value(), 4096);
-    else if (a == "--repeat") o.repeat = parse_count(a, value(), 100000);
-    else if (a == "--expect") o.expect = value();
-    else if (a == "-o" || a == "--output") o.output = value();
-    else if (!a.empty() && a[0] == '-') throw InputError(a + ": unknown option\n" + kUsage);
-    else if (o.input.empty()) o.input = a;
-    else throw InputError(a + ": one input only\n" + kUsage);
+    if (a == "--device")
+      o.device = value();
+    else if (a == "--threads")
+      o.threads = parse_count(a, value(), 4096);
+    else if (a == "--repeat")
+      o.repeat = parse_count(a, value(), 100000);
+    else if (a == "--expect")
+      o.expect = value();
+    else if (a == "-o" || a == "--output")
+      o.output = value();
+    else if (!a.empty() && a[0] == '-')
+      throw InputError(a + ": unknown option\n" + kUsage);
+    else if (o.input.empty())
+      o.input = a;
+    else
+      throw InputError(a + ": one input only\n" + kUsage);
   }
   if (o.device != "cuda" && o.device != "cpu") throw InputError("--device " + o.device + ": expected cuda or cpu");
   if (o.command != "device" && o.input.empty()) throw InputError(o.command + ": needs an input\n" + kUsage);
@@ -175,8 +183,8 @@ int run_pack(const Options& o) {
   std::istringstream list(read_text_file(dir + "pack.tsv", "pack list", 1u << 20));
   std::string device = "cpu (" + std::to_string(o.threads) + " threads)";
   if (o.device == "cuda") device = parity::gpu_device();
-  std::printf("tracer-gpu pack %s on %s\n%-7s %-36s %-5s %s\n", o.input.c_str(), device.c_str(), "kind", "name", "result",
-              "detail");
+  std::printf("tracer-gpu pack %s on %s\n%-7s %-36s %-5s %s\n", o.input.c_str(), device.c_str(), "kind", "name",
+              "result", "detail");
   size_t passed = 0, total = 0;
   for (std::string line; std::getline(list, line);) {
     if (line.empty() || line[0] == '#') continue;

@@ -34,7 +34,8 @@ Dir rotate_z(Dir p, double degrees) {
 bool hit_rotated_box(const Ray& r, Dir lo, Dir hi, double degrees) {
   const Dir o = rotate_z({r.origin.x, r.origin.y, r.origin.z}, -degrees), d = rotate_z(unit_dir(r), -degrees);
   double t0 = -1e30, t1 = 1e30;
-  const double os[3] = {o.x, o.y, o.z}, ds[3] = {d.x, d.y, d.z}, los[3] = {lo.x, lo.y, lo.z}, his[3] = {hi.x, hi.y, hi.z};
+  const double os[3] = {o.x, o.y, o.z}, ds[3] = {d.x, d.y, d.z}, los[3] = {lo.x, lo.y, lo.z},
+               his[3] = {hi.x, hi.y, hi.z};
   for (int k = 0; k < 3; ++k) {
     if (ds[k] == 0) {
       if (os[k] < los[k] || os[k] > his[k]) return false;
@@ -72,29 +73,44 @@ TEST(ClosedForms, EveryShapeAndTransformLandsWhereItShouldWithItsAlbedo) {
   };
   const std::vector<std::pair<std::string, std::function<bool(const Ray&)>>> shapes = {
       {R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "transform": [{"scale": 0.5}, {"translate": [0.3, -0.2, 0]}]})",
-       [](const Ray& r) { return hit_sphere(r, {0.3, -0.2, 0}, 0.5) > 0; }},
+       [](const Ray& r) {
+         return hit_sphere(r, {0.3, -0.2, 0}, 0.5) > 0;
+       }},
       {R"({"type": "box", "min": [-0.6, -0.3, -0.3], "max": [0.6, 0.3, 0.3], "transform": [{"rotate": {"axis": [0, 0, 1], "degrees": 30}}]})",
-       [](const Ray& r) { return hit_rotated_box(r, {-0.6, -0.3, -0.3}, {0.6, 0.3, 0.3}, 30); }},
+       [](const Ray& r) {
+         return hit_rotated_box(r, {-0.6, -0.3, -0.3}, {0.6, 0.3, 0.3}, 30);
+       }},
       {R"({"type": "box", "min": [-0.5, -0.25, -0.25], "max": [0.5, 0.25, 0.25], "transform": [{"rotate_xyz": [0, 0, -40]}]})",
-       [](const Ray& r) { return hit_rotated_box(r, {-0.5, -0.25, -0.25}, {0.5, 0.25, 0.25}, -40); }},
+       [](const Ray& r) {
+         return hit_rotated_box(r, {-0.5, -0.25, -0.25}, {0.5, 0.25, 0.25}, -40);
+       }},
       {R"({"type": "quad", "corner": [-0.5, -0.4, 0], "u": [1, 0, 0], "v": [0, 0.8, 0]})",
-       [=](const Ray& r) { return inside_triangle(r, {-0.5, -0.4, 0}, {0.5, -0.4, 0}, {0.5, 0.4, 0}) ||
-                                  inside_triangle(r, {-0.5, -0.4, 0}, {0.5, 0.4, 0}, {-0.5, 0.4, 0}); }},
+       [=](const Ray& r) {
+         return inside_triangle(r, {-0.5, -0.4, 0}, {0.5, -0.4, 0}, {0.5, 0.4, 0}) ||
+                inside_triangle(r, {-0.5, -0.4, 0}, {0.5, 0.4, 0}, {-0.5, 0.4, 0});
+       }},
       {R"({"type": "triangle", "vertices": [[-0.6, -0.5, 0], [0.7, -0.3, 0], [0, 0.6, 0]]})",
-       [=](const Ray& r) { return inside_triangle(r, {-0.6, -0.5, 0}, {0.7, -0.3, 0}, {0, 0.6, 0}); }},
+       [=](const Ray& r) {
+         return inside_triangle(r, {-0.6, -0.5, 0}, {0.7, -0.3, 0}, {0, 0.6, 0});
+       }},
       {R"({"type": "mesh", "positions": [[-0.6, -0.5, 0], [0.6, -0.5, 0], [0.6, 0.5, 0], [-0.6, 0.5, 0], [0, 0, 0.3]],
-           "indices": [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]]})",  // a pyramid seen from above: its outline is the base
-       [=](const Ray& r) { return inside_triangle(r, {-0.6, -0.5, 0}, {0.6, -0.5, 0}, {0.6, 0.5, 0}) ||
-                                  inside_triangle(r, {-0.6, -0.5, 0}, {0.6, 0.5, 0}, {-0.6, 0.5, 0}); }},
+           "indices": [[0, 1, 4], [1, 2, 4], [2, 3, 4], [3, 0, 4]]})",  // a pyramid seen from above: its outline is the
+                                                                        // base
+       [=](const Ray& r) {
+         return inside_triangle(r, {-0.6, -0.5, 0}, {0.6, -0.5, 0}, {0.6, 0.5, 0}) ||
+                inside_triangle(r, {-0.6, -0.5, 0}, {0.6, 0.5, 0}, {-0.6, 0.5, 0});
+       }},
       {R"({"type": "plane", "point": [0, -0.5, 0], "normal": [0, 1, 0]})",  // below the horizon
        [](const Ray& r) { return r.dir.y < 0.0f; }}};
   for (const auto& [shape, hit] : shapes) {
     std::string json = shape;
     json.insert(json.size() - 1, R"(, "material": "m")");
-    const Scene scene = test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
+    const Scene scene =
+        test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
       "film": {"width": 48, "height": 48}, "render": {"integrator": "path", "spp": 1, "sampler": "center", "max_depth": 8},
       "background": {"type": "constant", "radiance": [1, 1, 1]},
-      "materials": {"m": {"type": "lambert", "albedo": [0.6, 0.6, 0.6]}}, "shapes": [)" + json + "]}");
+      "materials": {"m": {"type": "lambert", "albedo": [0.6, 0.6, 0.6]}}, "shapes": [)" +
+                         json + "]}");
     RenderStats stats;
     const Image img = render_cpu(scene, 0, stats);
     int on = 0, off = 0;
@@ -116,8 +132,10 @@ TEST(ClosedForms, EveryShapeAndTransformLandsWhereItShouldWithItsAlbedo) {
 // horizon): every pixel of an empty scene, in both integrators.
 TEST(ClosedForms, GradientSkyIsTheBlendOnY) {
   for (const char* integrator : {"path", "whitted"}) {
-    const Scene scene = test::scene_from(std::string(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 0], "to": [0, 0.3, -1], "vfov": 90},
-      "film": {"width": 32, "height": 32}, "render": {"integrator": ")") + integrator + R"(", "spp": 1, "sampler": "center"},
+    const Scene scene = test::scene_from(
+        std::string(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 0], "to": [0, 0.3, -1], "vfov": 90},
+      "film": {"width": 32, "height": 32}, "render": {"integrator": ")") +
+        integrator + R"(", "spp": 1, "sampler": "center"},
       "background": {"type": "gradient", "zenith": [0.2, 0.4, 1], "horizon": [1, 0.9, 0.8]}, "materials": {}, "shapes": []})");
     RenderStats stats;
     const Image img = render_cpu(scene, 0, stats);
@@ -129,7 +147,8 @@ TEST(ClosedForms, GradientSkyIsTheBlendOnY) {
         const double t = std::max(0.0, double(r.dir.y));
         below += t == 0;
         for (int c = 0; c < 3; ++c)
-          EXPECT_NEAR(img.rgb[3 * (y * 32 + x) + c], horizon[c] * (1 - t) + zenith[c] * t, 1e-6) << integrator << " " << x << ", " << y;
+          EXPECT_NEAR(img.rgb[3 * (y * 32 + x) + c], horizon[c] * (1 - t) + zenith[c] * t, 1e-6)
+              << integrator << " " << x << ", " << y;
       }
     EXPECT_GT(below, 32) << "the view reaches below the horizon";
   }
@@ -141,8 +160,10 @@ TEST(ClosedForms, GradientSkyIsTheBlendOnY) {
 TEST(ClosedForms, DebugViewsOfASphere) {
   const Dir centre = {0.2, -0.1, 0};
   for (const char* view : {"normals", "depth", "albedo"}) {
-    const Scene scene = test::scene_from(std::string(R"({"format": "tracer-scene/1", "camera": {"from": [0.5, 1, 4], "to": [0, 0, 0], "vfov": 40},
-      "film": {"width": 40, "height": 40}, "render": {"integrator": ")") + view + R"(", "spp": 1, "sampler": "center"},
+    const Scene scene = test::scene_from(
+        std::string(R"({"format": "tracer-scene/1", "camera": {"from": [0.5, 1, 4], "to": [0, 0, 0], "vfov": 40},
+      "film": {"width": 40, "height": 40}, "render": {"integrator": ")") +
+        view + R"(", "spp": 1, "sampler": "center"},
       "materials": {"m": {"type": "lambert", "albedo": [0.3, 0.5, 0.7]}},
       "shapes": [{"type": "sphere", "center": [0.2, -0.1, 0], "radius": 1, "material": "m"}]})");
     RenderStats stats;
@@ -160,10 +181,13 @@ TEST(ClosedForms, DebugViewsOfASphere) {
         }
         ++hits;
         const Dir d = unit_dir(r);
-        const double n[3] = {r.origin.x + t * d.x - centre.x, r.origin.y + t * d.y - centre.y, r.origin.z + t * d.z - centre.z};
+        const double n[3] = {r.origin.x + t * d.x - centre.x, r.origin.y + t * d.y - centre.y,
+                             r.origin.z + t * d.z - centre.z};
         const double albedo[3] = {0.3f, 0.5f, 0.7f};  // as the scene's floats
         for (int c = 0; c < 3; ++c) {
-          const double expected = std::string(view) == "normals" ? (n[c] + 1) / 2 : std::string(view) == "depth" ? t : albedo[c];
+          const double expected = std::string(view) == "normals" ? (n[c] + 1) / 2
+                                  : std::string(view) == "depth" ? t
+                                                                 : albedo[c];
           worst = std::max(worst, std::abs(px[c] - expected) / std::max(1.0, expected));
         }
       }
@@ -178,7 +202,8 @@ TEST(ClosedForms, DebugViewsOfASphere) {
 // Whitted's Phong material on a plane under a point light, pixel by pixel:
 // ka ambient + (kd cos + ks max(n.h, 0)^shininess) I / d^2 with h the half vector.
 TEST(ClosedForms, PhongPlaneIsBlinnPhong) {
-  const Scene scene = test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0.2, 3, 4], "to": [0, 0, 0], "vfov": 50},
+  const Scene scene =
+      test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0.2, 3, 4], "to": [0, 0, 0], "vfov": 50},
     "film": {"width": 64, "height": 48}, "render": {"integrator": "whitted", "spp": 1, "sampler": "center", "max_depth": 0},
     "ambient": [0.1, 0.1, 0.1],
     "materials": {"m": {"type": "phong", "ambient": [0.2, 0.3, 0.4], "diffuse": [0.5, 0.4, 0.3], "specular": [0.4, 0.4, 0.4], "shininess": 30}},
@@ -223,7 +248,8 @@ using test::render_in;
 std::string lit_quad(const std::string& material) {
   return R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
     "film": {"width": 33, "height": 33}, "render": {"integrator": "whitted", "sampler": "center", "max_depth": 1},
-    "materials": {"m": )" + material + R"(},
+    "materials": {"m": )" +
+         material + R"(},
     "lights": [{"type": "point", "position": [0.7, 0.4, 1.5], "intensity": [3, 3, 3]}],
     "shapes": [{"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "m"}]})";
 }
@@ -233,9 +259,14 @@ std::string lit_quad(const std::string& material) {
 TEST(ClosedForms, ConstantSpecularMapScalesTheSpecularTerm) {
   const auto dir = test::temp_dir("closed-specular-map");
   write_image(column_image(4, 4, [](uint32_t) { return 0.5f; }), (dir / "half.exr").string());
-  const Image mapped = render_in(dir, lit_quad(R"({"type": "phong", "diffuse": [0.5, 0.5, 0.5], "specular": [0.6, 0.6, 0.6], "shininess": 20, "specular_map": "half.exr"})"));
-  const Image halved = render_in(dir, lit_quad(R"({"type": "phong", "diffuse": [0.5, 0.5, 0.5], "specular": [0.3, 0.3, 0.3], "shininess": 20})"));
-  const Image full = render_in(dir, lit_quad(R"({"type": "phong", "diffuse": [0.5, 0.5, 0.5], "specular": [0.6, 0.6, 0.6], "shininess": 20})"));
+  const Image mapped = render_in(
+      dir,
+      lit_quad(
+          R"({"type": "phong", "diffuse": [0.5, 0.5, 0.5], "specular": [0.6, 0.6, 0.6], "shininess": 20, "specular_map": "half.exr"})"));
+  const Image halved = render_in(
+      dir, lit_quad(R"({"type": "phong", "diffuse": [0.5, 0.5, 0.5], "specular": [0.3, 0.3, 0.3], "shininess": 20})"));
+  const Image full = render_in(
+      dir, lit_quad(R"({"type": "phong", "diffuse": [0.5, 0.5, 0.5], "specular": [0.6, 0.6, 0.6], "shininess": 20})"));
   EXPECT_EQ(std::memcmp(mapped.rgb.data(), halved.rgb.data(), mapped.rgb.size() * sizeof(float)), 0);
   EXPECT_NE(std::memcmp(mapped.rgb.data(), full.rgb.data(), mapped.rgb.size() * sizeof(float)), 0);
   std::filesystem::remove_all(dir);
@@ -249,7 +280,8 @@ TEST(ClosedForms, HeightRampTiltsTheNormalByItsSlope) {
   const auto dir = test::temp_dir("closed-bump-ramp");
   const float g = 0.25f;
   write_image(column_image(8, 8, [g](uint32_t x) { return g * x; }), (dir / "ramp.exr").string());
-  const Image img = render_in(dir, R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
+  const Image img =
+      render_in(dir, R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
     "film": {"width": 33, "height": 33}, "render": {"integrator": "path", "sampler": "center", "max_depth": 1},
     "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5], "bump_map": "ramp.exr"}},
     "lights": [{"type": "point", "position": [1, 0, 1], "intensity": [2, 2, 2]}],

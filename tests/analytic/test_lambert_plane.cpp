@@ -69,7 +69,9 @@ TEST(LambertPlane, MatchesInverseSquareCosineLaw) {
 }
 
 TEST(LambertPlane, MatchesAttenuationPolynomial) {
-  check_plane(R"({"type": "point", "position": [-0.5, 1.5, 0.5], "intensity": [2, 2, 2], "attenuation": [0.5, 0.3, 0.2]})", true);
+  check_plane(
+      R"({"type": "point", "position": [-0.5, 1.5, 0.5], "intensity": [2, 2, 2], "attenuation": [0.5, 0.3, 0.2]})",
+      true);
 }
 
 TEST(LambertPlane, PathTracerMatchesAlbedoOverPi) {

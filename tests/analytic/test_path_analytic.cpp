@@ -41,7 +41,8 @@ std::string furnace(float albedo) {
     "film": {"width": 48, "height": 48},
     "render": {"integrator": "path", "spp": 1, "sampler": "center", "max_depth": 16},
     "background": {"type": "constant", "radiance": [1, 1, 1]},
-    "materials": {"m": {"type": "lambert", "albedo": [)" + a + "," + a + "," + a + R"(]}},
+    "materials": {"m": {"type": "lambert", "albedo": [)" +
+         a + "," + a + "," + a + R"(]}},
     "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]})";
 }
 
@@ -66,7 +67,8 @@ TEST(PathAnalytic, FurnaceWithAlbedoOneIsUniform) {
 
 // A Lambert plane under a uniform sky reflects albedo times the sky's radiance.
 TEST(PathAnalytic, PlaneUnderUniformSkyReflectsAlbedoTimesSky) {
-  const Image img = render(R"({"format": "tracer-scene/1", "camera": {"from": [0, 2, 0], "to": [0, 0, 0.01], "vfov": 60},
+  const Image img =
+      render(R"({"format": "tracer-scene/1", "camera": {"from": [0, 2, 0], "to": [0, 0, 0.01], "vfov": 60},
     "film": {"width": 32, "height": 32}, "render": {"integrator": "path", "spp": 8, "sampler": "stochastic", "max_depth": 4},
     "background": {"type": "constant", "radiance": [2, 3, 4]},
     "materials": {"m": {"type": "lambert", "albedo": [0.7, 0.5, 0.25]}},
@@ -88,11 +90,15 @@ void plane_under_bright_top_face(bool sky_sampling) {
   RenderOverrides ov;
   ov.sky_sampling = sky_sampling ? Switch::On : Switch::Off;
   RenderStats stats;
-  const Image img = render_cpu(load_scene_text(R"({"format": "tracer-scene/1", "camera": {"from": [0, 2, 0], "to": [0, 0, 0.01], "vfov": 60},
+  const Image img = render_cpu(
+      load_scene_text(R"({"format": "tracer-scene/1", "camera": {"from": [0, 2, 0], "to": [0, 0, 0.01], "vfov": 60},
     "film": {"width": 32, "height": 32}, "render": {"integrator": "path", "spp": 16, "sampler": "stochastic", "max_depth": 4},
-    "background": {"type": "cubemap", "faces": [)" + faces + R"(]},
+    "background": {"type": "cubemap", "faces": [)" +
+                          faces + R"(]},
     "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
-    "shapes": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "m"}]})", (dir / "s.json").string(), ov), 0, stats);
+    "shapes": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "m"}]})",
+                      (dir / "s.json").string(), ov),
+      0, stats);
   std::filesystem::remove_all(dir);
   EXPECT_EQ(stats.nonfinite_samples, 0u);
   const MeanStat m = mean_of(img, 0);
@@ -111,7 +117,8 @@ void closed_emitting_sphere(bool nee) {
   const Image img = render(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 0], "to": [0, 0, 1], "vfov": 70},
     "film": {"width": 40, "height": 40}, "render": {"integrator": "path", "spp": 16, "sampler": "stochastic", "max_depth": 64},
     "materials": {"shell": {"type": "emissive", "radiance": [0.5, 0.5, 0.5], "albedo": [0.5, 0.5, 0.5], "two_sided": true}},
-    "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "shell"}]})", ov);
+    "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "shell"}]})",
+                           ov);
   for (int c = 0; c < 3; ++c) {
     const MeanStat m = mean_of(img, c);
     EXPECT_NEAR(m.mean, 1.0, 5 * m.stderr_ + kFloatTolerance) << "channel " << c << ", stderr " << m.stderr_;
@@ -140,7 +147,8 @@ TEST(PathAnalytic, PointLightAtTheCentreOfALambertSphere) {
 std::string lit_room(uint32_t size) {
   const std::string n = std::to_string(size);
   return R"({"format": "tracer-scene/1", "camera": {"from": [0, 1, 3], "to": [0, 0.4, 0], "vfov": 50},
-    "film": {"width": )" + n + R"(, "height": )" + n + R"(}, "render": {"integrator": "path", "sampler": "stochastic", "max_depth": 4},
+    "film": {"width": )" +
+         n + R"(, "height": )" + n + R"(}, "render": {"integrator": "path", "sampler": "stochastic", "max_depth": 4},
     "materials": {"white": {"type": "lambert", "albedo": [0.7, 0.7, 0.7]}, "red": {"type": "lambert", "albedo": [0.7, 0.2, 0.2]},
                   "lamp": {"type": "emissive", "radiance": [8, 8, 8]}},
     "shapes": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "white"},

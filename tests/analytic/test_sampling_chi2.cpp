@@ -77,7 +77,8 @@ double direction_test(Vec3 axis, Sample sample, CdfCos cdf_cos, double cos_lo, i
   }
   for (int ci = 0; ci < cos_bins; ++ci) {
     const double c0 = cos_lo + (1 - cos_lo) * ci / cos_bins, c1 = cos_lo + (1 - cos_lo) * (ci + 1) / cos_bins;
-    for (int pi = 0; pi < phi_bins; ++pi) expected[ci * phi_bins + pi] = kSamples * (cdf_cos(c1) - cdf_cos(c0)) / phi_bins;
+    for (int pi = 0; pi < phi_bins; ++pi)
+      expected[ci * phi_bins + pi] = kSamples * (cdf_cos(c1) - cdf_cos(c0)) / phi_bins;
   }
   return chi2_p_value(observed, expected);
 }
@@ -94,12 +95,15 @@ Material material(MaterialKind kind) {
 TEST(SamplingChi2, CosineHemisphere) {
   const Vec3 n = normalize(Vec3{0.3f, 0.5f, -0.8f});
   const Material m = material(MaterialKind::Lambert);
-  const double p = direction_test(n, [&](float a, float b, float c) {
-    BsdfSample s;
-    EXPECT_TRUE(sample_bsdf(m, n, n, true, a, b, c, s));
-    EXPECT_NEAR(s.pdf, dot(s.wi, n) / kPi, 1e-5);
-    return s.wi;
-  }, [](double c) { return c * c; }, 0.0);  // P(cos < c) = c^2 for density cos / pi
+  const double p = direction_test(
+      n,
+      [&](float a, float b, float c) {
+        BsdfSample s;
+        EXPECT_TRUE(sample_bsdf(m, n, n, true, a, b, c, s));
+        EXPECT_NEAR(s.pdf, dot(s.wi, n) / kPi, 1e-5);
+        return s.wi;
+      },
+      [](double c) { return c * c; }, 0.0);  // P(cos < c) = c^2 for density cos / pi
   EXPECT_GT(p, kSignificance);
 }
 
@@ -108,12 +112,15 @@ TEST(SamplingChi2, MetalLobeAtNormalIncidence) {
   m.roughness = 0.4f;
   const float e = metal_exponent(m.roughness);
   const Vec3 n = {0, 1, 0};
-  const double p = direction_test(n, [&](float a, float b, float c) {
-    BsdfSample s;
-    EXPECT_TRUE(sample_bsdf(m, n, n, true, a, b, c, s));
-    EXPECT_NEAR(s.pdf, pdf_bsdf(m, n, s.wi, n), 1e-4 * s.pdf);
-    return s.wi;
-  }, [&](double c) { return std::pow(c, e + 1.0); }, 0.0);  // density (e+1)/(2 pi) cos^e
+  const double p = direction_test(
+      n,
+      [&](float a, float b, float c) {
+        BsdfSample s;
+        EXPECT_TRUE(sample_bsdf(m, n, n, true, a, b, c, s));
+        EXPECT_NEAR(s.pdf, pdf_bsdf(m, n, s.wi, n), 1e-4 * s.pdf);
+        return s.wi;
+      },
+      [&](double c) { return std::pow(c, e + 1.0); }, 0.0);  // density (e+1)/(2 pi) cos^e
   EXPECT_GT(p, kSignificance);
 }
 
@@ -124,11 +131,14 @@ TEST(SamplingChi2, PhongLobes) {
   m.shininess = 20.0f;
   const Vec3 n = {0, 0, 1};
   const double pd = phong_diffuse_probability(m);
-  const double p = direction_test(n, [&](float a, float b, float c) {
-    BsdfSample s;
-    EXPECT_TRUE(sample_bsdf(m, n, n, true, a, b, c, s));
-    return s.wi;
-  }, [&](double c) { return pd * c * c + (1 - pd) * std::pow(c, m.shininess + 1.0); }, 0.0);
+  const double p = direction_test(
+      n,
+      [&](float a, float b, float c) {
+        BsdfSample s;
+        EXPECT_TRUE(sample_bsdf(m, n, n, true, a, b, c, s));
+        return s.wi;
+      },
+      [&](double c) { return pd * c * c + (1 - pd) * std::pow(c, m.shininess + 1.0); }, 0.0);
   EXPECT_GT(p, kSignificance);
 }
 
@@ -158,10 +168,12 @@ struct LightFixture {
   Scene scene;
   SceneView view;
   explicit LightFixture(const std::string& shape)
-      : scene(test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
+      : scene(
+            test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
           "film": {"width": 4, "height": 4}, "render": {"integrator": "path"},
           "materials": {"lamp": {"type": "emissive", "radiance": [1, 1, 1], "two_sided": true}},
-          "shapes": [)" + shape + "]}")),
+          "shapes": [)" + shape +
+                             "]}")),
         view(scene.view()) {}
 };
 
@@ -183,9 +195,10 @@ TEST(SamplingChi2, SphereLightIsUniformInItsCone) {
   const LightFixture fx(R"({"type": "sphere", "center": [0, 0, 0], "radius": 0.5, "material": "lamp"})");
   const Vec3 from = {0.4f, 1.2f, 2.0f};
   const double d2 = dot(from, from), cos_max = std::sqrt(1 - 0.25 / d2);
-  const double p = direction_test(-from / std::sqrt(float(d2)), [&](float a, float b, float) {
-    return sample_light(fx.view, 0, from, a, b, 0.0f).wi;
-  }, [&](double c) { return (c - cos_max) / (1 - cos_max); }, cos_max);
+  const double p = direction_test(
+      -from / std::sqrt(float(d2)),
+      [&](float a, float b, float) { return sample_light(fx.view, 0, from, a, b, 0.0f).wi; },
+      [&](double c) { return (c - cos_max) / (1 - cos_max); }, cos_max);
   EXPECT_GT(p, kSignificance);
   const double omega = mean_inverse_pdf(fx, from, [](const LightSample&) {});
   EXPECT_NEAR(omega, 2 * M_PI * (1 - cos_max), 1e-3 * omega);
@@ -195,8 +208,9 @@ TEST(SamplingChi2, SphereLightIsUniformInItsCone) {
 // are those of (b1, b2) with b1 + b2 <= 1, cut in half along the diagonal.
 TEST(SamplingChi2, QuadAndTriangleLightsAreUniformByArea) {
   for (const bool triangle : {false, true}) {
-    const LightFixture fx(triangle ? R"({"type": "triangle", "vertices": [[-1, -1, 0], [1, -1, 0], [-1, 1, 0]], "material": "lamp"})"
-                                   : R"({"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "lamp"})");
+    const LightFixture fx(
+        triangle ? R"({"type": "triangle", "vertices": [[-1, -1, 0], [1, -1, 0], [-1, 1, 0]], "material": "lamp"})"
+                 : R"({"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "lamp"})");
     const Vec3 from = {0.3f, -0.2f, 1.5f};
     constexpr int kBins = 12;
     std::vector<double> observed(kBins * kBins, 0.0), expected(kBins * kBins, 0.0);
@@ -235,7 +249,8 @@ TEST(SamplingChi2, QuadAndTriangleLightsAreUniformByArea) {
 Scene sky_only_scene(const std::filesystem::path& dir, const std::string& faces) {
   return load_scene_text(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
       "film": {"width": 4, "height": 4}, "render": {"integrator": "path"},
-      "background": {"type": "cubemap", "faces": [)" + faces + R"(]}, "materials": {}, "shapes": []})",
+      "background": {"type": "cubemap", "faces": [)" +
+                             faces + R"(]}, "materials": {}, "shapes": []})",
                          (dir / "s.json").string());
 }
 
@@ -264,7 +279,8 @@ TEST(SamplingChi2, CubeMapSkyCellsByTheirDensity) {
     ASSERT_NEAR(length(ls.wi), 1.0f, 1e-6f);
     float u, v;
     const uint32_t face = cube_face(ls.wi, u, v);
-    const int bx = std::min(kBinsPerSide - 1, int(u * kBinsPerSide)), by = std::min(kBinsPerSide - 1, int(v * kBinsPerSide));
+    const int bx = std::min(kBinsPerSide - 1, int(u * kBinsPerSide)),
+              by = std::min(kBinsPerSide - 1, int(v * kBinsPerSide));
     observed[(face * kBinsPerSide + by) * kBinsPerSide + bx] += 1;
     inverse_pdf += 1.0 / ls.pdf, inverse_pdf2 += 1.0 / (double(ls.pdf) * ls.pdf);
   }
@@ -275,9 +291,11 @@ TEST(SamplingChi2, CubeMapSkyCellsByTheirDensity) {
         double p = 0;
         for (int j = 0; j < kQuad; ++j)
           for (int i = 0; i < kQuad; ++i) {
-            const double a = -1 + 2 * (bx + (i + 0.5) / kQuad) / kBinsPerSide, b = -1 + 2 * (by + (j + 0.5) / kQuad) / kBinsPerSide;
+            const double a = -1 + 2 * (bx + (i + 0.5) / kQuad) / kBinsPerSide,
+                         b = -1 + 2 * (by + (j + 0.5) / kQuad) / kBinsPerSide;
             const double r2 = 1 + a * a + b * b, area = 4.0 / (kBinsPerSide * kBinsPerSide * kQuad * kQuad);
-            p += sky_direction_pdf(view, normalize(cube_direction(face, float(a), float(b)))) * area / (r2 * std::sqrt(r2));
+            p += sky_direction_pdf(view, normalize(cube_direction(face, float(a), float(b)))) * area /
+                 (r2 * std::sqrt(r2));
           }
         expected[(face * kBinsPerSide + by) * kBinsPerSide + bx] = kSamples * p;
       }
@@ -305,16 +323,16 @@ TEST(SamplingChi2, CubeMapSkyCellSeesALoneTexelOffItsCentre) {
 }
 
 TEST(SamplingChi2, GammaQKnownValues) {
-  EXPECT_NEAR(gamma_q(1.0, 2.0), std::exp(-2.0), 1e-12);           // Q(1, x) = e^-x
-  EXPECT_NEAR(gamma_q(0.5, 1.0), std::erfc(1.0), 1e-10);           // Q(1/2, x) = erfc(sqrt(x))
+  EXPECT_NEAR(gamma_q(1.0, 2.0), std::exp(-2.0), 1e-12);  // Q(1, x) = e^-x
+  EXPECT_NEAR(gamma_q(0.5, 1.0), std::erfc(1.0), 1e-10);  // Q(1/2, x) = erfc(sqrt(x))
   // Integer a: Q(n, x) = e^-x sum_{k<n} x^k / k!  (chi-square with 10 dof at 40).
   EXPECT_NEAR(gamma_q(5.0, 20.0), std::exp(-20.0) * (1 + 20 + 200 + 8000.0 / 6 + 160000.0 / 24), 1e-15);
 }
 
 // The test has power: uniform hemisphere samples are not cosine-distributed.
 TEST(SamplingChi2, RejectsAWrongDensity) {
-  const double p = direction_test({0, 0, 1}, [](float a, float b, float) { return direction_from(a, b); },
-                                  [](double c) { return c * c; }, 0.0);
+  const double p = direction_test(
+      {0, 0, 1}, [](float a, float b, float) { return direction_from(a, b); }, [](double c) { return c * c; }, 0.0);
   EXPECT_LT(p, 1e-12);
 }
 

@@ -22,21 +22,26 @@ constexpr uint32_t kPixels = 64;
 double measured_diameter(uint64_t seed) {
   const double vfov = 2 * std::atan(kViewHeight / 2 / kFocus) * 180 / M_PI;
   const std::string s = std::to_string(kHalfSize), z = std::to_string(-kObject);
-  const Scene scene = test::scene_from(R"({"format": "tracer-scene/1",
-    "camera": {"from": [0, 0, 0], "to": [0, 0, -1], "vfov": )" + std::to_string(vfov) + R"(, "aperture": )" +
-                                       std::to_string(kAperture) + R"(, "focus_distance": )" + std::to_string(kFocus) + R"(},
+  const Scene scene =
+      test::scene_from(R"({"format": "tracer-scene/1",
+    "camera": {"from": [0, 0, 0], "to": [0, 0, -1], "vfov": )" +
+                       std::to_string(vfov) + R"(, "aperture": )" + std::to_string(kAperture) +
+                       R"(, "focus_distance": )" + std::to_string(kFocus) + R"(},
     "film": {"width": 64, "height": 64},
-    "render": {"integrator": "albedo", "spp": 256, "sampler": "stratified", "seed": )" + std::to_string(seed) + R"(},
+    "render": {"integrator": "albedo", "spp": 256, "sampler": "stratified", "seed": )" +
+                       std::to_string(seed) + R"(},
     "materials": {"lamp": {"type": "emissive", "radiance": [1, 1, 1]}},
-    "shapes": [{"type": "quad", "corner": [-)" + s + ", -" + s + ", " + z + R"(], "u": [)" + std::to_string(2 * kHalfSize) +
-                                       R"(, 0, 0], "v": [0, )" + std::to_string(2 * kHalfSize) + R"(, 0], "material": "lamp"}]})");
+    "shapes": [{"type": "quad", "corner": [-)" +
+                       s + ", -" + s + ", " + z + R"(], "u": [)" + std::to_string(2 * kHalfSize) +
+                       R"(, 0, 0], "v": [0, )" + std::to_string(2 * kHalfSize) + R"(, 0], "material": "lamp"}]})");
   RenderStats stats;
   const Image img = render_cpu(scene, 0, stats);
   const double h = kViewHeight / kPixels;  // pixel size on the focus plane
   double sum = 0, sx = 0, sy = 0, sr2 = 0;
   for (uint32_t y = 0; y < kPixels; ++y)
     for (uint32_t x = 0; x < kPixels; ++x) {
-      const double w = img.rgb[3 * (y * kPixels + x)], px = (x + 0.5) * h - kViewHeight / 2, py = (y + 0.5) * h - kViewHeight / 2;
+      const double w = img.rgb[3 * (y * kPixels + x)], px = (x + 0.5) * h - kViewHeight / 2,
+                   py = (y + 0.5) * h - kViewHeight / 2;
       sum += w, sx += w * px, sy += w * py, sr2 += w * (px * px + py * py);
     }
   const double cx = sx / sum, cy = sy / sum, r2 = sr2 / sum - cx * cx - cy * cy;
@@ -54,7 +59,8 @@ TEST(ThinLens, OutOfFocusPointBlursIntoThePredictedDisc) {
   const double stderr_ = std::sqrt(var / d.size());
   RecordProperty("measured", std::to_string(mean));
   RecordProperty("predicted", std::to_string(predicted));
-  EXPECT_NEAR(mean, predicted, 5 * stderr_) << "stderr " << stderr_ << " (" << predicted / (kViewHeight / kPixels) << " pixels)";
+  EXPECT_NEAR(mean, predicted, 5 * stderr_)
+      << "stderr " << stderr_ << " (" << predicted / (kViewHeight / kPixels) << " pixels)";
   EXPECT_LT(stderr_, 0.02 * predicted) << "enough samples to measure the disc";
 }
 

@@ -9,10 +9,10 @@
 #include <cstring>
 #include <limits>
 
-#include "render/device_error.h"
 #include "golden/golden_manifest.h"
 #include "parity/parity_gpu.h"
 #include "parity/parity_inputs.h"
+#include "render/device_error.h"
 #include "render/render_cpu.h"
 #include "scene/scene_loader.h"
 #include "test_util.h"
@@ -21,13 +21,13 @@ namespace tracer::parity {
 namespace {
 
 // Skips the rest of a test, with the reason, when no GPU can run it.
-#define SKIP_WITHOUT_GPU()                                                   \
-  do {                                                                       \
-    try {                                                                    \
-      std::printf("GPU: %s\n", gpu_device().c_str());                        \
-    } catch (const DeviceUnavailable& e) {                                   \
+#define SKIP_WITHOUT_GPU()                                                       \
+  do {                                                                           \
+    try {                                                                        \
+      std::printf("GPU: %s\n", gpu_device().c_str());                            \
+    } catch (const DeviceUnavailable& e) {                                       \
       GTEST_SKIP() << "CPU side computed; no GPU to compare with: " << e.what(); \
-    }                                                                        \
+    }                                                                            \
   } while (0)
 
 // Counts elements whose bytes differ and reports the first few with their index.
@@ -54,7 +54,8 @@ TEST(CudaParity, DeterministicMathFunctions) {
   for (uint32_t fi = 0; fi < kMathFunctionCount; ++fi) {
     MathInputs in = math_inputs(static_cast<MathFunction>(fi), fi, 1u << 20, 1u << 19);
     a[fi] = std::move(in.a), b[fi] = std::move(in.b);
-    for (size_t i = 0; i < a[fi].size(); ++i) cpu[fi].push_back(eval_math(static_cast<MathFunction>(fi), a[fi][i], b[fi][i]));
+    for (size_t i = 0; i < a[fi].size(); ++i)
+      cpu[fi].push_back(eval_math(static_cast<MathFunction>(fi), a[fi][i], b[fi][i]));
   }
   SKIP_WITHOUT_GPU();
   for (uint32_t fi = 0; fi < kMathFunctionCount; ++fi) {
@@ -79,7 +80,9 @@ TEST(CudaParity, RayShapeTests) {
   for (size_t i = 0; i < q.size(); ++i) hits += (cpu[i] = eval_shape(q[i])).hit;
   EXPECT_GT(hits, q.size() / 3) << "the queries should mostly hit";
   SKIP_WITHOUT_GPU();
-  expect_same_bits(cpu, gpu_shapes(q), [&](size_t i) { return "kind " + std::to_string(static_cast<int>(q[i].prim.kind)) + ", t " + hex(cpu[i].t); });
+  expect_same_bits(cpu, gpu_shapes(q), [&](size_t i) {
+    return "kind " + std::to_string(static_cast<int>(q[i].prim.kind)) + ", t " + hex(cpu[i].t);
+  });
 }
 
 Scene golden_scene(const std::string& name) {
@@ -135,7 +138,8 @@ TEST(CudaParity, WholePixelsOfEveryGolden) {
   SKIP_WITHOUT_GPU();
   for (size_t g = 0; g < scenes.size(); ++g) {
     SCOPED_TRACE(manifest.entries[g].name);
-    expect_same_bits(cpu[g], gpu_samples(scenes[g], scenes[g].view()), [](size_t i) { return "pixel " + std::to_string(i); });
+    expect_same_bits(cpu[g], gpu_samples(scenes[g], scenes[g].view()),
+                     [](size_t i) { return "pixel " + std::to_string(i); });
   }
 }
 

@@ -6,9 +6,9 @@
 
 #include <cstring>
 
-#include "options/enum_names.h"
 #include "golden/golden_check.h"
 #include "kernel/accel/trace.h"
+#include "options/enum_names.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_types.h"
 #include "test_util.h"
@@ -29,7 +29,9 @@ std::vector<Ray> probe_rays(const Scene& scene) {
     if (p.kind != ShapeKind::Plane) lo = min_of(lo, min_of(p.a, p.c)), hi = max_of(hi, max_of(p.a, p.c));
   if (!(lo.x <= hi.x)) lo = {-1, -1, -1}, hi = {1, 1, 1};
   const Vec3 size = hi - lo;
-  const auto point = [&] { return lo - size * 0.25f + Vec3{s.next() * size.x, s.next() * size.y, s.next() * size.z} * 1.5f; };
+  const auto point = [&] {
+    return lo - size * 0.25f + Vec3{s.next() * size.x, s.next() * size.y, s.next() * size.z} * 1.5f;
+  };
   std::vector<Ray> rays;
   for (int i = 0; i < 20000; ++i) {
     const Vec3 o = point(), t = point();
@@ -90,7 +92,8 @@ TEST(AccelIdentity, HitsOnCellBoundariesAndStraddlingPrimitives) {
                {"type": "sphere", "center": [4, 1, 5], "radius": 2.5, "material": "m"})";
   const std::string json = R"({"format": "tracer-scene/1", "camera": {"from": [4, 6, -6], "to": [4, 0, 4], "vfov": 50},
     "film": {"width": 8, "height": 8}, "render": {"grid_resolution": 8},
-    "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}}, "shapes": [)" + shapes + "]}";
+    "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}}, "shapes": [)" +
+                           shapes + "]}";
   std::vector<Scene> built;
   for (const std::string& accel : structures()) {
     RenderOverrides ov;
@@ -101,15 +104,16 @@ TEST(AccelIdentity, HitsOnCellBoundariesAndStraddlingPrimitives) {
   for (int i = 0; i <= 8; ++i)
     for (int j = 0; j <= 8; ++j) {
       const Vec3 corner = {float(i), 0.0f, float(j)};
-      rays.push_back({corner + Vec3{0, 3, 0}, {0, -1, 0}});                      // straight down onto a shared corner
+      rays.push_back({corner + Vec3{0, 3, 0}, {0, -1, 0}});                       // straight down onto a shared corner
       rays.push_back({corner + Vec3{0.5f, 3, 0}, normalize(Vec3{0, -1, 0.3f})});  // down along a boundary plane
-      rays.push_back({Vec3{-1, 0.5f, float(j)}, {1, 0, 0}});                       // along a boundary, through the box
+      rays.push_back({Vec3{-1, 0.5f, float(j)}, {1, 0, 0}});                      // along a boundary, through the box
     }
   for (const Ray& ray : rays) {
     const Hit reference = trace_closest(built[0].view(), ray, kInfinity);
     for (size_t k = 1; k < built.size(); ++k) {
       const Hit h = trace_closest(built[k].view(), ray, kInfinity);
-      ASSERT_EQ(std::memcmp(&h, &reference, sizeof(Hit)), 0) << structures()[k] << ": prim " << h.prim << " against " << reference.prim;
+      ASSERT_EQ(std::memcmp(&h, &reference, sizeof(Hit)), 0)
+          << structures()[k] << ": prim " << h.prim << " against " << reference.prim;
     }
   }
   EXPECT_GT(built[4].grid.n[0], 1u) << "the grid test needs cells";

@@ -4,8 +4,8 @@
 
 #include <cstring>
 
-#include "options/enum_names.h"
 #include "image/image_io.h"
+#include "options/enum_names.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
 
@@ -33,7 +33,8 @@ TEST(Determinism, ThreadCountsGiveIdenticalImagesThroughCli) {
   for (int threads : {1, 2, 7}) {
     const std::string out = (dir / ("t" + std::to_string(threads) + ".exr")).string();
     ASSERT_EQ(test::run_tracer("render " + scene + " --quiet --width 160 --height 120 --threads " +
-                               std::to_string(threads) + " -o " + out), 0);
+                               std::to_string(threads) + " -o " + out),
+              0);
     images.push_back(read_image(out));
   }
   EXPECT_TRUE(same_bits(images[0], images[1]));

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "golden/golden_manifest.h"
 #include "accel/lbvh_builder.h"
+#include "golden/golden_manifest.h"
 #include "parity/parallel_for.h"
 #include "parity/parity_inputs.h"
 #include "test_util.h"
@@ -43,8 +43,9 @@ TEST(GpuPack, RunnerOnTheCpuReproducesEveryGoldenHashAndParityAnswer) {
     ASSERT_NE(at, std::string::npos) << e.name << " has no row:\n" << out;
     EXPECT_NE(out.substr(at, 60).find("PASS"), std::string::npos) << out.substr(at, 200);
   }
-  for (const char* c : {"math-sin", "math-pow", "philox", "shapes", "trace-mesh-bvh", "trace-mesh-lbvh",
-                        "trace-mesh-kdtree", "trace-mesh-grid", "trace-mesh-none", "lbvh-build-1m", "sample-cornell-box"})
+  for (const char* c :
+       {"math-sin", "math-pow", "philox", "shapes", "trace-mesh-bvh", "trace-mesh-lbvh", "trace-mesh-kdtree",
+        "trace-mesh-grid", "trace-mesh-none", "lbvh-build-1m", "sample-cornell-box"})
     EXPECT_NE(out.find(std::string(c) + " "), std::string::npos) << c << " missing:\n" << out;
   EXPECT_EQ(out.find("FAIL"), std::string::npos) << out;
 }
@@ -149,7 +150,8 @@ TEST(LbvhBuild, OpenMpAndStdThreadsGiveTheSameTree) {
   for (unsigned threads : {1u, 2u, 7u}) {
     const LbvhTree tree = build_lbvh_tree(in, [&](size_t n, const auto& fn) { parallel_for(n, threads, fn, 16); });
     ASSERT_EQ(tree.nodes.size(), openmp.size());
-    EXPECT_EQ(std::memcmp(tree.nodes.data(), openmp.data(), openmp.size() * sizeof(BvhNode)), 0) << threads << " threads";
+    EXPECT_EQ(std::memcmp(tree.nodes.data(), openmp.data(), openmp.size() * sizeof(BvhNode)), 0)
+        << threads << " threads";
     ASSERT_EQ(tree.order.size(), items.size());
     for (size_t k = 0; k < items.size(); ++k) ASSERT_EQ(in.ids[tree.order[k]], items[k].id) << "leaf " << k;
   }
@@ -163,7 +165,10 @@ class BundleInput : public ::testing::Test {
     bundle_ = (dir_ / "refraction.bundle").string();
     std::string out;
     ASSERT_EQ(test::run_tracer("bundle " + test::source_path("scenes/features/refraction.json") +
-                                   " --width 32 --height 24 -o " + bundle_, &out), 0) << out;
+                                   " --width 32 --height 24 -o " + bundle_,
+                               &out),
+              0)
+        << out;
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -195,8 +200,8 @@ TEST_F(BundleInput, TheRunnerRendersItAndAWrongExpectedHashFails) {
 
 TEST_F(BundleInput, TruncatedCorruptedOrForeignFilesAreRefused) {
   const std::string bytes = slurp(bundle_);
-  const fs::path truncated = dir_ / "truncated.bundle", flipped = dir_ / "flipped.bundle", empty = dir_ / "empty.bundle",
-                 foreign = dir_ / "scene.json";
+  const fs::path truncated = dir_ / "truncated.bundle", flipped = dir_ / "flipped.bundle",
+                 empty = dir_ / "empty.bundle", foreign = dir_ / "scene.json";
   spill(truncated, bytes.substr(0, bytes.size() / 2));
   std::string f = bytes;
   f[f.size() / 2] ^= 0x10;
@@ -223,9 +228,12 @@ TEST_F(BundleInput, TracerBundleRefusesBadArgumentsAndWritesNothing) {
   const std::string scene = test::source_path("scenes/features/refraction.json");
   EXPECT_EQ(test::run_tracer("bundle " + scene + " -o " + (dir_ / "x.exr").string(), &out), 2) << out;
   EXPECT_NE(out.find("NAME.bundle"), std::string::npos) << out;
-  EXPECT_EQ(test::run_tracer("bundle " + scene + " --spp 4 --samples 3:9 -o " + (dir_ / "y.bundle").string(), &out), 2) << out;
+  EXPECT_EQ(test::run_tracer("bundle " + scene + " --spp 4 --samples 3:9 -o " + (dir_ / "y.bundle").string(), &out), 2)
+      << out;
   EXPECT_FALSE(fs::exists(dir_ / "y.bundle"));
-  EXPECT_EQ(test::run_tracer("bundle " + (dir_ / "none.json").string() + " -o " + (dir_ / "z.bundle").string(), &out), 2) << out;
+  EXPECT_EQ(test::run_tracer("bundle " + (dir_ / "none.json").string() + " -o " + (dir_ / "z.bundle").string(), &out),
+            2)
+      << out;
   EXPECT_FALSE(fs::exists(dir_ / "z.bundle"));
 }
 

@@ -22,28 +22,36 @@ TEST_P(MergeSplits, MergedPartsEqualTheWholeRender) {
   const auto dir = test::temp_dir("merge");
   const std::string scene = test::source_path(GetParam().scene), extra = GetParam().extra;
   std::string output;
-  ASSERT_EQ(test::run_tracer("render " + scene + " --quiet " + extra + " -o " + (dir / "whole.exr").string(), &output), 0) << output;
+  ASSERT_EQ(test::run_tracer("render " + scene + " --quiet " + extra + " -o " + (dir / "whole.exr").string(), &output),
+            0)
+      << output;
   std::string parts;
   for (const auto& [a, b] : GetParam().ranges) {
     const std::string part = (dir / ("part" + std::to_string(a) + ".partial")).string();
     ASSERT_EQ(test::run_tracer("render " + scene + " --quiet " + extra + " --threads " + std::to_string(1 + a % 3) +
-                                   " --samples " + std::to_string(a) + ":" + std::to_string(b) + " -o " + part, &output), 0)
+                                   " --samples " + std::to_string(a) + ":" + std::to_string(b) + " -o " + part,
+                               &output),
+              0)
         << output;
     parts = part + " " + parts;  // merge takes the parts in any order
   }
   ASSERT_EQ(test::run_tracer("merge " + parts + "-o " + (dir / "merged.exr").string(), &output), 0) << output;
-  EXPECT_EQ(test::run_tracer("compare " + (dir / "whole.exr").string() + " " + (dir / "merged.exr").string() + " --fail 0", &output), 0)
+  EXPECT_EQ(test::run_tracer(
+                "compare " + (dir / "whole.exr").string() + " " + (dir / "merged.exr").string() + " --fail 0", &output),
+            0)
       << output;
   std::filesystem::remove_all(dir);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, MergeSplits,
-    testing::Values(Split{"scenes/features/thin-lens.json", "", {{0, 1}, {1, 5}, {5, 16}}},
-                    Split{"scenes/cornell-box.json", "--width 96 --height 72 --sampler stochastic --spp 7", {{0, 3}, {3, 4}, {4, 7}}},
-                    Split{"scenes/features/refraction.json", "--sampler stratified --spp 9", {{0, 4}, {4, 9}}},
-                    Split{"scenes/cornell-box-path.json", "--width 64 --height 48 --spp 12", {{0, 5}, {5, 6}, {6, 12}}},
-                    Split{"scenes/features/path-materials.json", "--width 48 --height 36 --spp 8 --nee off", {{0, 3}, {3, 8}}}));
+    testing::Values(
+        Split{"scenes/features/thin-lens.json", "", {{0, 1}, {1, 5}, {5, 16}}},
+        Split{
+            "scenes/cornell-box.json", "--width 96 --height 72 --sampler stochastic --spp 7", {{0, 3}, {3, 4}, {4, 7}}},
+        Split{"scenes/features/refraction.json", "--sampler stratified --spp 9", {{0, 4}, {4, 9}}},
+        Split{"scenes/cornell-box-path.json", "--width 64 --height 48 --spp 12", {{0, 5}, {5, 6}, {6, 12}}},
+        Split{"scenes/features/path-materials.json", "--width 48 --height 36 --spp 8 --nee off", {{0, 3}, {3, 8}}}));
 
 TEST(Merge, RefusesGapsOverlapsAndOtherRenders) {
   const auto dir = test::temp_dir("merge-bad");

@@ -53,42 +53,42 @@ Sweep sweep1(F f, R ref, float lo, float hi, float lo_mag, float hi_mag, bool ne
   return s;
 }
 
-#define EXPECT_SWEEP_WITHIN_BOUND(sweep)                                                      \
-  do {                                                                                        \
-    const Sweep s_ = (sweep);                                                                 \
-    EXPECT_LE(s_.max_error, kUlpBound) << "worst argument " << s_.worst;                     \
-    RecordProperty("max_ulp_error", std::to_string(s_.max_error));                           \
+#define EXPECT_SWEEP_WITHIN_BOUND(sweep)                                 \
+  do {                                                                   \
+    const Sweep s_ = (sweep);                                            \
+    EXPECT_LE(s_.max_error, kUlpBound) << "worst argument " << s_.worst; \
+    RecordProperty("max_ulp_error", std::to_string(s_.max_error));       \
   } while (0)
 
 }  // namespace
 
 TEST(DetMath, SinSweep) {
-  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_sin(x); }, [](double x) { return std::sin(x); },
-                                   -10.0f, 10.0f, 1e-8f, 1e6f, true));
+  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_sin(x); }, [](double x) { return std::sin(x); }, -10.0f,
+                                   10.0f, 1e-8f, 1e6f, true));
 }
 TEST(DetMath, CosSweep) {
-  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_cos(x); }, [](double x) { return std::cos(x); },
-                                   -10.0f, 10.0f, 1e-8f, 1e6f, true));
+  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_cos(x); }, [](double x) { return std::cos(x); }, -10.0f,
+                                   10.0f, 1e-8f, 1e6f, true));
 }
 TEST(DetMath, TanSweep) {
-  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_tan(x); }, [](double x) { return std::tan(x); },
-                                   -1.6f, 1.6f, 1e-8f, 1e5f, true));
+  EXPECT_SWEEP_WITHIN_BOUND(
+      sweep1([](float x) { return det_tan(x); }, [](double x) { return std::tan(x); }, -1.6f, 1.6f, 1e-8f, 1e5f, true));
 }
 TEST(DetMath, AsinSweep) {
-  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_asin(x); }, [](double x) { return std::asin(x); },
-                                   -1.0f, 1.0f, 1e-10f, 1.0f, true));
+  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_asin(x); }, [](double x) { return std::asin(x); }, -1.0f,
+                                   1.0f, 1e-10f, 1.0f, true));
 }
 TEST(DetMath, AcosSweep) {
-  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_acos(x); }, [](double x) { return std::acos(x); },
-                                   -1.0f, 1.0f, 1e-10f, 1.0f, true));
+  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_acos(x); }, [](double x) { return std::acos(x); }, -1.0f,
+                                   1.0f, 1e-10f, 1.0f, true));
 }
 TEST(DetMath, ExpSweep) {
-  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_exp(x); }, [](double x) { return std::exp(x); },
-                                   -103.0f, 88.7f, 1e-10f, 100.0f, true));
+  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_exp(x); }, [](double x) { return std::exp(x); }, -103.0f,
+                                   88.7f, 1e-10f, 100.0f, true));
 }
 TEST(DetMath, LogSweep) {
-  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_log(x); }, [](double x) { return std::log(x); },
-                                   0.0f, 4.0f, 1e-44f, 3e38f, false));
+  EXPECT_SWEEP_WITHIN_BOUND(sweep1([](float x) { return det_log(x); }, [](double x) { return std::log(x); }, 0.0f, 4.0f,
+                                   1e-44f, 3e38f, false));
 }
 TEST(DetMath, Atan2Sweep) {
   std::mt19937 rng(7);
@@ -97,7 +97,9 @@ TEST(DetMath, Atan2Sweep) {
   Sweep s;
   for (int i = 0; i < 1000000; ++i) {
     float y = d(rng), x = d(rng);
-    if (i & 1) y = static_cast<float>(std::exp2(lg(rng))) * (y < 0 ? -1 : 1), x = static_cast<float>(std::exp2(lg(rng))) * (x < 0 ? -1 : 1);
+    if (i & 1)
+      y = static_cast<float>(std::exp2(lg(rng))) * (y < 0 ? -1 : 1),
+      x = static_cast<float>(std::exp2(lg(rng))) * (x < 0 ? -1 : 1);
     s.add(x, det_atan2(y, x), std::atan2(static_cast<double>(y), static_cast<double>(x)));
   }
   EXPECT_SWEEP_WITHIN_BOUND(s);
@@ -136,8 +138,8 @@ TEST(DetMath, SinCosHugeArguments) {
 TEST(DetMath, EdgeValuesMatchAnnexF) {
   const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
   const float tiny = std::numeric_limits<float>::denorm_min(), huge = std::numeric_limits<float>::max();
-  const float xs[] = {0.0f, -0.0f, tiny, -tiny, 1e-30f, -1e-30f, 1.0f, -1.0f, 0.5f, -0.5f, 2.0f, -2.0f,
-                      3.0f, -3.0f, 0.7f, huge, -huge, inf, -inf, nan, 1e30f, -1e30f};
+  const float xs[] = {0.0f,  -0.0f, tiny,  -tiny, 1e-30f, -1e-30f, 1.0f, -1.0f, 0.5f, -0.5f, 2.0f,
+                      -2.0f, 3.0f,  -3.0f, 0.7f,  huge,   -huge,   inf,  -inf,  nan,  1e30f, -1e30f};
   auto same = [](float a, float b) { return (std::isnan(a) && std::isnan(b)) || std::memcmp(&a, &b, 4) == 0; };
   for (float x : xs) {
     if (std::isfinite(x)) {
@@ -147,10 +149,16 @@ TEST(DetMath, EdgeValuesMatchAnnexF) {
     } else {
       EXPECT_TRUE(std::isnan(det_sin(x)) && std::isnan(det_cos(x)) && std::isnan(det_tan(x))) << x;
     }
-    EXPECT_TRUE(same(det_asin(x), std::asin(x)) || ulp_error(det_asin(x), std::asin(static_cast<double>(x))) <= kUlpBound) << x;
-    EXPECT_TRUE(same(det_acos(x), std::acos(x)) || ulp_error(det_acos(x), std::acos(static_cast<double>(x))) <= kUlpBound) << x;
-    EXPECT_TRUE(same(det_exp(x), std::exp(x)) || ulp_error(det_exp(x), std::exp(static_cast<double>(x))) <= kUlpBound) << x;
-    EXPECT_TRUE(same(det_log(x), std::log(x)) || ulp_error(det_log(x), std::log(static_cast<double>(x))) <= kUlpBound) << x;
+    EXPECT_TRUE(same(det_asin(x), std::asin(x)) ||
+                ulp_error(det_asin(x), std::asin(static_cast<double>(x))) <= kUlpBound)
+        << x;
+    EXPECT_TRUE(same(det_acos(x), std::acos(x)) ||
+                ulp_error(det_acos(x), std::acos(static_cast<double>(x))) <= kUlpBound)
+        << x;
+    EXPECT_TRUE(same(det_exp(x), std::exp(x)) || ulp_error(det_exp(x), std::exp(static_cast<double>(x))) <= kUlpBound)
+        << x;
+    EXPECT_TRUE(same(det_log(x), std::log(x)) || ulp_error(det_log(x), std::log(static_cast<double>(x))) <= kUlpBound)
+        << x;
     for (float y : xs) {
       const float ref_atan2 = std::atan2(y, x), ref_pow = std::pow(x, y);
       EXPECT_TRUE(same(det_atan2(y, x), ref_atan2) ||

@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "options/enum_names.h"
-#include "kernel/geom/quad.h"
 #include "kernel/accel/trace.h"
+#include "kernel/geom/quad.h"
 #include "kernel/geom/triangle_moller_trumbore.h"
+#include "options/enum_names.h"
 #include "render/render_cpu.h"
 #include "scene/scene_types.h"
 #include "test_util.h"
@@ -51,7 +51,8 @@ TEST(ExtremesDegenerate, ZeroAreaTrianglesAreNeverHitByTheWatertightTest) {
       const float a = j % 4 == 0 ? 0.0f : j % 4 == 1 ? 1.0f : s.next();
       const Vec3 target = j % 8 == 2 ? tri.v2 : tri.v0 + (tri.v1 - tri.v0) * a;
       Vec3 origin = {s.next() * 40 - 20, s.next() * 40 - 20, s.next() * 40 - 20};
-      if (j % 3 == 0) origin = target + Vec3{j % 9 == 0 ? 5.0f : 0.0f, j % 9 == 3 ? 5.0f : 0.0f, j % 9 == 6 ? 5.0f : 0.0f};
+      if (j % 3 == 0)
+        origin = target + Vec3{j % 9 == 0 ? 5.0f : 0.0f, j % 9 == 3 ? 5.0f : 0.0f, j % 9 == 6 ? 5.0f : 0.0f};
       if (!(length(target - origin) > 0.0f)) continue;
       const Ray ray = {origin, normalize(target - origin)};
       float t = 0, b0 = 0, b1 = 0, b2 = 0;
@@ -94,9 +95,12 @@ TEST(ExtremesDegenerate, ZeroAreaMeshFacesAreNeverHitInAScene) {
   for (const char* test : {"watertight", "moller-trumbore"}) {
     RenderOverrides ov;
     ov.triangle_test = parse_enum<TriangleTest>(test, "triangle_test");
-    const Scene scene = test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
+    const Scene scene =
+        test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
       "film": {"width": 8, "height": 8}, "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
-      "shapes": [{"type": "mesh", "material": "m", "positions": [)" + positions + "], \"indices\": [" + indices + "]}]}", ov);
+      "shapes": [{"type": "mesh", "material": "m", "positions": [)" +
+                             positions + "], \"indices\": [" + indices + "]}]}",
+                         ov);
     EXPECT_EQ(scene.report.degenerate_triangles, tris.size());
     const SceneView view = scene.view();
     Stream s{23};
@@ -124,7 +128,8 @@ std::string floor_scene(bool with_degenerate) {
                {"type": "quad", "corner": [-0.5, 2, -0.5], "u": [1, 0, 0], "v": [0, 0, 1], "material": "lamp"},
                {"type": "mesh", "material": "white",
                 "positions": [[-1, 0.2, 0], [0, 0.5, 0], [1, 0.8, 0], [-1, 1, 0.5], [1, 0.2, 0.5], [0.3, 0.6, 1]],
-                "indices": [)") + (with_degenerate ? "[0, 1, 2], [3, 4, 4], [0, 1, 5], [5, 5, 5], [0, 2, 1]" : "[0, 1, 5]") + "]}]}";
+                "indices": [)") +
+         (with_degenerate ? "[0, 1, 2], [3, 4, 4], [0, 1, 5], [5, 5, 5], [0, 2, 1]" : "[0, 1, 5]") + "]}]}";
 }
 
 TEST(ExtremesDegenerate, LoaderLeavesZeroAreaMeshTrianglesOut) {
@@ -179,7 +184,8 @@ std::vector<Ray> sliver_rays(float h, std::vector<Vec3>& targets) {
     const float x = (i % 2 == 0 ? 0.0f : 2.0f) + 0.01f + 0.98f * s.next();
     const Vec3 target = {x, h * (s.next() * 2.0f - 0.5f), 0.0f};
     const float side = i % 4 < 2 ? 1.0f : -1.0f;  // from the front and from behind
-    const Vec3 origin = {s.next() * 5.0f - 1.0f, i % 3 == 0 ? 0.0f : h * (s.next() * 6.0f - 3.0f), side * (0.5f + 2.5f * s.next())};
+    const Vec3 origin = {s.next() * 5.0f - 1.0f, i % 3 == 0 ? 0.0f : h * (s.next() * 6.0f - 3.0f),
+                         side * (0.5f + 2.5f * s.next())};
     if (classify(target, h) == Thin::Edge) continue;
     rays.push_back({origin, normalize(target - origin)});
     targets.push_back(target);
@@ -195,18 +201,26 @@ TEST(ExtremesDegenerate, SliversAndThinQuadsAreHitWhereTheyShould) {
     for (size_t i = 0; i < rays.size(); ++i) {
       const Ray& r = rays[i];
       const Thin expected = classify(targets[i], h);
-      const double distance = std::sqrt(double(targets[i].x - r.origin.x) * (targets[i].x - r.origin.x) +
-                                        double(targets[i].y - r.origin.y) * (targets[i].y - r.origin.y) +
-                                        double(r.origin.z) * r.origin.z);
+      const double distance =
+          std::sqrt(double(targets[i].x - r.origin.x) * (targets[i].x - r.origin.x) +
+                    double(targets[i].y - r.origin.y) * (targets[i].y - r.origin.y) + double(r.origin.z) * r.origin.z);
       float t = 0, b0, b1, b2;
-      const bool sliver = intersect_triangle({0, 0, 0}, {1, 0, 0}, {0.5f, h, 0}, r, make_ray_shear(r.dir), 0.0f, kInfinity, t, b0, b1, b2);
-      if (sliver) { EXPECT_NEAR(t, distance, 1e-5 * distance) << "h " << h << " ray " << i; }
+      const bool sliver = intersect_triangle({0, 0, 0}, {1, 0, 0}, {0.5f, h, 0}, r, make_ray_shear(r.dir), 0.0f,
+                                             kInfinity, t, b0, b1, b2);
+      if (sliver) {
+        EXPECT_NEAR(t, distance, 1e-5 * distance) << "h " << h << " ray " << i;
+      }
       float tm = 0;
-      const bool sliver_mt = intersect_triangle_moller_trumbore({0, 0, 0}, {1, 0, 0}, {0.5f, h, 0}, r, 0.0f, kInfinity, tm, b0, b1, b2);
+      const bool sliver_mt =
+          intersect_triangle_moller_trumbore({0, 0, 0}, {1, 0, 0}, {0.5f, h, 0}, r, 0.0f, kInfinity, tm, b0, b1, b2);
       float tq = 0, alpha, beta;
       const bool quad = intersect_quad({2, 0, 0}, {1, 0, 0}, {0, h, 0}, r, 0.0f, kInfinity, tq, alpha, beta);
-      if (quad) { EXPECT_NEAR(tq, distance, 1e-5 * distance) << "h " << h << " ray " << i; }
-      ASSERT_EQ(sliver, expected == Thin::Sliver) << "watertight, h " << h << " ray " << i << " o " << r.origin.x << " " << r.origin.y << " " << r.origin.z << " target " << targets[i].x << " " << targets[i].y/h << "h";
+      if (quad) {
+        EXPECT_NEAR(tq, distance, 1e-5 * distance) << "h " << h << " ray " << i;
+      }
+      ASSERT_EQ(sliver, expected == Thin::Sliver)
+          << "watertight, h " << h << " ray " << i << " o " << r.origin.x << " " << r.origin.y << " " << r.origin.z
+          << " target " << targets[i].x << " " << targets[i].y / h << "h";
       ASSERT_EQ(sliver_mt, expected == Thin::Sliver) << "Moller-Trumbore, h " << h << " ray " << i;
       ASSERT_EQ(quad, expected == Thin::Quad) << "quad, h " << h << " ray " << i;
       inside += expected == Thin::Sliver || expected == Thin::Quad;
@@ -221,22 +235,27 @@ TEST(ExtremesDegenerate, SliversAndThinQuadsAreHitWhereTheyShould) {
 TEST(ExtremesDegenerate, EveryStructureFindsTheSlivers) {
   for (const float h : {1e-3f, 1e-7f}) {
     char shapes[512];
-    std::snprintf(shapes, sizeof shapes, R"([{"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0.5, %.9g, 0]], "material": "m"},
-      {"type": "quad", "corner": [2, 0, 0], "u": [1, 0, 0], "v": [0, %.9g, 0], "material": "m"}])", h, h);
+    std::snprintf(shapes, sizeof shapes,
+                  R"([{"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0.5, %.9g, 0]], "material": "m"},
+      {"type": "quad", "corner": [2, 0, 0], "u": [1, 0, 0], "v": [0, %.9g, 0], "material": "m"}])",
+                  h, h);
     std::vector<Vec3> targets;
     const std::vector<Ray> rays = sliver_rays(h, targets);
     for (const std::string& accel : accepted_scene_types().at("accel")) {
       RenderOverrides ov;
       ov.accel = parse_enum<AccelKind>(accel, "accel");
-      const Scene scene = test::scene_from(std::string(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40}, "film": {"width": 8, "height": 8},
-        "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}}, "shapes": )") + shapes + "}", ov);
+      const Scene scene = test::scene_from(
+          std::string(
+              R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40}, "film": {"width": 8, "height": 8},
+        "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}}, "shapes": )") +
+              shapes + "}",
+          ov);
       const SceneView view = scene.view();
       for (size_t i = 0; i < rays.size(); ++i) {
         const Thin expected = classify(targets[i], h);
         const Hit hit = trace_closest(view, rays[i], kInfinity);
         const uint32_t want = expected == Thin::Sliver ? 0u : expected == Thin::Quad ? 1u : kNoHit;
-        ASSERT_EQ(hit.prim, want)
-            << accel << " h " << h << " ray " << i;
+        ASSERT_EQ(hit.prim, want) << accel << " h " << h << " ray " << i;
       }
     }
   }

@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "kernel/shading/optics.h"
 #include "kernel/geom/plane.h"
 #include "kernel/geom/sphere.h"
 #include "kernel/geom/triangle.h"
+#include "kernel/shading/optics.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
 
@@ -55,12 +55,15 @@ TEST(ExtremesGrazing, SkimmingRaysHitOrMissWithoutNaN) {
     EXPECT_NEAR(t, 1.0f / c, 1e-3f / c) << c;  // height 1 over the plane, falling c per unit
     float b0, b1, b2;
     const Ray low = {{-1.0f, 1e-3f, 0.0f}, d};
-    if (intersect_triangle({-10, 0, -10}, {10, 0, -10}, {0, 0, 1e6f}, low, make_ray_shear(d), 0.0f, kInfinity, t, b0, b1, b2)) {
+    if (intersect_triangle({-10, 0, -10}, {10, 0, -10}, {0, 0, 1e6f}, low, make_ray_shear(d), 0.0f, kInfinity, t, b0,
+                           b1, b2)) {
       EXPECT_TRUE(std::isfinite(t) && std::isfinite(b0) && std::isfinite(b1) && std::isfinite(b2)) << c;
     }
     // A ray passing the unit sphere at height 1 - c over its top.
     const Ray skim = {{-3.0f, 1.0f - c, 0.0f}, {1, 0, 0}};
-    if (intersect_sphere({0, 0, 0}, 1.0f, skim, 0.0f, kInfinity, t)) { EXPECT_TRUE(std::isfinite(t) && t > 0.0f) << c; }
+    if (intersect_sphere({0, 0, 0}, 1.0f, skim, 0.0f, kInfinity, t)) {
+      EXPECT_TRUE(std::isfinite(t) && t > 0.0f) << c;
+    }
   }
 }
 
@@ -76,7 +79,8 @@ TEST(ExtremesGrazing, RenderAlongAGlassStrewnFloorHasNoNaN) {
                     "rough": {"type": "metal", "albedo": [0.8, 0.8, 0.8], "roughness": 1}},
       "shapes": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor"},
                  {"type": "sphere", "center": [-0.5, 0.3, 0], "radius": 0.3, "material": "glass"},
-                 {"type": "sphere", "center": [0.5, 0.3, 0], "radius": 0.3, "material": "rough"}]})"), 0, stats);
+                 {"type": "sphere", "center": [0.5, 0.3, 0], "radius": 0.3, "material": "rough"}]})"),
+                                 0, stats);
     EXPECT_EQ(stats.nonfinite_samples + stats.overflow_samples, 0u) << integrator;
     for (float v : img.rgb) ASSERT_TRUE(std::isfinite(v)) << integrator;
   }

@@ -6,18 +6,22 @@
 #include <cmath>
 
 #include "golden/golden_check.h"
+#include "io/text_file.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
-#include "io/text_file.h"
 
 namespace tracer {
 namespace {
 
-std::string lamp_scene(const std::string& radiance, const std::string& integrator, uint32_t max_depth, uint32_t w, uint32_t h) {
+std::string lamp_scene(const std::string& radiance, const std::string& integrator, uint32_t max_depth, uint32_t w,
+                       uint32_t h) {
   return R"({"format": "tracer-scene/1", "camera": {"from": [0, 1, 3], "to": [0, 0.5, 0], "vfov": 60},
-    "film": {"width": )" + std::to_string(w) + R"(, "height": )" + std::to_string(h) + R"(},
-    "render": {"integrator": ")" + integrator + R"(", "spp": 4, "sampler": "stochastic", "max_depth": )" + std::to_string(max_depth) + R"(},
-    "materials": {"lamp": {"type": "emissive", "radiance": [)" + radiance + ", " + radiance + ", " + radiance + R"(]},
+    "film": {"width": )" +
+         std::to_string(w) + R"(, "height": )" + std::to_string(h) + R"(},
+    "render": {"integrator": ")" +
+         integrator + R"(", "spp": 4, "sampler": "stochastic", "max_depth": )" + std::to_string(max_depth) + R"(},
+    "materials": {"lamp": {"type": "emissive", "radiance": [)" +
+         radiance + ", " + radiance + ", " + radiance + R"(]},
                   "floor": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
     "shapes": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.4, "material": "lamp"},
                {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor"}]})";
@@ -28,7 +32,9 @@ TEST(ExtremesLimits, EmitterOf1e30IsReportedAsOverflowNotNaN) {
     RenderStats stats;
     const Image img = render_cpu(test::scene_from(lamp_scene("1e30", integrator, 4, 24, 16)), 0, stats);
     EXPECT_EQ(stats.nonfinite_samples, 0u) << integrator;
-    if (std::string(integrator) == "path") { EXPECT_GT(stats.overflow_samples, 0u) << integrator; }
+    if (std::string(integrator) == "path") {
+      EXPECT_GT(stats.overflow_samples, 0u) << integrator;
+    }
     for (float v : img.rgb) EXPECT_TRUE(std::isfinite(v)) << integrator;
   }
 }
@@ -46,8 +52,10 @@ TEST(ExtremesLimits, MaxDepthZeroShowsOnlyEmitters) {
     int lamp = 0, dark = 0;
     for (float v : img.rgb) lamp += v == 2.0f, dark += v == 0.0f;
     EXPECT_GT(lamp, 0) << "max_depth " << depth;
-    if (depth == 0) { EXPECT_EQ(lamp + dark, int(img.rgb.size())) << "only emitters at max_depth 0"; }
-    else EXPECT_LT(lamp + dark, int(img.rgb.size())) << "the floor is lit at max_depth " << depth;
+    if (depth == 0) {
+      EXPECT_EQ(lamp + dark, int(img.rgb.size())) << "only emitters at max_depth 0";
+    } else
+      EXPECT_LT(lamp + dark, int(img.rgb.size())) << "the floor is lit at max_depth " << depth;
   }
 }
 
@@ -57,7 +65,8 @@ TEST(ExtremesLimits, MaxDepthZeroShowsOnlyEmitters) {
 TEST(ExtremesLimits, FilmCapacityIsReachedAndCountedExactly) {
   const uint32_t spp = 1u << 21;
   const std::string json = R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 1], "to": [0, 0, 0], "vfov": 30},
-    "film": {"width": 1, "height": 1}, "render": {"integrator": "path", "spp": )" + std::to_string(spp) + R"(, "sampler": "stochastic"},
+    "film": {"width": 1, "height": 1}, "render": {"integrator": "path", "spp": )" +
+                           std::to_string(spp) + R"(, "sampler": "stochastic"},
     "background": {"type": "constant", "radiance": [1024, 1024, 1024]}, "materials": {}, "shapes": []})";
   RenderStats stats;
   const Image img = render_cpu(test::scene_from(json), 0, stats);
@@ -67,8 +76,15 @@ TEST(ExtremesLimits, FilmCapacityIsReachedAndCountedExactly) {
   const auto dir = test::temp_dir("film-capacity");
   write_text_atomically((dir / "bright.json").string(), json);
   std::string output;
-  ASSERT_EQ(test::run_tracer("render " + (dir / "bright.json").string() + " -o " + (dir / "bright.exr").string() + " --quiet", &output), 0) << output;
-  EXPECT_NE(output.find("warning: " + std::to_string(spp - ((1u << 20) - 1)) + " samples were left out (film overflow)"), std::string::npos) << output;
+  ASSERT_EQ(
+      test::run_tracer("render " + (dir / "bright.json").string() + " -o " + (dir / "bright.exr").string() + " --quiet",
+                       &output),
+      0)
+      << output;
+  EXPECT_NE(
+      output.find("warning: " + std::to_string(spp - ((1u << 20) - 1)) + " samples were left out (film overflow)"),
+      std::string::npos)
+      << output;
   std::filesystem::remove_all(dir);
 }
 

@@ -20,7 +20,8 @@ namespace {
 std::string glass_scene(const std::string& integrator, const std::string& glass) {
   return R"({"format": "tracer-scene/1", "camera": {"from": [0, 1.2, 5], "to": [0, 0.8, 0], "vfov": 35},
     "film": {"width": 96, "height": 72},
-    "render": {"integrator": ")" + integrator + R"(", "spp": 4, "sampler": "stochastic", "max_depth": 16, "rr_depth": 16},
+    "render": {"integrator": ")" +
+         integrator + R"(", "spp": 4, "sampler": "stochastic", "max_depth": 16, "rr_depth": 16},
     "background": {"type": "constant", "radiance": [1, 1, 1]}, "ambient": [1, 1, 1],
     "materials": {"floor": {"type": "lambert", "albedo": {"checker": {"scale": 4, "even": [0.8, 0.8, 0.8], "odd": [0.2, 0.3, 0.4]}}})" +
          (glass.empty() ? "" : R"(, "glass": )" + glass) + R"(},
@@ -53,10 +54,11 @@ TEST(ExtremesMaterials, ExactFresnelAtIorOneReflectsNothingAtAnyAngle) {
 // The glass scene with an IOR-1 sphere of `fresnel` against the floor alone.
 test::PixelDifferences ior_one_against_the_floor(const std::string& integrator, const std::string& fresnel) {
   const Image without = render(glass_scene(integrator, ""));
-  const Image with = render(glass_scene(integrator, R"({"type": "dielectric", "ior": 1, "fresnel": ")" + fresnel + R"("})"));
+  const Image with =
+      render(glass_scene(integrator, R"({"type": "dielectric", "ior": 1, "fresnel": ")" + fresnel + R"("})"));
   const test::PixelDifferences d = test::pixel_differences(with, without);
-  std::printf("%s, IOR 1, %s Fresnel: max difference %.3g, mean %.3g, %zu pixels over 1e-3\n", integrator.c_str(), fresnel.c_str(),
-              d.max(), d.mean(), d.count_over(1e-3));
+  std::printf("%s, IOR 1, %s Fresnel: max difference %.3g, mean %.3g, %zu pixels over 1e-3\n", integrator.c_str(),
+              fresnel.c_str(), d.max(), d.mean(), d.count_over(1e-3));
   return d;
 }
 
@@ -74,7 +76,8 @@ TEST(ExtremesMaterials, SchlickLeavesAReflectionAtIorOne) {
   EXPECT_EQ(fresnel_schlick(1.0f, 1.0f, 1.0f), 0.0f);
   EXPECT_FLOAT_EQ(fresnel_schlick(0.5f, 1.0f, 1.0f), 1.0f / 32.0f);
   EXPECT_EQ(fresnel_schlick(0.0f, 1.0f, 1.0f), 1.0f);
-  for (const char* integrator : {"path", "whitted"}) EXPECT_GT(ior_one_against_the_floor(integrator, "schlick").count_over(1e-3), 20u) << integrator;
+  for (const char* integrator : {"path", "whitted"})
+    EXPECT_GT(ior_one_against_the_floor(integrator, "schlick").count_over(1e-3), 20u) << integrator;
 }
 
 // One sphere of `material` under a sky of `sky`, seen whole by a pinhole camera; with
@@ -83,11 +86,15 @@ std::string sphere_scene(const std::string& integrator, const std::string& mater
                          const std::string& sampler = "stochastic", const std::string& aim = "[0, 0, 0]",
                          const std::string& sky = "1") {
   return R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 4], "to": )" + aim + R"(, "vfov": 36},
-    "film": {"width": )" + std::to_string(size) + R"(, "height": )" + std::to_string(size) + R"(},
-    "render": {"integrator": ")" + integrator + R"(", "spp": )" + std::to_string(spp) + R"(, "sampler": ")" + sampler +
+    "film": {"width": )" +
+         std::to_string(size) + R"(, "height": )" + std::to_string(size) + R"(},
+    "render": {"integrator": ")" +
+         integrator + R"(", "spp": )" + std::to_string(spp) + R"(, "sampler": ")" + sampler +
          R"(", "max_depth": 64, "rr_depth": 64},
-    "background": {"type": "constant", "radiance": [)" + sky + ", " + sky + ", " + sky + R"(]},
-    "materials": {"m": )" + material + R"(},
+    "background": {"type": "constant", "radiance": [)" +
+         sky + ", " + sky + ", " + sky + R"(]},
+    "materials": {"m": )" +
+         material + R"(},
     "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]})";
 }
 
@@ -117,8 +124,9 @@ TEST(ExtremesMaterials, WhiteFurnaceAtAlbedoOneAndAnyIor) {
 
 // Albedo 0 absorbs everything: the sphere's pixels are exactly 0, the sky's exactly 1.
 TEST(ExtremesMaterials, AlbedoZeroIsBlack) {
-  for (const char* material : {R"({"type": "lambert", "albedo": [0, 0, 0]})", R"({"type": "metal", "albedo": [0, 0, 0], "roughness": 0})",
-                               R"({"type": "metal", "albedo": [0, 0, 0], "roughness": 1})"}) {
+  for (const char* material :
+       {R"({"type": "lambert", "albedo": [0, 0, 0]})", R"({"type": "metal", "albedo": [0, 0, 0], "roughness": 0})",
+        R"({"type": "metal", "albedo": [0, 0, 0], "roughness": 1})"}) {
     for (const char* integrator : {"path", "whitted"}) {
       const Image img = render(sphere_scene(integrator, material, 32, 1, "center"));
       int black = 0, sky = 0;
@@ -145,7 +153,8 @@ double rough_metal_expected(const Scene& scene, float fx, float fy) {
 // The grid sampler's 16 x 16 film positions per pixel, each a Bernoulli trial of its own p.
 TEST(ExtremesMaterials, RoughMetalKeepsTheLobeAboveTheSurface) {
   const uint32_t n = 16, size = 32;
-  const Scene scene = test::scene_from(sphere_scene("path", R"({"type": "metal", "albedo": [1, 1, 1], "roughness": 1})", size, n * n, "grid"));
+  const Scene scene = test::scene_from(
+      sphere_scene("path", R"({"type": "metal", "albedo": [1, 1, 1], "roughness": 1})", size, n * n, "grid"));
   RenderStats stats;
   const Image img = render_cpu(scene, 0, stats);
   double worst_z = 0, sum_error = 0, sum_variance = 0;  // per pixel, and over the whole sphere
@@ -171,7 +180,8 @@ TEST(ExtremesMaterials, RoughMetalKeepsTheLobeAboveTheSurface) {
     }
   }
   const double total_z = sum_error / std::sqrt(sum_variance);
-  std::printf("roughness 1: %d pixels on the sphere, largest |z| %.2f, z of their sum %.2f\n", on_sphere, worst_z, total_z);
+  std::printf("roughness 1: %d pixels on the sphere, largest |z| %.2f, z of their sum %.2f\n", on_sphere, worst_z,
+              total_z);
   EXPECT_GT(on_sphere, 300);
   EXPECT_LT(worst_z, 5.0);
   EXPECT_LT(std::abs(total_z), 5.0);
@@ -181,8 +191,8 @@ TEST(ExtremesMaterials, RoughMetalKeepsTheLobeAboveTheSurface) {
 // (2.4e-4), and the film's fixed-point sum holds them all.
 TEST(ExtremesMaterials, VeryHighSppMeetsTheClosedForm) {
   const uint32_t spp = 1u << 22;
-  const Scene scene = test::scene_from(sphere_scene("path", R"({"type": "metal", "albedo": [1, 1, 1], "roughness": 1})", 1, spp,
-                                                    "stochastic", "[0.8, 0.3, 0]"));
+  const Scene scene = test::scene_from(sphere_scene("path", R"({"type": "metal", "albedo": [1, 1, 1], "roughness": 1})",
+                                                    1, spp, "stochastic", "[0.8, 0.3, 0]"));
   RenderStats stats;
   const Image img = render_cpu(scene, 0, stats);
   EXPECT_EQ(stats.nonfinite_samples + stats.overflow_samples, 0u);

@@ -38,7 +38,9 @@ std::string at(double x, double y, double z, double s, double offset) {
 // A floor tilted to the normal (0.3, 1, 0.2), so its points do not round onto it exactly,
 // as a plane, a quad or a triangle, filling the view from above.
 std::string tilted_floor(const std::string& kind, double s, double offset) {
-  if (kind == "plane") return R"({"type": "plane", "point": )" + at(0, 0, 0, s, offset) + R"(, "normal": [0.3, 1, 0.2], "material": "floor"})";
+  if (kind == "plane")
+    return R"({"type": "plane", "point": )" + at(0, 0, 0, s, offset) +
+           R"(, "normal": [0.3, 1, 0.2], "material": "floor"})";
   // u = (1, -0.3, 0) and v = (0, -0.2, 1) lie in the floor; cross(v, u) points up.
   if (kind == "quad")
     return R"({"type": "quad", "corner": )" + at(-8, 4, -8, s, offset) + R"(, "u": )" + at(0, -3.2, 16, s, 0) +
@@ -49,24 +51,29 @@ std::string tilted_floor(const std::string& kind, double s, double offset) {
 
 // With occluders: a floor quad, a sphere and a triangle seen from the side. Without: only
 // the tilted floor of `floor_kind` seen from above, every pixel on it.
-std::string scene(double s, double offset, const std::string& integrator, bool occluders, const std::string& floor_kind = "plane") {
+std::string scene(double s, double offset, const std::string& integrator, bool occluders,
+                  const std::string& floor_kind = "plane") {
   const std::string shapes =
       (occluders ? R"({"type": "quad", "corner": )" + at(-2, 0, -2, s, offset) + R"(, "u": )" + at(0, 0, 4, s, 0) +
                        R"(, "v": )" + at(4, 0, 0, s, 0) + R"(, "material": "floor"})"
                  : tilted_floor(floor_kind, s, offset)) +
-      (occluders ? R"(, {"type": "sphere", "center": )" + at(-0.4, 0.5, 0, s, offset) + R"(, "radius": )" + num(0.5 * s) +
-                       R"(, "material": "ball"}, {"type": "triangle", "vertices": [)" + at(0.3, 0.1, 0.3, s, offset) + ", " +
-                       at(1.1, 0.1, 0.2, s, offset) + ", " + at(0.7, 0.9, -0.2, s, offset) + R"(], "material": "ball"})"
-                 : "");
+      (occluders
+           ? R"(, {"type": "sphere", "center": )" + at(-0.4, 0.5, 0, s, offset) + R"(, "radius": )" + num(0.5 * s) +
+                 R"(, "material": "ball"}, {"type": "triangle", "vertices": [)" + at(0.3, 0.1, 0.3, s, offset) + ", " +
+                 at(1.1, 0.1, 0.2, s, offset) + ", " + at(0.7, 0.9, -0.2, s, offset) + R"(], "material": "ball"})"
+           : "");
   const std::string from = occluders ? at(0, 1.6, 2.6, s, offset) : at(0, 2, 0.5, s, offset);
   const std::string to = occluders ? at(0, 0.3, 0, s, offset) : at(0, 0, 0, s, offset);
   return R"({"format": "tracer-scene/1", "camera": {"from": )" + from + R"(, "to": )" + to + R"(, "vfov": 50},
     "film": {"width": 64, "height": 48},
-    "render": {"integrator": ")" + integrator + R"(", "spp": 1, "sampler": "center", "max_depth": 1},
+    "render": {"integrator": ")" +
+         integrator + R"(", "spp": 1, "sampler": "center", "max_depth": 1},
     "materials": {"floor": {"type": "lambert", "albedo": [0.8, 0.8, 0.8]}, "ball": {"type": "lambert", "albedo": [0.7, 0.3, 0.2]}},
-    "lights": [{"type": "point", "position": )" + at(1.5, 3, 1.5, s, offset) + R"(, "intensity": [)" +
-         num(10 * s * s) + ", " + num(10 * s * s) + ", " + num(10 * s * s) + R"(]}],
-    "shapes": [)" + shapes + "]}";
+    "lights": [{"type": "point", "position": )" +
+         at(1.5, 3, 1.5, s, offset) + R"(, "intensity": [)" + num(10 * s * s) + ", " + num(10 * s * s) + ", " +
+         num(10 * s * s) + R"(]}],
+    "shapes": [)" +
+         shapes + "]}";
 }
 
 Image render(const std::string& json) {
@@ -80,7 +87,8 @@ TEST(ExtremesScale, ScaledScenesRenderTheScaleOneImage) {
   const Image reference = render(scene(1, 0, "whitted", true));
   for (const double s : {1e-4, 1e-2, 1e2, 1e4}) {
     const test::PixelDifferences d = test::pixel_differences(render(scene(s, 0, "whitted", true)), reference);
-    std::printf("scale %g: %.4f %% of pixels differ by > 1e-3, mean difference %.3g\n", s, 100 * d.fraction_over(1e-3), d.mean());
+    std::printf("scale %g: %.4f %% of pixels differ by > 1e-3, mean difference %.3g\n", s, 100 * d.fraction_over(1e-3),
+                d.mean());
     EXPECT_EQ(d.count_over(1e-3), 0u) << "scale " << s;
     EXPECT_LE(d.mean(), 1e-6) << "scale " << s;
   }

@@ -6,11 +6,11 @@
 
 #include <filesystem>
 
-#include "io/input_error.h"
 #include "bench/mesh_generators.h"
-#include "test_util.h"
-#include "io/text_file.h"
 #include "bench/watertight_probe.h"
+#include "io/input_error.h"
+#include "io/text_file.h"
+#include "test_util.h"
 
 namespace tracer {
 namespace {
@@ -21,7 +21,8 @@ void expect_watertight(const std::string& obj, uint64_t min_rays) {
   const Scene watertight = load_probe_mesh(obj, TriangleTest::Watertight);
   const std::vector<Vec3> origins = inside_points(watertight);
   const WatertightProbe w = probe_watertight(watertight, origins, kEdgePoints, 0);
-  const WatertightProbe mt = probe_watertight(load_probe_mesh(obj, TriangleTest::MollerTrumbore), origins, kEdgePoints, 0);
+  const WatertightProbe mt =
+      probe_watertight(load_probe_mesh(obj, TriangleTest::MollerTrumbore), origins, kEdgePoints, 0);
   EXPECT_EQ(w.open_edges, 0u) << obj << " is not closed";
   EXPECT_GE(w.rays, min_rays);
   EXPECT_EQ(w.escapes, 0u) << obj << ": rays slipped through the watertight test";

@@ -44,7 +44,8 @@ std::string trim(const std::string& s) {
 std::vector<AuditRow> audit_table() {
   std::istringstream in(read_file(test::source_path("tests/README.md")));
   std::string line;
-  while (std::getline(in, line) && line != "## Feature audit") {}
+  while (std::getline(in, line) && line != "## Feature audit") {
+  }
   std::vector<AuditRow> rows;
   int table_lines = 0;
   while (std::getline(in, line)) {
@@ -80,12 +81,15 @@ std::set<std::string> defined_tests() {
 TEST(FeatureAudit, TableRowsAreTheLoadersTypes) {
   std::set<std::string> listed, accepted;
   for (const AuditRow& row : audit_table()) {
-    EXPECT_TRUE(listed.insert(row.category + ":" + row.type).second) << "listed twice: " << row.category << " " << row.type;
+    EXPECT_TRUE(listed.insert(row.category + ":" + row.type).second)
+        << "listed twice: " << row.category << " " << row.type;
   }
   for (const auto& [category, names] : accepted_scene_types())
     for (const std::string& name : names) accepted.insert(category + ":" + name);
-  for (const std::string& t : accepted) EXPECT_TRUE(listed.count(t)) << "the loader accepts " << t << "; tests/README.md has no row for it";
-  for (const std::string& t : listed) EXPECT_TRUE(accepted.count(t)) << "tests/README.md lists " << t << ", which the loader does not accept";
+  for (const std::string& t : accepted)
+    EXPECT_TRUE(listed.count(t)) << "the loader accepts " << t << "; tests/README.md has no row for it";
+  for (const std::string& t : listed)
+    EXPECT_TRUE(accepted.count(t)) << "tests/README.md lists " << t << ", which the loader does not accept";
   EXPECT_GE(listed.size(), 39u);
 }
 
@@ -96,14 +100,16 @@ TEST(FeatureAudit, EveryGoldenExistsAndDrawsItsType) {
     EXPECT_FALSE(row.goldens.empty()) << row.category << " " << row.type << " has no golden";
     for (const std::string& name : row.goldens) {
       if (!drawn.count(name)) {
-        const auto it = std::find_if(manifest.entries.begin(), manifest.entries.end(), [&](const GoldenEntry& e) { return e.name == name; });
+        const auto it = std::find_if(manifest.entries.begin(), manifest.entries.end(),
+                                     [&](const GoldenEntry& e) { return e.name == name; });
         if (it == manifest.entries.end()) {
           ADD_FAILURE() << row.category << " " << row.type << ": golden " << name << " is not in golden/manifest.json";
           continue;
         }
         drawn[name] = load_scene(manifest.scene_path(*it), RenderOverrides{it->options}).report.used_types;
       }
-      EXPECT_TRUE(drawn[name].count(row.category + ":" + row.type)) << "golden " << name << " does not draw " << row.category << " " << row.type;
+      EXPECT_TRUE(drawn[name].count(row.category + ":" + row.type))
+          << "golden " << name << " does not draw " << row.category << " " << row.type;
     }
   }
 }
@@ -113,7 +119,8 @@ TEST(FeatureAudit, EveryClosedFormTestIsDefined) {
   ASSERT_GT(tests.size(), 100u);
   for (const AuditRow& row : audit_table()) {
     EXPECT_FALSE(row.tests.empty()) << row.category << " " << row.type << " has no closed-form test";
-    for (const std::string& name : row.tests) EXPECT_TRUE(tests.count(name)) << row.category << " " << row.type << ": no test " << name;
+    for (const std::string& name : row.tests)
+      EXPECT_TRUE(tests.count(name)) << row.category << " " << row.type << ": no test " << name;
   }
 }
 

@@ -10,8 +10,8 @@
 #include "golden/golden_report.h"
 #include "golden_sandbox.h"
 #include "image/image_io.h"
-#include "io/json_reader.h"
 #include "image/pixel_hash.h"
+#include "io/json_reader.h"
 
 namespace tracer {
 namespace {
@@ -27,7 +27,9 @@ Checked render_entry(const test::GoldenSandbox& box, const std::string& name) {
   return c;
 }
 
-GoldenOutcome judge(const Checked& c, const std::string& name) { return judge_golden(c.manifest, c.manifest.find(name), c.render); }
+GoldenOutcome judge(const Checked& c, const std::string& name) {
+  return judge_golden(c.manifest, c.manifest.find(name), c.render);
+}
 
 TEST(GoldenChecker, IdenticalImagesPass) {
   const test::GoldenSandbox box("identical");
@@ -148,53 +150,64 @@ TEST_P(GoldenCheckerBroken, FailsWithAClearMessage) {
   std::string output;
   EXPECT_EQ(test::run_tracer(box.check_args(GetParam().golden, report.string()), &output), 2) << output;
   EXPECT_NE(output.find("ERROR"), std::string::npos) << output;
-  EXPECT_NE(output.find(GetParam().expected), std::string::npos) << "expected \"" << GetParam().expected << "\" in: " << output;
+  EXPECT_NE(output.find(GetParam().expected), std::string::npos)
+      << "expected \"" << GetParam().expected << "\" in: " << output;
   const Json row = parse_json_text(box.read("report/rows/" + std::string(GetParam().golden) + ".json"), "row");
   EXPECT_EQ(row["status"], "error");
 }
 
 const BrokenCase kBroken[] = {
-    {"missing-image", [](const test::GoldenSandbox& b) { std::filesystem::remove(b.root / "golden/ball.exr"); },
-     "ball", "ball.exr: the reference image does not exist"},
-    {"corrupt-image", [](const test::GoldenSandbox& b) { b.write("golden/ball.exr", "not an image"); },
-     "ball", "corrupt reference image"},
-    {"swapped-image", [](const test::GoldenSandbox& b) {
+    {"missing-image", [](const test::GoldenSandbox& b) { std::filesystem::remove(b.root / "golden/ball.exr"); }, "ball",
+     "ball.exr: the reference image does not exist"},
+    {"corrupt-image", [](const test::GoldenSandbox& b) { b.write("golden/ball.exr", "not an image"); }, "ball",
+     "corrupt reference image"},
+    {"swapped-image",
+     [](const test::GoldenSandbox& b) {
        std::filesystem::copy_file(b.root / "golden/box.exr", b.root / "golden/ball.exr",
                                   std::filesystem::copy_options::overwrite_existing);
-     }, "ball", "edited without `tracer golden update`"},
+     },
+     "ball", "edited without `tracer golden update`"},
     {"missing-entry", [](const test::GoldenSandbox&) {}, "sphere", "no entry named \"sphere\""},
     {"malformed-manifest", [](const test::GoldenSandbox& b) { b.write("golden/manifest.json", "{\"format\": "); },
      "ball", "manifest.json:1:12: malformed JSON"},
     {"missing-manifest", [](const test::GoldenSandbox& b) { std::filesystem::remove(b.root / "golden/manifest.json"); },
      "ball", "cannot open the golden manifest"},
-    {"bad-hash", [](const test::GoldenSandbox& b) {
+    {"bad-hash",
+     [](const test::GoldenSandbox& b) {
        std::string m = b.read("golden/manifest.json");
        m.replace(m.find("sha1:"), 5, "md5::");
        b.write("golden/manifest.json", m);
-     }, "ball", "goldens.ball.hash: expected \"sha1:\""},
-    {"unknown-key", [](const test::GoldenSandbox& b) {
+     },
+     "ball", "goldens.ball.hash: expected \"sha1:\""},
+    {"unknown-key",
+     [](const test::GoldenSandbox& b) {
        std::string m = b.read("golden/manifest.json");
        m.replace(m.find("\"scene\""), 7, "\"secne\": 1, \"scene\"");
        b.write("golden/manifest.json", m);
-     }, "box", "secne"},
-    {"no-hash-yet", [](const test::GoldenSandbox& b) {
-       b.write("golden/manifest.json", R"({"format": "tracer-golden/1", "goldens": {"ball": {"scene": "scenes/ball.json"}}})");
-     }, "ball", "new golden: the manifest has no hash yet"},
-    {"scene-gone", [](const test::GoldenSandbox& b) { std::filesystem::remove(b.root / "scenes/ball.json"); },
-     "ball", "goldens.ball.scene: scene file"},
-    {"tolerance-without-reason", [](const test::GoldenSandbox& b) {
+     },
+     "box", "secne"},
+    {"no-hash-yet",
+     [](const test::GoldenSandbox& b) {
+       b.write("golden/manifest.json",
+               R"({"format": "tracer-golden/1", "goldens": {"ball": {"scene": "scenes/ball.json"}}})");
+     },
+     "ball", "new golden: the manifest has no hash yet"},
+    {"scene-gone", [](const test::GoldenSandbox& b) { std::filesystem::remove(b.root / "scenes/ball.json"); }, "ball",
+     "goldens.ball.scene: scene file"},
+    {"tolerance-without-reason",
+     [](const test::GoldenSandbox& b) {
        std::string m = b.read("golden/manifest.json");
        m.replace(m.find("\"exact\""), 7, R"({"fail": 0.01, "why": ""})");
        b.write("golden/manifest.json", m);
-     }, "ball", "a tolerance needs a reason"},
+     },
+     "ball", "a tolerance needs a reason"},
 };
 
-INSTANTIATE_TEST_SUITE_P(Inputs, GoldenCheckerBroken, testing::ValuesIn(kBroken),
-                         [](const auto& info) {
-                           std::string n = info.param.name;
-                           for (char& ch : n) ch = ch == '-' ? '_' : ch;
-                           return n;
-                         });
+INSTANTIATE_TEST_SUITE_P(Inputs, GoldenCheckerBroken, testing::ValuesIn(kBroken), [](const auto& info) {
+  std::string n = info.param.name;
+  for (char& ch : n) ch = ch == '-' ? '_' : ch;
+  return n;
+});
 
 TEST(GoldenChecker, ToleranceModePassesSmallDifferencesOnly) {
   const test::GoldenSandbox box("tolerance");

@@ -38,8 +38,8 @@ TEST(GoldenCoverage, UsedTypesAreRecordedPerCategory) {
     "materials": {"m": {"type": "metal", "albedo": [1, 1, 1]}, "unused": {"type": "phong", "diffuse": [1, 1, 1]}},
     "lights": [{"type": "point", "position": [0, 1, 0], "intensity": [1, 1, 1]}],
     "shapes": [{"type": "box", "min": [0, 0, 0], "max": [1, 1, 1], "material": "m"}]})");
-  const std::set<std::string> expected = {"accel:none",  "background:gradient", "integrator:depth", "light:point",
-                                          "material:metal", "sampler:grid",     "shape:box"};
+  const std::set<std::string> expected = {"accel:none",     "background:gradient", "integrator:depth", "light:point",
+                                          "material:metal", "sampler:grid",        "shape:box"};
   EXPECT_EQ(scene.report.used_types, expected) << "a material no shape uses is not drawn, so it is not counted";
 }
 

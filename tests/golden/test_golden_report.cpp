@@ -31,8 +31,11 @@ TEST(GoldenReport, OpensInHeadlessChromiumWithEveryImage) {
   const std::string page = "file://" + (report / "index.html").string();
 
   std::string dom;
-  ASSERT_EQ(test::run_command(chromium(box.root / "profile-dom") + "--dump-dom " + page + " 2>/dev/null", &dom), 0) << dom;
-  EXPECT_NE(dom.find("data-broken-images=\"0\""), std::string::npos) << "images failed to load, or the page script did not run:\n" << dom;
+  ASSERT_EQ(test::run_command(chromium(box.root / "profile-dom") + "--dump-dom " + page + " 2>/dev/null", &dom), 0)
+      << dom;
+  EXPECT_NE(dom.find("data-broken-images=\"0\""), std::string::npos)
+      << "images failed to load, or the page script did not run:\n"
+      << dom;
   const size_t ball = dom.find("<tr class=\"fail\" id=\"ball\">"), box_row = dom.find("<tr class=\"pass\" id=\"box\">");
   ASSERT_NE(ball, std::string::npos) << dom;
   ASSERT_NE(box_row, std::string::npos) << dom;
@@ -44,15 +47,18 @@ TEST(GoldenReport, OpensInHeadlessChromiumWithEveryImage) {
   EXPECT_NE(ball_html.find("PSNR"), std::string::npos);
 
   const auto shot = box.root / "screenshot.png";
-  ASSERT_EQ(test::run_command(chromium(box.root / "profile-shot") + "--window-size=1000,700 --screenshot=" +
-                                  shot.string() + " " + page + " 2>/dev/null", &output), 0) << output;
+  ASSERT_EQ(test::run_command(chromium(box.root / "profile-shot") +
+                                  "--window-size=1000,700 --screenshot=" + shot.string() + " " + page + " 2>/dev/null",
+                              &output),
+            0)
+      << output;
   const Image image = read_image(shot.string());
   EXPECT_EQ(image.width, 1000u);
   EXPECT_EQ(image.height, 700u);
   std::set<uint32_t> colours;
   for (size_t i = 0; i < image.rgb.size(); i += 3)
-    colours.insert(static_cast<uint32_t>(image.rgb[i] * 255) << 16 | static_cast<uint32_t>(image.rgb[i + 1] * 255) << 8 |
-                   static_cast<uint32_t>(image.rgb[i + 2] * 255));
+    colours.insert(static_cast<uint32_t>(image.rgb[i] * 255) << 16 |
+                   static_cast<uint32_t>(image.rgb[i + 1] * 255) << 8 | static_cast<uint32_t>(image.rgb[i + 2] * 255));
   EXPECT_GT(colours.size(), 50u) << "the screenshot looks blank";
 }
 

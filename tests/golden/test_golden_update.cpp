@@ -97,7 +97,8 @@ TEST(GoldenUpdate, OneBadSceneLeavesGoldenUntouched) {
 TEST(GoldenUpdate, NewEntryGetsItsImageHashAndEveryOption) {
   const test::GoldenSandbox box("new");
   std::string m = box.read("golden/manifest.json");
-  m.insert(m.find("\"box\""), R"("ball-grid": {"scene": "scenes/ball.json", "options": {"sampler": "grid", "spp": 4}}, )");
+  m.insert(m.find("\"box\""),
+           R"("ball-grid": {"scene": "scenes/ball.json", "options": {"sampler": "grid", "spp": 4}}, )");
   box.write("golden/manifest.json", m);
   std::string output;
   EXPECT_EQ(test::run_tracer(update_args(box, "--force --filter grid"), &output), 0) << output;

@@ -47,7 +47,9 @@ struct GoldenSandbox {
   }
   ~GoldenSandbox() { std::filesystem::remove_all(root); }
 
-  void write(const std::string& rel, const std::string& text) const { std::ofstream(root / rel, std::ios::binary) << text; }
+  void write(const std::string& rel, const std::string& text) const {
+    std::ofstream(root / rel, std::ios::binary) << text;
+  }
   std::string read(const std::string& rel) const {
     std::stringstream s;
     s << std::ifstream(root / rel, std::ios::binary).rdbuf();
@@ -61,7 +63,8 @@ struct GoldenSandbox {
     return files;
   }
   void move_ball() const {
-    write("scenes/ball.json", sandbox_scene(R"({"type": "sphere", "center": [0.1, 0.5, 0], "radius": 0.5, "material": "red"})"));
+    write("scenes/ball.json",
+          sandbox_scene(R"({"type": "sphere", "center": [0.1, 0.5, 0], "radius": 0.5, "material": "red"})"));
   }
   // Arguments of `tracer golden check` for one golden of the sandbox.
   std::string check_args(const std::string& name, const std::string& report = "") const {

@@ -92,7 +92,9 @@ struct PixelDifferences {
   size_t count_over(double threshold) const {
     return static_cast<size_t>(std::count_if(pixels.begin(), pixels.end(), [&](double d) { return d > threshold; }));
   }
-  double fraction_over(double threshold) const { return static_cast<double>(count_over(threshold)) / static_cast<double>(pixels.size()); }
+  double fraction_over(double threshold) const {
+    return static_cast<double>(count_over(threshold)) / static_cast<double>(pixels.size());
+  }
 };
 
 inline PixelDifferences pixel_differences(const Image& a, const Image& b) {
@@ -111,7 +113,8 @@ template <class TexelColour>
 std::string write_cube_faces(const std::filesystem::path& dir, int size, TexelColour texel) {
   std::string list;
   for (int i = 0; i < 6; ++i) {
-    const Image img = image_from(uint32_t(size), uint32_t(size), [&](uint32_t x, uint32_t y) { return texel(i, int(x), int(y)); });
+    const Image img =
+        image_from(uint32_t(size), uint32_t(size), [&](uint32_t x, uint32_t y) { return texel(i, int(x), int(y)); });
     const std::string name = "f" + std::to_string(i) + ".exr";
     write_image(img, (dir / name).string());
     list += (i ? ", \"" : "\"") + name + "\"";

@@ -19,7 +19,10 @@ TEST(Bench, ConvergeWritesTableCsvAndPlot) {
   std::string output;
   ASSERT_EQ(test::run_tracer("bench converge " + test::source_path("scenes/cornell-box-path.json") +
                                  " --width 16 --height 12 --spp 1,4 --ref-spp 16 --nee both --threads 1 --csv " + csv +
-                                 " --plot " + plot, &output), 0) << output;
+                                 " --plot " + plot,
+                             &output),
+            0)
+      << output;
   EXPECT_NE(output.find("NEE+MIS reaches the plain estimator's RMSE"), std::string::npos) << output;
   std::ifstream in(csv);
   std::string line;
@@ -38,7 +41,9 @@ TEST(Bench, ConvergeWritesTableCsvAndPlot) {
   const Image png = read_image(plot);
   EXPECT_EQ(png.width, 800u);
   EXPECT_EQ(png.height, 560u);
-  EXPECT_EQ(test::run_tracer("bench converge " + test::source_path("scenes/cornell-box-path.json") + " --spp 1,x", &output), 2);
+  EXPECT_EQ(
+      test::run_tracer("bench converge " + test::source_path("scenes/cornell-box-path.json") + " --spp 1,x", &output),
+      2);
   EXPECT_NE(output.find("--spp 1,x: expected a comma-separated list"), std::string::npos) << output;
   std::filesystem::remove_all(dir);
 }
@@ -49,16 +54,26 @@ TEST(Bench, TradeHasARowPerKnobSetting) {
   std::filesystem::current_path(dir);
   std::string output;
   ASSERT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/cornell-box-path.json") +
-                                 " --width 12 --height 8 --spp 4 --ref-spp 8 --threads 1", &output), 0) << output;
-  for (const char* row : {"nee          off", "sampler      stratified", "fresnel      exact", "rr_depth     off", "max_depth    16"})
+                                 " --width 12 --height 8 --spp 4 --ref-spp 8 --threads 1",
+                             &output),
+            0)
+      << output;
+  for (const char* row :
+       {"nee          off", "sampler      stratified", "fresnel      exact", "rr_depth     off", "max_depth    16"})
     EXPECT_NE(output.find(row), std::string::npos) << row << " in " << output;
   EXPECT_EQ(output.find("sky_sampling"), std::string::npos) << "no cube-map sky, no sky knob: " << output;
   ASSERT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/features/sun-sky.json") +
-                                 " --width 12 --height 8 --spp 4 --ref-spp 8 --threads 1", &output), 0) << output;
+                                 " --width 12 --height 8 --spp 4 --ref-spp 8 --threads 1",
+                             &output),
+            0)
+      << output;
   EXPECT_NE(output.find("sky_sampling off"), std::string::npos) << output;
   // A scene of its own with the stratified sampler keeps every row's spp square.
   ASSERT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/features/ior-one.json") +
-                                 " --width 12 --height 8 --spp 4 --ref-spp 16 --threads 1", &output), 0) << output;
+                                 " --width 12 --height 8 --spp 4 --ref-spp 16 --threads 1",
+                             &output),
+            0)
+      << output;
   EXPECT_NE(output.find("fresnel      schlick"), std::string::npos) << output;
   std::filesystem::current_path(cwd);
   std::filesystem::remove_all(dir);
@@ -71,7 +86,10 @@ TEST(Bench, RaysGivesEveryStructureTheSameHits) {
   const std::string obj = (dir / "cubes.obj").string();
   std::string output;
   ASSERT_EQ(test::run_tracer("generate cubes --triangles 600 -o " + obj, &output), 0) << output;
-  ASSERT_EQ(test::run_tracer("bench rays " + obj + " --rays 4096 --threads 1 --accel bvh,lbvh,kdtree,kdtree-median,grid,none", &output), 0)
+  ASSERT_EQ(
+      test::run_tracer("bench rays " + obj + " --rays 4096 --threads 1 --accel bvh,lbvh,kdtree,kdtree-median,grid,none",
+                       &output),
+      0)
       << output;
   for (const char* accel : {"bvh ", "lbvh ", "kdtree ", "kdtree-median ", "grid ", "none "}) {
     const size_t row = output.find(std::string("\n") + accel);

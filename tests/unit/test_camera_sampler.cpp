@@ -4,8 +4,8 @@
 #include <cmath>
 #include <set>
 
-#include "scene/camera_setup.h"
 #include "kernel/camera/sampler.h"
+#include "scene/camera_setup.h"
 
 using namespace tracer;
 
@@ -33,8 +33,9 @@ TEST(Camera, VerticalFieldOfViewAndOrientation) {
 TEST(Camera, ThinLensRaysConvergeOnFocusPlane) {
   const float focus = 4.0f;
   const Camera cam = make_camera({{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 45.0f, 0.5f, focus}, 64, 64);
-  const Ray pin = camera_ray(Camera{cam.origin, cam.focal_top_left, cam.pixel_dx, cam.pixel_dy, cam.lens_u, cam.lens_v, 0.0f},
-                             10.0f, 20.0f, 0.0f, 0.0f);
+  const Ray pin =
+      camera_ray(Camera{cam.origin, cam.focal_top_left, cam.pixel_dx, cam.pixel_dy, cam.lens_u, cam.lens_v, 0.0f},
+                 10.0f, 20.0f, 0.0f, 0.0f);
   const Vec3 target = ray_at(pin, focus / -pin.dir.z);
   for (float lu : {0.1f, 0.5f, 0.9f})
     for (float lv : {0.0f, 0.3f, 0.8f}) {

@@ -42,18 +42,29 @@ std::vector<BadInput> bad_inputs() {
   const std::string g = kGoodScene;
   return {
       {"MalformedJson", replace(g, "\"vfov\": 40}", "\"vfov\": 40,}"), "", "inline.json:2:"},
-      {"UnknownKey", replace(g, "\"radius\": 1", "\"radius\": 1, \"radiuss\": 2"), "", "shapes[0].radiuss: unknown key"},
-      {"WrongType", replace(g, "\"radius\": 1", "\"radius\": \"1\""), "", "shapes[0].radius: expected a number, got \"1\""},
+      {"UnknownKey", replace(g, "\"radius\": 1", "\"radius\": 1, \"radiuss\": 2"), "",
+       "shapes[0].radiuss: unknown key"},
+      {"WrongType", replace(g, "\"radius\": 1", "\"radius\": \"1\""), "",
+       "shapes[0].radius: expected a number, got \"1\""},
       {"MissingFile", "", "", "cannot open scene file"},
-      {"MissingObj", replace(g, R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})",
-                             R"({"type": "mesh", "file": "nope.obj", "material": "m"})"), "", "shapes[0].file: "},
+      {"MissingObj",
+       replace(g, R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})",
+               R"({"type": "mesh", "file": "nope.obj", "material": "m"})"),
+       "", "shapes[0].file: "},
       {"NegativeRadius", replace(g, "\"radius\": 1", "\"radius\": -1"), "", "shapes[0].radius: must be > 0"},
-      {"ZeroAreaQuad", replace(g, R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})",
-                               R"({"type": "quad", "corner": [0, 0, 0], "u": [1, 0, 0], "v": [2, 0, 0], "material": "m"})"), "", "shapes[0]: zero-area quad"},
-      {"ZeroAreaTriangle", replace(g, R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})",
-                                   R"({"type": "triangle", "vertices": [[0, 0, 0], [1, 1, 1], [2, 2, 2]], "material": "m"})"), "", "shapes[0].vertices: zero-area triangle"},
-      {"MeshOfZeroAreaTriangles", replace(g, R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})",
-                                          R"({"type": "mesh", "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "indices": [[0, 1, 1], [2, 2, 2]], "material": "m"})"), "", "shapes[0].indices: every triangle of the mesh has zero area"},
+      {"ZeroAreaQuad",
+       replace(g, R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})",
+               R"({"type": "quad", "corner": [0, 0, 0], "u": [1, 0, 0], "v": [2, 0, 0], "material": "m"})"),
+       "", "shapes[0]: zero-area quad"},
+      {"ZeroAreaTriangle",
+       replace(g, R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})",
+               R"({"type": "triangle", "vertices": [[0, 0, 0], [1, 1, 1], [2, 2, 2]], "material": "m"})"),
+       "", "shapes[0].vertices: zero-area triangle"},
+      {"MeshOfZeroAreaTriangles",
+       replace(
+           g, R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})",
+           R"({"type": "mesh", "positions": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "indices": [[0, 1, 1], [2, 2, 2]], "material": "m"})"),
+       "", "shapes[0].indices: every triangle of the mesh has zero area"},
       {"InfiniteNumber", replace(g, "\"radius\": 1", "\"radius\": 1e999"), "", "number overflow parsing '1e999'"},
       {"FloatOverflow", replace(g, "[0, 3, 3]", "[0, 3e39, 3]"), "", "lights[0].position[1]: expected a finite number"},
       {"NaNLiteral", replace(g, "\"radius\": 1", "\"radius\": NaN"), "", "malformed JSON"},
@@ -61,9 +72,11 @@ std::vector<BadInput> bad_inputs() {
       {"SppZeroOnCommandLine", g, "--spp 0", "--spp: spp must be at least 1"},
       {"ResolutionTooLarge", replace(g, "\"width\": 16", "\"width\": 16385"), "", "film.width: must be in [1, 16384]"},
       {"ResolutionTooLargeOnCommandLine", g, "--height 20000", "--height: must be in [1, 16384]"},
-      {"UnknownMaterial", replace(g, "\"material\": \"m\"}]", "\"material\": \"x\"}]"), "", "shapes[0].material: unknown material \"x\""},
+      {"UnknownMaterial", replace(g, "\"material\": \"m\"}]", "\"material\": \"x\"}]"), "",
+       "shapes[0].material: unknown material \"x\""},
       {"GridNeedsSquareSpp", g, "--sampler grid --spp 3", "needs a square spp"},
-      {"TextureMissing", replace(g, "\"albedo\": [0.5, 0.5, 0.5]", "\"albedo\": {\"texture\": \"a.png\"}"), "", "materials.m.albedo.texture: image"},
+      {"TextureMissing", replace(g, "\"albedo\": [0.5, 0.5, 0.5]", "\"albedo\": {\"texture\": \"a.png\"}"), "",
+       "materials.m.albedo.texture: image"},
       {"UnknownIntegrator", g, "--integrator photons", "unknown integrator \"photons\""},
       {"UnknownAccel", g, "--accel octree", "unknown accel \"octree\""},
       {"MaxDepthTooLarge", g, "--max-depth 65", "--max-depth: must be at most 64"},
@@ -71,7 +84,8 @@ std::vector<BadInput> bad_inputs() {
       {"UnknownDevice", g, "-o OUTDIR/out.png --device gpu", "--device gpu: expected cpu or cuda"},
       {"UnknownEffect", g, "-o OUTDIR/out.png --effects glow", "unknown effect \"glow\""},
       {"SamplesNeedAPartialFile", g, "-o OUTDIR/out.png --samples 0:1", "--samples writes a partial file"},
-      {"SampleRangeBeyondSpp", g, "-o OUTDIR/out.partial --samples 0:2", "--samples 0:2: expected 0 <= A < B <= spp (1)"},
+      {"SampleRangeBeyondSpp", g, "-o OUTDIR/out.partial --samples 0:2",
+       "--samples 0:2: expected 0 <= A < B <= spp (1)"},
   };
 }
 
@@ -113,8 +127,11 @@ TEST(Cli, RenderWritesImageAndStats) {
   const auto dir = test::temp_dir("cli-render");
   std::ofstream(dir / "s.json") << kGoodScene;
   std::string output;
-  ASSERT_EQ(test::run_tracer("render " + (dir / "s.json").string() + " -o " + (dir / "a.exr").string() +
-                                 " --stats " + (dir / "stats.json").string(), &output), 0) << output;
+  ASSERT_EQ(test::run_tracer("render " + (dir / "s.json").string() + " -o " + (dir / "a.exr").string() + " --stats " +
+                                 (dir / "stats.json").string(),
+                             &output),
+            0)
+      << output;
   EXPECT_TRUE(std::filesystem::exists(dir / "a.exr"));
   const Json stats = Json::parse(std::ifstream(dir / "stats.json"));
   EXPECT_EQ(stats["rays"]["camera"], 16 * 12);
@@ -132,12 +149,16 @@ TEST(Cli, StatsNameEveryAccelerationStructure) {
   for (const std::string accel : {"bvh", "lbvh", "kdtree", "kdtree-median", "grid", "none"}) {
     std::string output;
     ASSERT_EQ(test::run_tracer("render " + (dir / "s.json").string() + " --quiet --accel " + accel + " -o " +
-                                   (dir / "a.exr").string() + " --stats " + (dir / "stats.json").string(), &output), 0)
+                                   (dir / "a.exr").string() + " --stats " + (dir / "stats.json").string(),
+                               &output),
+              0)
         << output;
     const Json stats = Json::parse(std::ifstream(dir / "stats.json"));
     EXPECT_EQ(stats["accel"]["kind"], accel);
-    if (accel == "none" || accel == "grid") EXPECT_EQ(stats["accel"]["nodes"], 0) << accel;
-    else EXPECT_GT(stats["accel"]["nodes"].get<int>(), 0) << accel;
+    if (accel == "none" || accel == "grid")
+      EXPECT_EQ(stats["accel"]["nodes"], 0) << accel;
+    else
+      EXPECT_GT(stats["accel"]["nodes"].get<int>(), 0) << accel;
     EXPECT_EQ(stats["accel"].contains("cells"), accel == "grid") << accel;
     if (accel == "grid") EXPECT_GT(stats["accel"]["cells"].get<int>(), 0);
   }
@@ -150,16 +171,28 @@ TEST(Cli, CompareExitCodes) {
   const std::string s = (dir / "s.json").string();
   ASSERT_EQ(test::run_tracer("render " + s + " --quiet -o " + (dir / "a.exr").string()), 0);
   ASSERT_EQ(test::run_tracer("render " + s + " --quiet -o " + (dir / "b.exr").string()), 0);
-  ASSERT_EQ(test::run_tracer("render " + s + " --quiet --seed 2 --spp 4 --sampler stochastic -o " + (dir / "c.exr").string()), 0);
+  ASSERT_EQ(
+      test::run_tracer("render " + s + " --quiet --seed 2 --spp 4 --sampler stochastic -o " + (dir / "c.exr").string()),
+      0);
   std::string output;
-  EXPECT_EQ(test::run_tracer("compare " + (dir / "a.exr").string() + " " + (dir / "b.exr").string() + " --fail 0", &output), 0) << output;
+  EXPECT_EQ(
+      test::run_tracer("compare " + (dir / "a.exr").string() + " " + (dir / "b.exr").string() + " --fail 0", &output),
+      0)
+      << output;
   EXPECT_NE(output.find("PASS: bit-identical"), std::string::npos) << output;
-  EXPECT_EQ(test::run_tracer("compare " + (dir / "a.exr").string() + " " + (dir / "c.exr").string() + " --fail 0 --diff " +
-                             (dir / "d.exr").string(), &output), 1) << output;
+  EXPECT_EQ(test::run_tracer("compare " + (dir / "a.exr").string() + " " + (dir / "c.exr").string() +
+                                 " --fail 0 --diff " + (dir / "d.exr").string(),
+                             &output),
+            1)
+      << output;
   EXPECT_NE(output.find("FAIL"), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(dir / "d.exr"));
-  EXPECT_EQ(test::run_tracer("compare " + (dir / "a.exr").string() + " " + (dir / "c.exr").string() + " --fail 10", &output), 0) << output;
-  EXPECT_EQ(test::run_tracer("compare " + (dir / "a.exr").string() + " " + (dir / "missing.exr").string(), &output), 2) << output;
+  EXPECT_EQ(
+      test::run_tracer("compare " + (dir / "a.exr").string() + " " + (dir / "c.exr").string() + " --fail 10", &output),
+      0)
+      << output;
+  EXPECT_EQ(test::run_tracer("compare " + (dir / "a.exr").string() + " " + (dir / "missing.exr").string(), &output), 2)
+      << output;
   std::filesystem::remove_all(dir);
 }
 

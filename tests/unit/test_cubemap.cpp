@@ -24,10 +24,10 @@ TEST(Cubemap, FaceAndCoordinatesOfTheAxesAndEdges) {
     Vec3 d;
     uint32_t face;
     float u, v;
-  } cases[] = {{{1, 0, 0}, 0, 0.5f, 0.5f},   {{-1, 0, 0}, 1, 0.5f, 0.5f},  {{0, 1, 0}, 2, 0.5f, 0.5f},
-               {{0, -1, 0}, 3, 0.5f, 0.5f},  {{0, 0, 1}, 4, 0.5f, 0.5f},   {{0, 0, -1}, 5, 0.5f, 0.5f},
+  } cases[] = {{{1, 0, 0}, 0, 0.5f, 0.5f},     {{-1, 0, 0}, 1, 0.5f, 0.5f},     {{0, 1, 0}, 2, 0.5f, 0.5f},
+               {{0, -1, 0}, 3, 0.5f, 0.5f},    {{0, 0, 1}, 4, 0.5f, 0.5f},      {{0, 0, -1}, 5, 0.5f, 0.5f},
                {{1, 0.5f, 0}, 0, 0.5f, 0.75f}, {{0.5f, 0, -1}, 5, 0.75f, 0.5f},  // up on +x; right on -z is +x
-               {{0, 1, -0.5f}, 2, 0.5f, 0.25f}};                               // on +y, -z is down the image
+               {{0, 1, -0.5f}, 2, 0.5f, 0.25f}};                                 // on +y, -z is down the image
   for (const auto& c : cases) {
     EXPECT_EQ(cube_face(c.d, u, v), c.face) << c.d.x << "," << c.d.y << "," << c.d.z;
     EXPECT_EQ(u, c.u) << c.d.x << "," << c.d.y << "," << c.d.z;
@@ -38,7 +38,8 @@ TEST(Cubemap, FaceAndCoordinatesOfTheAxesAndEdges) {
 std::string scene_with(const std::string& background) {
   return R"({"format": "tracer-scene/1", "camera": {"from": [0, 1, 3], "to": [0, 0.5, 0], "vfov": 80},
     "film": {"width": 48, "height": 32}, "render": {"integrator": "path", "spp": 4, "max_depth": 3, "sky_sampling": false},
-    "background": )" + background + R"(, "materials": {"m": {"type": "metal", "albedo": [0.9, 0.9, 0.9], "roughness": 0.3},
+    "background": )" +
+         background + R"(, "materials": {"m": {"type": "metal", "albedo": [0.9, 0.9, 0.9], "roughness": 0.3},
     "d": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
     "shapes": [{"type": "sphere", "center": [0, 0.5, 0], "radius": 0.5, "material": "m"},
                {"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "d"}]})";
@@ -47,8 +48,10 @@ std::string scene_with(const std::string& background) {
 TEST(Cubemap, ConstantCubeMapEqualsTheConstantBackgroundBitForBit) {
   const auto dir = test::temp_dir("cube-constant");
   const std::string faces = test::write_cube_faces(dir, 8, [](int, int, int) { return Vec3{0.3f, 0.6f, 0.9f}; });
-  const Scene cube = load_scene_text(scene_with(R"({"type": "cubemap", "faces": [)" + faces + "]}"), (dir / "s.json").string());
-  const Scene constant = load_scene_text(scene_with(R"({"type": "constant", "radiance": [0.3, 0.6, 0.9]})"), (dir / "s.json").string());
+  const Scene cube =
+      load_scene_text(scene_with(R"({"type": "cubemap", "faces": [)" + faces + "]}"), (dir / "s.json").string());
+  const Scene constant =
+      load_scene_text(scene_with(R"({"type": "constant", "radiance": [0.3, 0.6, 0.9]})"), (dir / "s.json").string());
   RenderStats s1, s2;
   const Image a = render_cpu(cube, 1, s1), b = render_cpu(constant, 1, s2);
   EXPECT_EQ(std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * sizeof(float)), 0);
@@ -72,7 +75,8 @@ std::string write_direction_faces(const std::filesystem::path& dir, int n) {
 TEST(Cubemap, FacesAreOrientedAndMeetWithoutCracks) {
   const auto dir = test::temp_dir("cube-seams");
   const std::string faces = write_direction_faces(dir, 64);
-  const Scene scene = load_scene_text(scene_with(R"({"type": "cubemap", "faces": [)" + faces + "]}"), (dir / "s.json").string());
+  const Scene scene =
+      load_scene_text(scene_with(R"({"type": "cubemap", "faces": [)" + faces + "]}"), (dir / "s.json").string());
   const SceneView view = scene.view();
   int checked = 0;
   float worst = 0.0f;
@@ -105,9 +109,12 @@ TEST(Cubemap, BadFacesAreErrors) {
     std::string background, expected;
   } cases[] = {
       {R"({"type": "cubemap", "faces": ["f0.exr"]})", "background.faces: expected six image files"},
-      {R"({"type": "cubemap", "faces": ["f0.exr", "f1.exr", "wide.exr", "f3.exr", "f4.exr", "f5.exr"]})", "background.faces[2]: cube faces must be square"},
-      {R"({"type": "cubemap", "faces": ["f0.exr", "f1.exr", "f2.exr", "big.exr", "f4.exr", "f5.exr"]})", "background.faces[3]: cube faces must all be the same size"},
-      {R"({"type": "cubemap", "faces": ["f0.exr", "f1.exr", "f2.exr", "f3.exr", "f4.exr", "gone.exr"]})", "background.faces[5]: image"},
+      {R"({"type": "cubemap", "faces": ["f0.exr", "f1.exr", "wide.exr", "f3.exr", "f4.exr", "f5.exr"]})",
+       "background.faces[2]: cube faces must be square"},
+      {R"({"type": "cubemap", "faces": ["f0.exr", "f1.exr", "f2.exr", "big.exr", "f4.exr", "f5.exr"]})",
+       "background.faces[3]: cube faces must all be the same size"},
+      {R"({"type": "cubemap", "faces": ["f0.exr", "f1.exr", "f2.exr", "f3.exr", "f4.exr", "gone.exr"]})",
+       "background.faces[5]: image"},
   };
   for (const auto& k : cases) test::expect_load_error(dir, scene_with(k.background), k.expected);
   std::filesystem::remove_all(dir);

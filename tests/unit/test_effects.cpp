@@ -4,8 +4,8 @@
 
 #include <cstring>
 
-#include "options/effects.h"
 #include "io/input_error.h"
+#include "options/effects.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
 

@@ -58,7 +58,8 @@ bump clay.exr
 std::string mesh_scene(const std::string& obj) {
   return R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
     "film": {"width": 8, "height": 8}, "materials": {},
-    "shapes": [{"type": "mesh", "file": ")" + obj + R"("}]})";
+    "shapes": [{"type": "mesh", "file": ")" +
+         obj + R"("}]})";
 }
 
 TEST(Mtl, EveryMappingRowAndFacesWithoutUsemtl) {
@@ -93,7 +94,8 @@ TEST(Mtl, EveryMappingRowAndFacesWithoutUsemtl) {
   EXPECT_NE(clay.texture[kSlotAlbedo], kNoTexture);
   EXPECT_NE(clay.bump_map, kNoTexture);
   EXPECT_EQ(clay.albedo.x, 0.25f) << "a float map is linear; the colour holds its mean";
-  for (const char* t : {"material:emissive", "material:dielectric", "material:metal", "material:phong", "material:lambert"})
+  for (const char* t :
+       {"material:emissive", "material:dielectric", "material:metal", "material:phong", "material:lambert"})
     EXPECT_TRUE(scene.report.used_types.count(t)) << t;
   std::filesystem::remove_all(dir);
 }
@@ -105,7 +107,8 @@ TEST(Mtl, MissingMtlOrMapIsAnError) {
   std::ofstream(dir / "things.mtl") << kMtl;  // clay.exr and spec.exr are missing
   const struct {
     std::string obj, expected;
-  } cases[] = {{"lost.obj", "shapes[0].file: "}, {"lost.obj", "names no MTL materials"},
+  } cases[] = {{"lost.obj", "shapes[0].file: "},
+               {"lost.obj", "names no MTL materials"},
                {"things.obj", "shapes[0].file (MTL material \"plastic\")"}};
   for (const auto& c : cases) test::expect_load_error(dir, mesh_scene(c.obj), c.expected);
   std::filesystem::remove_all(dir);

@@ -6,9 +6,9 @@
 #include <cstring>
 
 #include "image/image_io.h"
-#include "scene/mesh_tangents.h"
 #include "io/input_error.h"
 #include "render/render_cpu.h"
+#include "scene/mesh_tangents.h"
 #include "test_util.h"
 
 namespace tracer {
@@ -17,8 +17,10 @@ namespace {
 // A quad facing +z under a point light, seen head-on, with `extra` material keys.
 std::string lit_quad(const std::string& extra, const std::string& integrator = "whitted") {
   return R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
-    "film": {"width": 32, "height": 32}, "render": {"integrator": ")" + integrator + R"(", "sampler": "center", "max_depth": 1},
-    "materials": {"m": {"type": "phong", "diffuse": [0.6, 0.6, 0.6], "specular": [0.3, 0.3, 0.3], "shininess": 20)" + extra + R"(}},
+    "film": {"width": 32, "height": 32}, "render": {"integrator": ")" +
+         integrator + R"(", "sampler": "center", "max_depth": 1},
+    "materials": {"m": {"type": "phong", "diffuse": [0.6, 0.6, 0.6], "specular": [0.3, 0.3, 0.3], "shininess": 20)" +
+         extra + R"(}},
     "lights": [{"type": "point", "position": [0.7, 0.4, 1.5], "intensity": [3, 3, 3]}],
     "shapes": [{"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "m"},
                {"type": "sphere", "center": [0.5, -0.4, 0.3], "radius": 0.3, "material": "m"}]})";
@@ -43,7 +45,8 @@ TEST(NormalMaps, FlatNormalMapAndConstantBumpMapChangeNothing) {
     const Image plain = render_in(dir, lit_quad("", integrator));
     EXPECT_TRUE(same_bits(plain, render_in(dir, lit_quad(R"(, "normal_map": "flat.exr")", integrator)))) << integrator;
     EXPECT_TRUE(same_bits(plain, render_in(dir, lit_quad(R"(, "bump_map": "height.exr")", integrator)))) << integrator;
-    EXPECT_TRUE(same_bits(plain, render_in(dir, lit_quad(R"(, "specular_map": "white.exr")", integrator)))) << integrator;
+    EXPECT_TRUE(same_bits(plain, render_in(dir, lit_quad(R"(, "specular_map": "white.exr")", integrator))))
+        << integrator;
   }
   std::filesystem::remove_all(dir);
 }
@@ -55,7 +58,8 @@ TEST(NormalMaps, FlatNormalMapAndConstantBumpMapChangeNothing) {
 TEST(NormalMaps, TiltedNormalMapTiltsTheCosine) {
   const auto dir = test::temp_dir("maps-tilt");
   const float a = 0.5f;
-  write_image(constant_image(4, 0.5f + 0.5f * std::sin(a), 0.5f, 0.5f + 0.5f * std::cos(a)), (dir / "tilt.exr").string());
+  write_image(constant_image(4, 0.5f + 0.5f * std::sin(a), 0.5f, 0.5f + 0.5f * std::cos(a)),
+              (dir / "tilt.exr").string());
   const std::string scene = R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
     "film": {"width": 33, "height": 33}, "render": {"integrator": "path", "sampler": "center", "max_depth": 1},
     "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5], "normal_map": "tilt.exr"}},

@@ -13,7 +13,8 @@
 namespace tracer {
 namespace {
 
-constexpr const char* kScene = R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
+constexpr const char* kScene =
+    R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
   "film": {"width": 4, "height": 4}, RENDER "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
   "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]})";
 
@@ -25,9 +26,20 @@ std::string scene_with(const std::string& render) {
 
 // Options set away from their defaults, one value per option, given as JSON.
 nlohmann::json changed_options() {
-  return {{"integrator", "path"}, {"sampler", "grid"}, {"spp", 4}, {"seed", 9}, {"width", 6}, {"height", 5},
-          {"accel", "kdtree"}, {"max_depth", 7}, {"nee", false}, {"rr_depth", 2}, {"sky_sampling", false},
-          {"triangle_test", "moller-trumbore"}, {"grid_resolution", 12}, {"effects", "shadows,reflections"}};
+  return {{"integrator", "path"},
+          {"sampler", "grid"},
+          {"spp", 4},
+          {"seed", 9},
+          {"width", 6},
+          {"height", 5},
+          {"accel", "kdtree"},
+          {"max_depth", 7},
+          {"nee", false},
+          {"rr_depth", 2},
+          {"sky_sampling", false},
+          {"triangle_test", "moller-trumbore"},
+          {"grid_resolution", 12},
+          {"effects", "shadows,reflections"}};
 }
 
 TEST(RenderOptions, EveryOptionIsCoveredByThisTest) {
@@ -67,13 +79,19 @@ TEST(RenderOptions, CommandLineSetsEveryOption) {
   for (const OptionInfo& o : option_table()) {
     EXPECT_NE(help.find(option_flag(o.name)), std::string::npos) << o.name;
     const nlohmann::json v = changed_options()[o.name];
-    args += " " + option_flag(o.name) + " " + (v.is_boolean() ? (v.get<bool>() ? "on" : "off") : v.is_string() ? v.get<std::string>() : v.dump());
+    args += " " + option_flag(o.name) + " " +
+            (v.is_boolean()  ? (v.get<bool>() ? "on" : "off")
+             : v.is_string() ? v.get<std::string>()
+                             : v.dump());
   }
   const auto dir = test::temp_dir("options-cli");
   std::ofstream(dir / "s.json") << scene_with("");
   std::string output;
   ASSERT_EQ(test::run_tracer("render " + (dir / "s.json").string() + args + " --quiet -o " + (dir / "s.exr").string() +
-                                 " --stats " + (dir / "stats.json").string(), &output), 0) << output;
+                                 " --stats " + (dir / "stats.json").string(),
+                             &output),
+            0)
+      << output;
   std::ifstream stats(dir / "stats.json");
   EXPECT_EQ(nlohmann::json::parse(stats)["options"], changed_options());
   std::filesystem::remove_all(dir);
@@ -117,10 +135,13 @@ TEST(RenderOptions, CommandLineNumbersAreStrict) {
 
 // A scene value that does not fit its option is an error, never clamped.
 TEST(RenderOptions, SceneNumbersOutOfRangeAreErrors) {
-  test::expect_load_error(std::filesystem::temp_directory_path(), scene_with(R"({"spp": 1099511627776})"), "render.spp");
-  test::expect_load_error(std::filesystem::temp_directory_path(), scene_with(R"({"max_depth": -1})"), "render.max_depth");
+  test::expect_load_error(std::filesystem::temp_directory_path(), scene_with(R"({"spp": 1099511627776})"),
+                          "render.spp");
+  test::expect_load_error(std::filesystem::temp_directory_path(), scene_with(R"({"max_depth": -1})"),
+                          "render.max_depth");
   test::expect_load_error(std::filesystem::temp_directory_path(), scene_with(R"({"nee": "on"})"), "render.nee");
-  test::expect_load_error(std::filesystem::temp_directory_path(), scene_with(R"({"effects": "shadow"})"), "render.effects");
+  test::expect_load_error(std::filesystem::temp_directory_path(), scene_with(R"({"effects": "shadow"})"),
+                          "render.effects");
 }
 
 // One name table per enum: parsing a printed name gives the value back.
@@ -128,7 +149,8 @@ TEST(EnumNames, ParseWhatIsPrinted) {
   for (uint32_t i = 0; i < std::size(EnumNames<AccelKind>::names); ++i)
     EXPECT_EQ(parse_enum<AccelKind>(enum_name(static_cast<AccelKind>(i)), "t"), static_cast<AccelKind>(i));
   for (uint32_t i = 0; i < std::size(EnumNames<IntegratorKind>::names); ++i)
-    EXPECT_EQ(parse_enum<IntegratorKind>(enum_name(static_cast<IntegratorKind>(i)), "t"), static_cast<IntegratorKind>(i));
+    EXPECT_EQ(parse_enum<IntegratorKind>(enum_name(static_cast<IntegratorKind>(i)), "t"),
+              static_cast<IntegratorKind>(i));
   EXPECT_STREQ(enum_name(IntegratorKind::Path), "path");
   EXPECT_STREQ(enum_name(SamplerKind::Stratified), "stratified");
   EXPECT_STREQ(enum_name(TriangleTest::MollerTrumbore), "moller-trumbore");

@@ -12,10 +12,12 @@ namespace {
 std::string scene_with(const std::string& shapes, const std::string& extra = "") {
   return R"({"format": "tracer-scene/1",
     "camera": {"from": [0, 0, 10], "to": [0, 0, 0], "vfov": 40},
-    "film": {"width": 8, "height": 8},)" + extra + R"(
+    "film": {"width": 8, "height": 8},)" +
+         extra + R"(
     "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]},
                   "g": {"type": "dielectric", "ior": 1.5}},
-    "shapes": [)" + shapes + "]}";
+    "shapes": [)" +
+         shapes + "]}";
 }
 void expect_near(Vec3 a, Vec3 b, float tol = 1e-5f) {
   EXPECT_NEAR(a.x, b.x, tol);
@@ -34,7 +36,8 @@ TEST(SceneLoader, TransformsApplyInOrder) {
 }
 
 TEST(SceneLoader, RotateXyzAppliesXFirst) {
-  const Scene s = test::scene_from(scene_with(R"({"type": "triangle", "vertices": [[0, 1, 0], [1, 1, 0], [0, 1, 1]], "material": "m",
+  const Scene s = test::scene_from(
+      scene_with(R"({"type": "triangle", "vertices": [[0, 1, 0], [1, 1, 0], [0, 1, 1]], "material": "m",
       "transform": [{"rotate_xyz": [90, 0, 90]}]})"));
   // (0,1,0) -> rot x 90 -> (0,0,1) -> rot z 90 -> (0,0,1)
   expect_near(s.primitives[0].a, {0, 0, 1});
@@ -44,11 +47,13 @@ TEST(SceneLoader, RotateXyzAppliesXFirst) {
 
 TEST(SceneLoader, NonUniformScaleOfSphereIsAnError) {
   EXPECT_THROW(test::scene_from(scene_with(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m",
-      "transform": [{"scale": [1, 2, 1]}]})")), InputError);
+      "transform": [{"scale": [1, 2, 1]}]})")),
+               InputError);
 }
 
 TEST(SceneLoader, BoxIsSixOutwardQuads) {
-  const Scene s = test::scene_from(scene_with(R"({"type": "box", "min": [-1, -2, -3], "max": [1, 2, 3], "material": "m"})"));
+  const Scene s =
+      test::scene_from(scene_with(R"({"type": "box", "min": [-1, -2, -3], "max": [1, 2, 3], "material": "m"})"));
   ASSERT_EQ(s.primitives.size(), 6u);
   Vec3 centre = {0, 0, 0};
   for (const Primitive& p : s.primitives) {
@@ -81,11 +86,13 @@ TEST(SceneLoader, ObjPolygonsAreFanTriangulatedWithNormalsAndUvs) {
 }
 
 TEST(SceneLoader, FeatureMaskListsWhatTheSceneUses) {
-  const Scene s = test::scene_from(scene_with(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "g"},
+  const Scene s =
+      test::scene_from(scene_with(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "g"},
       {"type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0], "material": "m"})",
-                                              R"("lights": [{"type": "point", "position": [0, 5, 0], "intensity": [1, 1, 1]}],)"));
+                                  R"("lights": [{"type": "point", "position": [0, 5, 0], "intensity": [1, 1, 1]}],)"));
   EXPECT_EQ(s.features, kFeatureSphere | kFeaturePlane | kFeatureDielectric | kFeatureLambert | kFeaturePointLight);
-  EXPECT_EQ(feature_names(s.features), (std::vector<std::string>{"sphere", "plane", "lambert", "dielectric", "point-light"}));
+  EXPECT_EQ(feature_names(s.features),
+            (std::vector<std::string>{"sphere", "plane", "lambert", "dielectric", "point-light"}));
   EXPECT_EQ(s.unbounded.size(), 1u);
   EXPECT_EQ(s.bounded.size(), 1u);
 }
@@ -95,7 +102,8 @@ TEST(SceneLoader, DefaultsAndOverrides) {
   ov.spp = 9;
   ov.sampler = SamplerKind::Stratified;
   ov.width = 20;
-  const Scene s = test::scene_from(scene_with(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})"), ov);
+  const Scene s =
+      test::scene_from(scene_with(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})"), ov);
   EXPECT_EQ(s.settings.spp, 9u);
   EXPECT_EQ(s.settings.grid_n, 3u);
   EXPECT_EQ(s.settings.width, 20u);

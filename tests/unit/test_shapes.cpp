@@ -4,12 +4,12 @@
 
 #include <random>
 
-#include "options/enum_names.h"
 #include "accel/acceleration.h"
 #include "accel/bounds.h"
-#include "kernel/shading/optics.h"
 #include "kernel/geom/ray_offset.h"
+#include "kernel/shading/optics.h"
 #include "kernel/shading/surface.h"
+#include "options/enum_names.h"
 #include "test_util.h"
 
 using namespace tracer;
@@ -74,7 +74,8 @@ TEST(Quad, HitGivesPlanarCoordinates) {
   EXPECT_EQ(t, 1.0f);
   EXPECT_EQ(alpha, 0.25f);
   EXPECT_EQ(beta, 0.25f);
-  EXPECT_FALSE(intersect_quad({0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {{0.5f, 1.5f, 1.0f}, {0, 0, -1}}, 0.0f, kInfinity, t, alpha, beta));
+  EXPECT_FALSE(intersect_quad({0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {{0.5f, 1.5f, 1.0f}, {0, 0, -1}}, 0.0f, kInfinity, t,
+                              alpha, beta));
 }
 
 TEST(Plane, HitFromEitherSide) {
@@ -93,7 +94,8 @@ std::string one_shape_scene(const std::string& shape) {
     "camera": {"from": [0, 0, 10], "to": [0, 0, 0], "vfov": 40},
     "film": {"width": 8, "height": 8},
     "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
-    "shapes": [)" + shape + "]}";
+    "shapes": [)" +
+         shape + "]}";
 }
 
 // Fires rays at a scene holding one convex or flat shape, reflects them off the hit
@@ -123,11 +125,14 @@ int self_hits(const Scene& scene, Vec3 aim_center, float aim_radius) {
 }  // namespace
 
 TEST(Shapes, NoSelfIntersectionAtLargeCoordinates) {
-  const Scene sphere = test::scene_from(one_shape_scene(R"({"type": "sphere", "center": [300, 200, 500], "radius": 90, "material": "m"})"));
+  const Scene sphere = test::scene_from(
+      one_shape_scene(R"({"type": "sphere", "center": [300, 200, 500], "radius": 90, "material": "m"})"));
   EXPECT_EQ(self_hits(sphere, {300, 200, 500}, 90.0f), 0);
-  const Scene quad = test::scene_from(one_shape_scene(R"({"type": "quad", "corner": [0, 0, 559.2], "u": [556, 0, 0], "v": [0, 548.8, 0], "material": "m"})"));
+  const Scene quad = test::scene_from(one_shape_scene(
+      R"({"type": "quad", "corner": [0, 0, 559.2], "u": [556, 0, 0], "v": [0, 548.8, 0], "material": "m"})"));
   EXPECT_EQ(self_hits(quad, {278, 274, 559.2f}, 270.0f), 0);
-  const Scene plane = test::scene_from(one_shape_scene(R"({"type": "plane", "point": [0, 0, 0], "normal": [1, 0, 0], "material": "m"})"));
+  const Scene plane = test::scene_from(
+      one_shape_scene(R"({"type": "plane", "point": [0, 0, 0], "normal": [1, 0, 0], "material": "m"})"));
   EXPECT_EQ(self_hits(plane, {0, 274, 300}, 270.0f), 0);
   const Scene tris = test::scene_from(one_shape_scene(R"({"type": "mesh", "material": "m",
       "positions": [[0, 0, 559.2], [0, 0, 0], [0, 548.8, 0], [0, 548.8, 559.2]], "indices": [[0, 1, 2], [0, 2, 3]]})"));
@@ -147,7 +152,8 @@ TEST(Bvh, ClosestAndAnyHitEqualBruteForce) {
                     p(rng), p(rng), p(rng), r(rng));
     } else {
       const float x = p(rng), y = p(rng), z = p(rng);
-      std::snprintf(buf, sizeof buf, R"({"type": "triangle", "vertices": [[%g, %g, %g], [%g, %g, %g], [%g, %g, %g]], "material": "m"})",
+      std::snprintf(buf, sizeof buf,
+                    R"({"type": "triangle", "vertices": [[%g, %g, %g], [%g, %g, %g], [%g, %g, %g]], "material": "m"})",
                     x, y, z, x + e(rng), y + e(rng), z + e(rng), x + e(rng), y + e(rng), z + e(rng));
     }
     shapes += buf;
@@ -178,7 +184,8 @@ TEST(Bvh, ClosestAndAnyHitEqualBruteForce) {
 TEST(Bvh, TieOnEqualTGoesToSmallerId) {
   std::string shapes;
   for (int i = 0; i < 12; ++i)
-    shapes += std::string(i ? "," : "") + R"({"type": "triangle", "vertices": [[-1, -1, 0], [1, -1, 0], [0, 1, 0]], "material": "m"})";
+    shapes += std::string(i ? "," : "") +
+              R"({"type": "triangle", "vertices": [[-1, -1, 0], [1, -1, 0], [0, 1, 0]], "material": "m"})";
   for (const char* accel : {"bvh", "none"}) {
     RenderOverrides ov;
     ov.accel = parse_enum<AccelKind>(accel, "accel");

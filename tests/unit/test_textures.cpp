@@ -10,11 +10,11 @@
 #include <fstream>
 
 #include "image/image_io.h"
-#include "kernel/shading/surface.h"
 #include "io/input_error.h"
+#include "kernel/shading/surface.h"
 #include "render/render_cpu.h"
-#include "test_util.h"
 #include "scene/texture_loader.h"
+#include "test_util.h"
 
 namespace tracer {
 namespace {
@@ -23,7 +23,8 @@ namespace {
 Scene textured_scene(const std::filesystem::path& dir, const std::string& colour) {
   const std::string json = R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 1], "to": [0, 0, 0], "vfov": 90},
     "film": {"width": 64, "height": 64}, "render": {"integrator": "albedo", "sampler": "center"},
-    "materials": {"m": {"type": "lambert", "albedo": )" + colour + R"(}},
+    "materials": {"m": {"type": "lambert", "albedo": )" +
+                           colour + R"(}},
     "shapes": [{"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "m"}]})";
   return load_scene_text(json, (dir / "scene.json").string());
 }
@@ -44,7 +45,8 @@ TEST(Textures, TexelCentresReadBackExactly) {
   ASSERT_EQ(scene.textures.size(), 1u);
   for (uint32_t y = 0; y < 4; ++y)
     for (uint32_t x = 0; x < 4; ++x) {
-      const Vec3 v = sample_texture(scene.textures.data(), scene.texels.data(), 0, (x + 0.5f) / 4.0f, 1.0f - (y + 0.5f) / 4.0f);
+      const Vec3 v =
+          sample_texture(scene.textures.data(), scene.texels.data(), 0, (x + 0.5f) / 4.0f, 1.0f - (y + 0.5f) / 4.0f);
       const float* e = &img.rgb[3 * (y * 4 + x)];
       EXPECT_EQ(v.x, e[0]) << x << "," << y;
       EXPECT_EQ(v.y, e[1]) << x << "," << y;
@@ -59,7 +61,9 @@ TEST(Textures, BilinearWeightsWrapAndClamp) {
   write_image(img, (dir / "t.exr").string());
   const Scene repeat = textured_scene(dir, R"({"texture": "t.exr"})");
   const Scene clamp = textured_scene(dir, R"({"texture": "t.exr", "wrap": "clamp"})");
-  const auto at = [](const Scene& s, float u, float v) { return sample_texture(s.textures.data(), s.texels.data(), 0, u, v); };
+  const auto at = [](const Scene& s, float u, float v) {
+    return sample_texture(s.textures.data(), s.texels.data(), 0, u, v);
+  };
   const auto texel = [&](int x, int y) { return img.rgb[3 * (y * 4 + x) + 1]; };  // green channel
   // Halfway between texel centres (1, 0) and (2, 0): weights 1/2 and 1/2.
   EXPECT_FLOAT_EQ(at(repeat, 2.0f / 4.0f, 1.0f - 0.5f / 4.0f).y, 0.5f * texel(1, 0) + 0.5f * texel(2, 0));
@@ -118,7 +122,8 @@ TEST(Textures, BadImagesAreErrorsNamingFileAndKey) {
       {R"({"texture": "two.png"})", "expected 1, 3 or 4 channels, got 2"},
       {R"({"texture": "junk.png"})", "cannot read image"},
       {R"({"texture": "two.png", "wrap": "mirror"})", "materials.m.albedo.wrap: expected \"repeat\" or \"clamp\""},
-      {R"({"checker": {"scale": 0, "even": [1, 1, 1], "odd": [0, 0, 0]}})", "materials.m.albedo.checker.scale: must be > 0"},
+      {R"({"checker": {"scale": 0, "even": [1, 1, 1], "odd": [0, 0, 0]}})",
+       "materials.m.albedo.checker.scale: must be > 0"},
       {R"({"gradient": 1})", "materials.m.albedo: expected [r, g, b]"},
   };
   for (const auto& c : cases) {

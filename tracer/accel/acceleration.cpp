@@ -46,7 +46,8 @@ AccelSummary acceleration_summary(AccelKind kind, const Acceleration& a) {
 }
 
 size_t acceleration_bytes(const Acceleration& a) {
-  return a.bvh_nodes.size() * sizeof(BvhNode) + a.bounded.size() * sizeof(uint32_t) + a.kd.nodes.size() * sizeof(KdNode) +
+  return a.bvh_nodes.size() * sizeof(BvhNode) + a.bounded.size() * sizeof(uint32_t) +
+         a.kd.nodes.size() * sizeof(KdNode) +
          (a.kd.prims.size() + a.grid.cell_start.size() + a.grid.prims.size()) * sizeof(uint32_t);
 }
 

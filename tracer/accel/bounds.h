@@ -9,8 +9,14 @@ namespace tracer {
 struct Bounds {
   Vec3 lo{kInfinity, kInfinity, kInfinity};
   Vec3 hi{-kInfinity, -kInfinity, -kInfinity};
-  void grow(Vec3 p) { lo = min_of(lo, p); hi = max_of(hi, p); }
-  void grow(const Bounds& b) { lo = min_of(lo, b.lo); hi = max_of(hi, b.hi); }
+  void grow(Vec3 p) {
+    lo = min_of(lo, p);
+    hi = max_of(hi, p);
+  }
+  void grow(const Bounds& b) {
+    lo = min_of(lo, b.lo);
+    hi = max_of(hi, b.hi);
+  }
   float surface_area() const;
 };
 

@@ -45,8 +45,7 @@ UniformGrid build_grid(const std::vector<BuildItem>& items, uint32_t resolution)
       for (size_t c = 0; c < cells; ++c) grid.cell_start[c + 1] += grid.cell_start[c];
       grid.prims.resize(grid.cell_start[cells]);
     }
-    std::vector<uint32_t> fill(pass == 1 ? grid.cell_start.begin() : grid.cell_start.end(),
-                               grid.cell_start.end());
+    std::vector<uint32_t> fill(pass == 1 ? grid.cell_start.begin() : grid.cell_start.end(), grid.cell_start.end());
     for (const BuildItem& it : items) {
       int lo[3], hi[3];
       for (int a = 0; a < 3; ++a) range(it, a, lo[a], hi[a]);
@@ -54,8 +53,10 @@ UniformGrid build_grid(const std::vector<BuildItem>& items, uint32_t resolution)
         for (int y = lo[1]; y <= hi[1]; ++y)
           for (int x = lo[0]; x <= hi[0]; ++x) {
             const size_t c = size_t(x) + n[0] * (size_t(y) + n[1] * size_t(z));
-            if (pass == 0) ++grid.cell_start[c + 1];
-            else grid.prims[fill[c]++] = it.id;
+            if (pass == 0)
+              ++grid.cell_start[c + 1];
+            else
+              grid.prims[fill[c]++] = it.id;
           }
     }
   }

@@ -14,7 +14,10 @@ constexpr float kTraversalCost = 1.0f, kIntersectionCost = 1.5f, kEmptyBonus = 0
 class KdBuilder {
  public:
   KdBuilder(KdTree& tree, const std::vector<BuildItem>& items, KdSplit split, float pad)
-      : tree_(tree), items_(items), split_(split), pad_(pad),
+      : tree_(tree),
+        items_(items),
+        split_(split),
+        pad_(pad),
         max_depth_(8 + static_cast<int>(1.3 * std::log2(std::max<size_t>(items.size(), 1)))) {}
 
   void build(const Bounds& box) {
@@ -52,7 +55,8 @@ class KdBuilder {
         Bounds b = box, a = box;
         b.hi[axis] = split;
         a.lo[axis] = split;
-        float cost = kTraversalCost + kIntersectionCost * (b.surface_area() / area * below + a.surface_area() / area * above);
+        float cost =
+            kTraversalCost + kIntersectionCost * (b.surface_area() / area * below + a.surface_area() / area * above);
         if (below == 0 || above == 0) cost *= 1.0f - kEmptyBonus;
         if (cost < best) best = cost, axis_out = axis, split_out = split, found = true;
       }
@@ -75,8 +79,9 @@ class KdBuilder {
   void build_node(uint32_t node, const Bounds& box, const std::vector<uint32_t>& list, int depth) {
     int axis = 0;
     float split = 0.0f;
-    const bool divide = depth < max_depth_ && list.size() > 2 &&
-                        (split_ == KdSplit::Sah ? sah_split(box, list, axis, split) : median_split(box, list, axis, split));
+    const bool divide =
+        depth < max_depth_ && list.size() > 2 &&
+        (split_ == KdSplit::Sah ? sah_split(box, list, axis, split) : median_split(box, list, axis, split));
     std::vector<uint32_t> below, above;
     if (divide)
       for (uint32_t i : list) {

@@ -50,7 +50,9 @@ LbvhTree build_lbvh_tree(const LbvhInput& in, ParallelFor parallel_for) {
   std::vector<LbvhInner> inner(n - 1);
   std::vector<uint32_t> parent(2 * size_t(n) - 1), visits(n - 1, 0u);
   std::vector<LbvhBox> boxes(n - 1);
-  parallel_for(n - 1, [&](size_t i) { lbvh_radix_node(sorted_key.data(), n, static_cast<int>(i), inner.data(), parent.data()); });
+  parallel_for(n - 1, [&](size_t i) {
+    lbvh_radix_node(sorted_key.data(), n, static_cast<int>(i), inner.data(), parent.data());
+  });
   parallel_for(n, [&](size_t leaf) {
     lbvh_climb(static_cast<int>(leaf), n, inner.data(), parent.data(), leaf_boxes.data(), boxes.data(), visits.data());
   });

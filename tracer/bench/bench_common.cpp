@@ -63,18 +63,20 @@ Image reference_image(const std::string& scene_path, RenderOverrides overrides, 
     Image ref = read_image(ref_file);
     if (ref.width != probe.settings.width || ref.height != probe.settings.height)
       throw InputError(ref_file + ": the reference is " + std::to_string(ref.width) + "x" + std::to_string(ref.height) +
-                       ", the renders " + std::to_string(probe.settings.width) + "x" + std::to_string(probe.settings.height));
+                       ", the renders " + std::to_string(probe.settings.width) + "x" +
+                       std::to_string(probe.settings.height));
     std::printf("reference: %s\n", ref_file.c_str());
     return ref;
   }
   overrides.spp = ref_spp;
   overrides.seed = probe.settings.seed + kReferenceSeedOffset;
-  if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) overrides.sampler = SamplerKind::Stochastic;
+  if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid)
+    overrides.sampler = SamplerKind::Stochastic;
   const TimedRender r = timed_render(load_scene(scene_path, overrides), threads);
   const std::string path = (std::filesystem::path(bench_reference_dir()) / save_as).string();
   write_image(r.image, path);
-  std::printf("reference: %u spp, %.2f s, saved as %s (give --ref %s to reuse it)\n", ref_spp, r.seconds,
-              path.c_str(), path.c_str());
+  std::printf("reference: %u spp, %.2f s, saved as %s (give --ref %s to reuse it)\n", ref_spp, r.seconds, path.c_str(),
+              path.c_str());
   return r.image;
 }
 

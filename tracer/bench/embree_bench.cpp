@@ -59,8 +59,10 @@ EmbreeRow embree_bench(const Scene& scene, const std::vector<Ray>& primary, cons
   rtcSetDeviceMemoryMonitorFunction(device, monitor, nullptr);
   RTCScene rtc = rtcNewScene(device);
   RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, 3 * ids.size()));
-  auto* index = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, ids.size()));
+  auto* v = static_cast<float*>(
+      rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, 3 * ids.size()));
+  auto* index =
+      static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, ids.size()));
   for (size_t t = 0; t < ids.size(); ++t) {
     const Primitive& p = scene.primitives[ids[t]];
     const Vec3 corners[3] = {p.a, p.b, p.c};

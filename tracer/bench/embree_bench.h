@@ -12,9 +12,9 @@ namespace tracer {
 
 struct EmbreeRow {
   double build_seconds = 0;
-  double megabytes = 0;              // peak bytes Embree reported through its memory monitor
+  double megabytes = 0;                            // peak bytes Embree reported through its memory monitor
   double primary = 0, incoherent = 0, shadow = 0;  // Mrays/s
-  double same_primitive = 0;         // fraction of closest hits on the primitive ours found
+  double same_primitive = 0;                       // fraction of closest hits on the primitive ours found
 };
 
 bool embree_available();

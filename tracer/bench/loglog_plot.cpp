@@ -15,7 +15,8 @@ namespace {
 
 constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 constexpr int kWidth = 800, kHeight = 560, kLeft = 90, kRight = 30, kTop = 50, kBottom = 70;
-const float kColours[][3] = {{0.12f, 0.47f, 0.71f}, {0.84f, 0.15f, 0.16f}, {0.17f, 0.63f, 0.17f}, {0.58f, 0.40f, 0.74f}};
+const float kColours[][3] = {
+    {0.12f, 0.47f, 0.71f}, {0.84f, 0.15f, 0.16f}, {0.17f, 0.63f, 0.17f}, {0.58f, 0.40f, 0.74f}};
 
 struct Axis {
   double lo, hi;  // decades, log10
@@ -36,12 +37,14 @@ std::string decade_label(double exponent) {
 
 void write_loglog_plot(const std::string& path, const PlotLabels& labels, const std::vector<PlotSeries>& series) {
   namespace IBA = OIIO::ImageBufAlgo;
-  if (!std::filesystem::exists(kFont)) throw InputError(std::string(kFont) + ": font not found (install fonts-dejavu-core)");
+  if (!std::filesystem::exists(kFont))
+    throw InputError(std::string(kFont) + ": font not found (install fonts-dejavu-core)");
   double xmin = INFINITY, xmax = 0, ymin = INFINITY, ymax = 0;
   for (const PlotSeries& s : series)
     for (size_t i = 0; i < s.x.size(); ++i)
       if (s.x[i] > 0 && s.y[i] > 0)
-        xmin = std::min(xmin, s.x[i]), xmax = std::max(xmax, s.x[i]), ymin = std::min(ymin, s.y[i]), ymax = std::max(ymax, s.y[i]);
+        xmin = std::min(xmin, s.x[i]), xmax = std::max(xmax, s.x[i]), ymin = std::min(ymin, s.y[i]),
+        ymax = std::max(ymax, s.y[i]);
   if (!(xmax > 0)) throw InputError(path + ": nothing positive to plot");
   const Axis ax = Axis::around(xmin, xmax), ay = Axis::around(ymin, ymax);
   const int plot_w = kWidth - kLeft - kRight, plot_h = kHeight - kTop - kBottom;
@@ -79,7 +82,8 @@ void write_loglog_plot(const std::string& path, const PlotLabels& labels, const 
     IBA::render_text(img, kLeft + plot_w - 180, ly + 4, s.label, 14, kFont, ink);
   }
   const std::filesystem::path target(path);
-  const std::filesystem::path temp = target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()) + ".png");
+  const std::filesystem::path temp =
+      target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()) + ".png");
   if (!img.write(temp.string(), OIIO::TypeDesc::UINT8, "png")) {
     std::error_code ec;
     std::filesystem::remove(temp, ec);

@@ -6,8 +6,8 @@
 #include <unordered_map>
 
 #include "io/input_error.h"
-#include "kernel/base/detmath.h"
 #include "io/text_file.h"
+#include "kernel/base/detmath.h"
 
 namespace tracer {
 namespace {
@@ -58,9 +58,11 @@ void terrain(std::vector<MeshTriangle>& out, uint32_t triangles) {
 }
 
 void sphere(std::vector<MeshTriangle>& out, uint32_t triangles, Vec3 centre, float radius) {
-  const uint32_t stacks = std::max(3u, static_cast<uint32_t>(std::lround(std::sqrt(triangles / 4.0)))), slices = 2 * stacks;
+  const uint32_t stacks = std::max(3u, static_cast<uint32_t>(std::lround(std::sqrt(triangles / 4.0)))),
+                 slices = 2 * stacks;
   const auto at = [&](uint32_t i, uint32_t j) {
-    const float theta = kPi * static_cast<float>(j) / stacks, phi = 2.0f * kPi * static_cast<float>(i % slices) / slices;
+    const float theta = kPi * static_cast<float>(j) / stacks,
+                phi = 2.0f * kPi * static_cast<float>(i % slices) / slices;
     const Vec3 d = {det_sin(theta) * det_cos(phi), det_cos(theta), det_sin(theta) * det_sin(phi)};
     const float r = radius * (1.0f + 0.15f * sine_sum(2.0f * phi, 3.0f * theta));
     return centre + d * r;
@@ -86,11 +88,11 @@ void cubes(std::vector<MeshTriangle>& out, uint32_t count) {
 // midpoint from the same two points (a + b is symmetric), so shared vertices are identical.
 void icosphere(std::vector<MeshTriangle>& out, uint32_t triangles) {
   const float g = 1.6180339887f;  // the golden ratio
-  const Vec3 v[12] = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-  const int f[20][3] = {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                        {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
-                        {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  const Vec3 v[12] = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                      {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+  const int f[20][3] = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                        {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                        {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   std::vector<MeshTriangle> mesh;
   for (const auto& t : f) mesh.push_back(triangle(normalize(v[t[0]]), normalize(v[t[1]]), normalize(v[t[2]])));
   while (mesh.size() * 4 <= triangles) {
@@ -123,8 +125,10 @@ void grid_cube(std::vector<MeshTriangle>& out, uint32_t triangles) {
       };
       for (uint32_t j = 0; j < n; ++j)
         for (uint32_t i = 0; i < n; ++i) {
-          if (side > 0) quad(out, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-          else quad(out, at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j));  // outward winding
+          if (side > 0)
+            quad(out, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+          else
+            quad(out, at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j));  // outward winding
         }
     }
 }

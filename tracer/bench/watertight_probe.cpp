@@ -5,8 +5,8 @@
 #include <chrono>
 #include <filesystem>
 #include <map>
-#include <tuple>
 #include <nlohmann/json.hpp>
+#include <tuple>
 #include <utility>
 
 #include "accel/bounds.h"
@@ -48,7 +48,8 @@ int crossings(const Scene& mesh, const Ray& ray) {
   int n = 0;
   for (const Primitive& p : mesh.primitives) {
     float t, b0, b1, b2;
-    if (p.kind == ShapeKind::Triangle && intersect_triangle(p.a, p.b, p.c, ray, shear, 0.0f, kInfinity, t, b0, b1, b2)) ++n;
+    if (p.kind == ShapeKind::Triangle && intersect_triangle(p.a, p.b, p.c, ray, shear, 0.0f, kInfinity, t, b0, b1, b2))
+      ++n;
   }
   return n;
 }
@@ -61,7 +62,8 @@ Scene load_probe_mesh(const std::string& obj_path, TriangleTest triangle_test) {
   const std::filesystem::path p = std::filesystem::absolute(obj_path);
   const std::string json = R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 1], "to": [0, 0, 0], "vfov": 45},
     "film": {"width": 1, "height": 1}, "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
-    "shapes": [{"type": "mesh", "file": )" + nlohmann::json(p.filename().string()).dump() + R"(, "material": "m"}]})";
+    "shapes": [{"type": "mesh", "file": )" +
+                           nlohmann::json(p.filename().string()).dump() + R"(, "material": "m"}]})";
   return load_scene_text(json, (p.parent_path() / "watertight-probe.json").string(), ov);
 }
 
@@ -74,7 +76,8 @@ std::vector<Vec3> inside_points(const Scene& mesh) {
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         const Vec3 o = centre + Vec3{step.x * dx, step.y * dy, step.z * dz};
-        const Vec3 axes[3] = {normalize(Vec3{1, 0.01f, 0.02f}), normalize(Vec3{0.02f, 1, 0.01f}), normalize(Vec3{0.01f, 0.02f, 1})};
+        const Vec3 axes[3] = {normalize(Vec3{1, 0.01f, 0.02f}), normalize(Vec3{0.02f, 1, 0.01f}),
+                              normalize(Vec3{0.01f, 0.02f, 1})};
         bool odd = true;
         for (const Vec3& d : axes) odd = odd && crossings(mesh, {o, d}) % 2 == 1 && crossings(mesh, {o, -d}) % 2 == 1;
         if (odd) inside.push_back(o);
@@ -83,7 +86,8 @@ std::vector<Vec3> inside_points(const Scene& mesh) {
   return inside;
 }
 
-WatertightProbe probe_watertight(const Scene& mesh, const std::vector<Vec3>& origins, uint32_t edge_points, int threads) {
+WatertightProbe probe_watertight(const Scene& mesh, const std::vector<Vec3>& origins, uint32_t edge_points,
+                                 int threads) {
   const MeshTopology topo = topology(mesh);
   WatertightProbe r;
   for (const auto& [edge, count] : topo.edges) r.open_edges += count != 2;

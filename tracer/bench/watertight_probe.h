@@ -13,7 +13,7 @@ namespace tracer {
 
 struct WatertightProbe {
   uint64_t rays = 0;
-  uint64_t escapes = 0;  // rays that hit nothing
+  uint64_t escapes = 0;     // rays that hit nothing
   uint32_t open_edges = 0;  // edges not shared by exactly two triangles: 0 for a closed mesh
   double seconds = 0.0;     // tracing only
 };
@@ -29,6 +29,7 @@ std::vector<Vec3> inside_points(const Scene& mesh);
 
 // Every origin to every vertex and to `edge_points` evenly spaced points of every edge
 // (ends excluded).
-WatertightProbe probe_watertight(const Scene& mesh, const std::vector<Vec3>& origins, uint32_t edge_points, int threads);
+WatertightProbe probe_watertight(const Scene& mesh, const std::vector<Vec3>& origins, uint32_t edge_points,
+                                 int threads);
 
 }  // namespace tracer

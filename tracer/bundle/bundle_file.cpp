@@ -1,7 +1,7 @@
 #include "bundle_file.h"
 
-#include "sha1.h"
 #include "io/text_file.h"
+#include "sha1.h"
 
 namespace tracer {
 namespace {
@@ -83,7 +83,9 @@ std::string encode_bundle(const BundleFile& bundle) {
   return out;
 }
 
-void write_bundle(const std::string& path, const BundleFile& bundle) { write_text_atomically(path, encode_bundle(bundle)); }
+void write_bundle(const std::string& path, const BundleFile& bundle) {
+  write_text_atomically(path, encode_bundle(bundle));
+}
 
 BundleFile read_bundle(const std::string& path, const std::string& expected_kind) {
   return decode_bundle(read_text_file(path, "bundle", kBundleMaxBytes), path, expected_kind);
@@ -119,7 +121,8 @@ BundleFile decode_bundle(const std::string& bytes, const std::string& path, cons
     s.element_size = c.take<uint32_t>("element size");
     const uint64_t elements = c.take<uint64_t>("element count");
     if (s.element_size == 0 && elements != 0) c.fail("section " + s.name + " has elements of 0 bytes");
-    if (s.element_size != 0 && elements > (end - c.at) / s.element_size) c.fail("section " + s.name + " runs past the end");
+    if (s.element_size != 0 && elements > (end - c.at) / s.element_size)
+      c.fail("section " + s.name + " runs past the end");
     const size_t n = static_cast<size_t>(elements * s.element_size);
     s.bytes = bytes.substr(c.at, n);
     c.at += n;

@@ -34,7 +34,9 @@ struct BundleFile {
     sections.push_back(std::move(s));
   }
   template <class T>
-  void add_one(const std::string& name, const T& value) { add(name, std::vector<T>{value}); }
+  void add_one(const std::string& name, const T& value) {
+    add(name, std::vector<T>{value});
+  }
 
   // The section's elements; InputError naming `file` and the section when it is missing or
   // its element size is not sizeof(T) (a bundle from a build with another layout).
@@ -51,7 +53,8 @@ struct BundleFile {
   template <class T>
   T get_one(const std::string& name, const std::string& file) const {
     const std::vector<T> v = get<T>(name, file);
-    if (v.size() != 1) throw InputError(file + ": section " + name + " should hold one element, holds " + std::to_string(v.size()));
+    if (v.size() != 1)
+      throw InputError(file + ": section " + name + " should hold one element, holds " + std::to_string(v.size()));
     return v[0];
   }
   bool has(const std::string& name) const;

@@ -14,7 +14,8 @@ SceneView without_pointers(SceneView view) {
 
 }  // namespace
 
-SceneBundle make_scene_bundle(const SceneArrays& arrays, const SceneView& view, SampleRange range, const std::string& source) {
+SceneBundle make_scene_bundle(const SceneArrays& arrays, const SceneView& view, SampleRange range,
+                              const std::string& source) {
   return {arrays, without_pointers(view), range, source};
 }
 

@@ -26,7 +26,8 @@ struct SceneBundle {
   }
 };
 
-SceneBundle make_scene_bundle(const SceneArrays& arrays, const SceneView& view, SampleRange range, const std::string& source);
+SceneBundle make_scene_bundle(const SceneArrays& arrays, const SceneView& view, SampleRange range,
+                              const std::string& source);
 BundleFile encode_scene_bundle(const SceneBundle& bundle);
 // InputError naming `path`: a missing section, another build's layout, an empty or
 // oversized image, a sample range outside [0, spp).

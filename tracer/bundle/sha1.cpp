@@ -22,10 +22,14 @@ void Sha1::compress(const unsigned char block[64]) {
   uint32_t a = h_[0], b = h_[1], c = h_[2], d = h_[3], e = h_[4];
   for (int t = 0; t < 80; ++t) {
     uint32_t f, k;
-    if (t < 20) f = (b & c) | (~b & d), k = 0x5A827999u;
-    else if (t < 40) f = b ^ c ^ d, k = 0x6ED9EBA1u;
-    else if (t < 60) f = (b & c) | (b & d) | (c & d), k = 0x8F1BBCDCu;
-    else f = b ^ c ^ d, k = 0xCA62C1D6u;
+    if (t < 20)
+      f = (b & c) | (~b & d), k = 0x5A827999u;
+    else if (t < 40)
+      f = b ^ c ^ d, k = 0x6ED9EBA1u;
+    else if (t < 60)
+      f = (b & c) | (b & d) | (c & d), k = 0x8F1BBCDCu;
+    else
+      f = b ^ c ^ d, k = 0xCA62C1D6u;
     const uint32_t temp = rotl(a, 5) + f + e + k + w[t];
     e = d, d = c, c = rotl(b, 30), b = a, a = temp;
   }

@@ -7,10 +7,10 @@
 #include <fstream>
 
 #include "bench/bench_common.h"
+#include "bench/loglog_plot.h"
 #include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "io/input_error.h"
-#include "bench/loglog_plot.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
@@ -38,7 +38,8 @@ double seconds_to_reach(const std::vector<Point>& series, double ImageError::*me
     const double a = series[i - 1].error.*metric, b = series[i].error.*metric;
     if (b <= target && a >= target) {
       const double f = (std::log(target) - std::log(a)) / (std::log(b) - std::log(a));
-      return std::exp(std::log(series[i - 1].seconds) + f * (std::log(series[i].seconds) - std::log(series[i - 1].seconds)));
+      return std::exp(std::log(series[i - 1].seconds) +
+                      f * (std::log(series[i].seconds) - std::log(series[i - 1].seconds)));
     }
   }
   extrapolated = true;
@@ -72,8 +73,11 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
 
   const bool nee = probe.settings.nee == Switch::On;
   std::vector<std::pair<std::string, Switch>> series_setups;
-  if (cmd.nee == "both") series_setups = {{"NEE+MIS", Switch::On}, {"plain", Switch::Off}};
-  else series_setups = {{probe.settings.integrator == IntegratorKind::Path ? (nee ? "NEE+MIS" : "plain") : "render", probe.settings.nee}};
+  if (cmd.nee == "both")
+    series_setups = {{"NEE+MIS", Switch::On}, {"plain", Switch::Off}};
+  else
+    series_setups = {{probe.settings.integrator == IntegratorKind::Path ? (nee ? "NEE+MIS" : "plain") : "render",
+                      probe.settings.nee}};
 
   std::ofstream out(csv);
   if (!out) throw InputError(csv + ": cannot write");
@@ -93,8 +97,10 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
       results.back().push_back({spp, r.seconds, e});
       line.x.push_back(r.seconds);
       line.y.push_back(e.rmse);
-      std::printf("%-10s %8u %10.3f %12.6g %13.6g %12.6g\n", label.c_str(), spp, r.seconds, e.rmse, e.display_rmse, e.rel_mse);
-      out << label << "," << spp << "," << r.seconds << "," << e.rmse << "," << e.display_rmse << "," << e.rel_mse << "\n";
+      std::printf("%-10s %8u %10.3f %12.6g %13.6g %12.6g\n", label.c_str(), spp, r.seconds, e.rmse, e.display_rmse,
+                  e.rel_mse);
+      out << label << "," << spp << "," << r.seconds << "," << e.rmse << "," << e.display_rmse << "," << e.rel_mse
+          << "\n";
     }
     lines.push_back(line);
   }
@@ -107,13 +113,16 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
       const char* name;
       double ImageError::*metric;
       double power;
-    } metrics[] = {{"RMSE", &ImageError::rmse, 1}, {"display RMSE", &ImageError::display_rmse, 1}, {"relMSE", &ImageError::rel_mse, 2}};
+    } metrics[] = {{"RMSE", &ImageError::rmse, 1},
+                   {"display RMSE", &ImageError::display_rmse, 1},
+                   {"relMSE", &ImageError::rel_mse, 2}};
     for (const auto& m : metrics) {
       bool extrapolated = false;
       const double target = plain.error.*m.metric;
       const double t = seconds_to_reach(results[0], m.metric, m.power, target, extrapolated);
       std::printf("NEE+MIS reaches the plain estimator's %s at %u spp (%.6g, %.3f s) in %.3f s%s: %.1fx less time\n",
-                  m.name, plain.spp, target, plain.seconds, t, extrapolated ? " (extrapolated)" : "", plain.seconds / t);
+                  m.name, plain.spp, target, plain.seconds, t, extrapolated ? " (extrapolated)" : "",
+                  plain.seconds / t);
     }
   }
   std::printf("wrote %s and %s\n", std::filesystem::absolute(csv).string().c_str(),
@@ -121,18 +130,19 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
   return 0;
 }
 
-const RegisterCommand kBenchConvergeCommand({"bench", "converge", "RMSE and relMSE against time as spp grows; CSV and a log-log plot",
-                                             [](CLI::App& app) {
-  auto cmd = std::make_shared<BenchConvergeCommand>();
-  app.add_option("scene", cmd->scene, "scene file (JSON)")->required();
-  app.add_option("--spp", cmd->spp, "comma-separated sample counts (default 1,4,16,64,256)");
-  app.add_option("--nee", cmd->nee, "scene (default), on, off, or both: NEE+MIS and the plain estimator side by side");
-  app.add_option("--ref", cmd->ref, "reference image (EXR); default: render one at --ref-spp");
-  app.add_option("--ref-spp", cmd->ref_spp, "reference samples per pixel (default 8 x the largest --spp)");
-  app.add_option("--csv", cmd->csv, "table output (default SCENE-converge.csv)");
-  app.add_option("--plot", cmd->plot, "log-log plot of RMSE against seconds (default SCENE-converge.png)");
-  add_bench_size_options(app, cmd->width, cmd->height, cmd->threads);
-  return [cmd] { return run_bench_converge(*cmd); };
-}});
+const RegisterCommand kBenchConvergeCommand(
+    {"bench", "converge", "RMSE and relMSE against time as spp grows; CSV and a log-log plot", [](CLI::App& app) {
+       auto cmd = std::make_shared<BenchConvergeCommand>();
+       app.add_option("scene", cmd->scene, "scene file (JSON)")->required();
+       app.add_option("--spp", cmd->spp, "comma-separated sample counts (default 1,4,16,64,256)");
+       app.add_option("--nee", cmd->nee,
+                      "scene (default), on, off, or both: NEE+MIS and the plain estimator side by side");
+       app.add_option("--ref", cmd->ref, "reference image (EXR); default: render one at --ref-spp");
+       app.add_option("--ref-spp", cmd->ref_spp, "reference samples per pixel (default 8 x the largest --spp)");
+       app.add_option("--csv", cmd->csv, "table output (default SCENE-converge.csv)");
+       app.add_option("--plot", cmd->plot, "log-log plot of RMSE against seconds (default SCENE-converge.png)");
+       add_bench_size_options(app, cmd->width, cmd->height, cmd->threads);
+       return [cmd] { return run_bench_converge(*cmd); };
+     }});
 
 }  // namespace tracer

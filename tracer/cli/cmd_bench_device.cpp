@@ -1,16 +1,16 @@
 // `tracer bench device`: frames per second and Mrays/s of the Whitted renderer on the CPU
 // or the GPU, as the tables of the CUDA Whitted reference design (effects and resolution),
 // with the CPU measured in the same run as the baseline for the GPU's speed-up.
+#include <omp.h>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <omp.h>
 
 #include "cli/command_registry.h"
 #include "cli/commands.h"
-#include "options/effects.h"
 #include "io/input_error.h"
+#include "options/effects.h"
 #include "render/render_cpu.h"
 #include "render/render_cuda.h"
 #include "scene/scene_loader.h"
@@ -57,7 +57,9 @@ struct SamplerSetup {
   SamplerKind sampler;
   uint32_t spp;
 };
-constexpr SamplerSetup kSamplers[] = {{"1 spp center", SamplerKind::Center, 1}, {"2 spp stochastic", SamplerKind::Stochastic, 2}, {"4 spp grid", SamplerKind::Grid, 4}};
+constexpr SamplerSetup kSamplers[] = {{"1 spp center", SamplerKind::Center, 1},
+                                      {"2 spp stochastic", SamplerKind::Stochastic, 2},
+                                      {"4 spp grid", SamplerKind::Grid, 4}};
 
 Scene load_at(const std::string& path, uint32_t width, uint32_t height, const SamplerSetup& s, Effects effects) {
   RenderOverrides ov;
@@ -101,7 +103,8 @@ std::string largest_mesh_scene(const std::string& dir, uint64_t& triangles) {
 }  // namespace
 
 static int run_bench_device(const BenchDeviceCommand& cmd) {
-  if (cmd.device != "cpu" && cmd.device != "cuda") throw InputError("--device " + cmd.device + ": expected cpu or cuda");
+  if (cmd.device != "cpu" && cmd.device != "cuda")
+    throw InputError("--device " + cmd.device + ": expected cpu or cuda");
   if (cmd.frames < 1) throw InputError("--frames: must be at least 1");
   const bool cuda = cmd.device == "cuda";
   const std::string cornell = (std::filesystem::path(cmd.scenes) / "cornell-box.json").string();
@@ -114,8 +117,8 @@ static int run_bench_device(const BenchDeviceCommand& cmd) {
   uint64_t triangles = 0;
   const std::string mesh = largest_mesh_scene(cmd.scenes, triangles);
   std::printf("Whitted, all effects, 720x480%s\n", cuda ? "; speed-up against the CPU in this run" : "");
-  std::printf("%-44s %-18s %12s %10s %10s %10s%s\n", "scene", "samples", "s/frame", "frames/s", "Mrays/s", "Mrays/frame",
-              cuda ? "   CPU s/frame  speed-up" : "");
+  std::printf("%-44s %-18s %12s %10s %10s %10s%s\n", "scene", "samples", "s/frame", "frames/s", "Mrays/s",
+              "Mrays/frame", cuda ? "   CPU s/frame  speed-up" : "");
   for (const std::string& path : {cornell, mesh}) {
     for (const SamplerSetup& s : {kSamplers[0], kSamplers[2]}) {
       const Scene scene = load_at(path, 720, 480, s, kEffectAll);
@@ -150,20 +153,22 @@ static int run_bench_device(const BenchDeviceCommand& cmd) {
   for (const auto& size : sizes) {
     std::printf("%-12s", (std::to_string(size[0]) + "x" + std::to_string(size[1])).c_str());
     for (const SamplerSetup& s : kSamplers)
-      std::printf(" %18.1f", time_frames(load_at(cornell, size[0], size[1], s, kEffectAll), cuda, cmd.frames, threads).fps());
+      std::printf(" %18.1f",
+                  time_frames(load_at(cornell, size[0], size[1], s, kEffectAll), cuda, cmd.frames, threads).fps());
     std::printf("\n");
   }
   return 0;
 }
 
-const RegisterCommand kBenchDeviceCommand({"bench", "device", "Whitted frames/s and Mrays/s on a device: per effect, per resolution",
-                                           [](CLI::App& app) {
-  auto cmd = std::make_shared<BenchDeviceCommand>();
-  app.add_option("--device", cmd->device, "cuda (default; the CPU is timed too, as the baseline) or cpu");
-  app.add_option("--frames", cmd->frames, "frames per measurement; the median is reported (default 5)");
-  app.add_option("--scenes", cmd->scenes, "scene directory: cornell-box.json and the mesh scenes (default scenes)");
-  add_threads_option(app, cmd->threads);
-  return [cmd] { return run_bench_device(*cmd); };
-}});
+const RegisterCommand kBenchDeviceCommand(
+    {"bench", "device", "Whitted frames/s and Mrays/s on a device: per effect, per resolution", [](CLI::App& app) {
+       auto cmd = std::make_shared<BenchDeviceCommand>();
+       app.add_option("--device", cmd->device, "cuda (default; the CPU is timed too, as the baseline) or cpu");
+       app.add_option("--frames", cmd->frames, "frames per measurement; the median is reported (default 5)");
+       app.add_option("--scenes", cmd->scenes,
+                      "scene directory: cornell-box.json and the mesh scenes (default scenes)");
+       add_threads_option(app, cmd->threads);
+       return [cmd] { return run_bench_device(*cmd); };
+     }});
 
 }  // namespace tracer

@@ -13,18 +13,18 @@
 
 #include "accel/acceleration.h"
 #include "accel/bounds.h"
-#include "scene/camera_setup.h"
+#include "bench/embree_bench.h"
+#include "bench/mesh_generators.h"
 #include "cli/command_registry.h"
 #include "cli/commands.h"
-#include "options/enum_names.h"
-#include "bench/embree_bench.h"
 #include "io/input_error.h"
 #include "io/json_reader.h"
 #include "kernel/base/philox.h"
 #include "kernel/geom/ray_offset.h"
 #include "kernel/shading/sampling.h"
 #include "kernel/shading/surface.h"
-#include "bench/mesh_generators.h"
+#include "options/enum_names.h"
+#include "scene/camera_setup.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_types.h"
 
@@ -55,7 +55,8 @@ Scene load_bench_scene(const std::string& path, AccelKind accel, uint32_t grid_r
   if (p.extension() != ".obj") return load_scene(path, ov);
   const std::string json = R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 1], "to": [0, 0, 0], "vfov": 45},
     "film": {"width": 512, "height": 512}, "materials": {"m": {"type": "lambert", "albedo": [0.7, 0.7, 0.7]}},
-    "shapes": [{"type": "mesh", "file": )" + Json(p.filename().string()).dump() + R"(, "material": "m"}]})";
+    "shapes": [{"type": "mesh", "file": )" +
+                           Json(p.filename().string()).dump() + R"(, "material": "m"}]})";
   Scene scene = load_scene_text(json, (p.parent_path() / "bench-rays.json").string(), ov);
   Bounds b;
   for (const Primitive& prim : scene.primitives) b.grow(primitive_bounds(prim));
@@ -82,7 +83,8 @@ RaySets make_rays(const Scene& scene, uint32_t incoherent) {
   for (uint32_t i = 0; i < incoherent; ++i) {
     float u[6];
     for (uint32_t d = 0; d < 3; ++d) sample_uniform2(0x5EEDu, i, 0, d, u[2 * d], u[2 * d + 1]);
-    const Vec3 o = {b.lo.x + u[0] * (b.hi.x - b.lo.x), b.lo.y + u[1] * (b.hi.y - b.lo.y), b.lo.z + u[2] * (b.hi.z - b.lo.z)};
+    const Vec3 o = {b.lo.x + u[0] * (b.hi.x - b.lo.x), b.lo.y + u[1] * (b.hi.y - b.lo.y),
+                    b.lo.z + u[2] * (b.hi.z - b.lo.z)};
     r.incoherent.push_back({o, direction_from(1.0f - 2.0f * u[3], u[4])});
   }
   return r;
@@ -99,7 +101,6 @@ double throughput(size_t n, int threads, const std::function<void(size_t)>& quer
 
 uint64_t mix(uint64_t h, uint64_t v) { return (h ^ v) * 0x100000001B3ull; }
 
-
 }  // namespace
 
 static int run_bench_rays(const BenchRaysCommand& cmd) {
@@ -113,8 +114,8 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
   }
   std::printf("tracer bench rays %s: %d threads; primary: %ux%u pinhole, incoherent: %u rays, shadow: any-hit\n",
               cmd.scene.c_str(), threads, kCamera, kCamera, cmd.incoherent);
-  std::printf("%-14s %10s %10s %10s | %10s %10s %10s | %s\n", "accel", "build s", "MB", "nodes", "primary", "incoherent",
-              "shadow", "hits (checksum)");
+  std::printf("%-14s %10s %10s %10s | %10s %10s %10s | %s\n", "accel", "build s", "MB", "nodes", "primary",
+              "incoherent", "shadow", "hits (checksum)");
   RaySets rays;
   uint64_t reference = 0;
   std::vector<Hit> reference_primary, reference_incoherent;
@@ -127,10 +128,13 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     }
     const SceneView view = scene.view();
     std::vector<Hit> primary(rays.primary.size()), incoherent(rays.incoherent.size());
-    const double mp = throughput(primary.size(), threads, [&](size_t i) { primary[i] = trace_closest(view, rays.primary[i], kInfinity); });
-    const double mi = throughput(incoherent.size(), threads, [&](size_t i) { incoherent[i] = trace_closest(view, rays.incoherent[i], kInfinity); });
+    const double mp = throughput(primary.size(), threads,
+                                 [&](size_t i) { primary[i] = trace_closest(view, rays.primary[i], kInfinity); });
+    const double mi = throughput(incoherent.size(), threads,
+                                 [&](size_t i) { incoherent[i] = trace_closest(view, rays.incoherent[i], kInfinity); });
     if (rays.shadow.empty()) {  // from each primary hit toward a point above the scene, once for all structures
-      const Vec3 light = scene.camera.origin + Vec3{0.0f, length(scene.camera.origin - scene.camera.focal_top_left), 0.0f};
+      const Vec3 light =
+          scene.camera.origin + Vec3{0.0f, length(scene.camera.origin - scene.camera.focal_top_left), 0.0f};
       for (size_t i = 0; i < primary.size(); ++i) {
         if (primary[i].prim == kNoHit) continue;
         const Surface s = surface_at(view, rays.primary[i], primary[i]);
@@ -152,20 +156,24 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
       for (const Hit& h : *hits) sum = mix(mix(sum, h.prim), bits_of(h.t));
     for (uint8_t o : occluded) sum = mix(sum, o);
     if (reference == 0) reference = sum;
-    std::printf("%-14s %10.3f %10.1f %10zu | %10.2f %10.2f %10.2f | %016llx %s\n", enum_name(accel), scene.report.build_seconds,
-                scene.report.accel_bytes / 1048576.0, scene.report.accel.nodes + scene.report.accel.cells, mp, mi, ms, static_cast<unsigned long long>(sum),
+    std::printf("%-14s %10.3f %10.1f %10zu | %10.2f %10.2f %10.2f | %016llx %s\n", enum_name(accel),
+                scene.report.build_seconds, scene.report.accel_bytes / 1048576.0,
+                scene.report.accel.nodes + scene.report.accel.cells, mp, mi, ms, static_cast<unsigned long long>(sum),
                 sum == reference ? "same" : "DIFFERENT");
-    if (sum != reference) throw std::runtime_error(std::string(enum_name(accel)) + ": hits differ from " + enum_name(accels[0]) + "'s (DESIGN.md rule 4)");
+    if (sum != reference)
+      throw std::runtime_error(std::string(enum_name(accel)) + ": hits differ from " + enum_name(accels[0]) +
+                               "'s (DESIGN.md rule 4)");
   }
   if (embree_available()) {
     const Scene scene = load_bench_scene(cmd.scene, AccelKind::None, 0);
     const EmbreeRow e = embree_bench(scene, rays.primary, rays.incoherent, rays.shadow, rays.shadow_tmax,
                                      reference_primary, reference_incoherent, threads);
     std::printf("%-14s %10.3f %10.1f %10s | %10.2f %10.2f %10.2f | %.4f%% of closest hits on the same primitive\n",
-                "embree 3", e.build_seconds, e.megabytes, "-", e.primary, e.incoherent, e.shadow, 100.0 * e.same_primitive);
+                "embree 3", e.build_seconds, e.megabytes, "-", e.primary, e.incoherent, e.shadow,
+                100.0 * e.same_primitive);
     if (bvh_rates[0] > 0)
-      std::printf("%-14s %10s %10s %10s | %10.2f %10.2f %10.2f |\n", "bvh / embree", "", "", "", bvh_rates[0] / e.primary,
-                  bvh_rates[1] / e.incoherent, bvh_rates[2] / e.shadow);
+      std::printf("%-14s %10s %10s %10s | %10.2f %10.2f %10.2f |\n", "bvh / embree", "", "", "",
+                  bvh_rates[0] / e.primary, bvh_rates[1] / e.incoherent, bvh_rates[2] / e.shadow);
   } else {
     std::printf("(no Embree row: this build has no Embree adapter; install libembree-dev and reconfigure)\n");
   }
@@ -173,15 +181,16 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
   return 0;
 }
 
-const RegisterCommand kBenchRaysCommand({"bench", "rays", "build time, memory and Mrays/s of each acceleration structure",
-                                         [](CLI::App& app) {
-  auto cmd = std::make_shared<BenchRaysCommand>();
-  app.add_option("scene", cmd->scene, "scene file (JSON) or OBJ mesh")->required();
-  app.add_option("--accel", cmd->accel, "comma-separated structures (default bvh,lbvh,kdtree,kdtree-median,grid)");
-  app.add_option("--rays", cmd->incoherent, "incoherent rays (default 2^22)");
-  app.add_option("--grid-resolution", cmd->grid_resolution, "grid cells along the longest axis (default: by density)");
-  add_threads_option(app, cmd->threads);
-  return [cmd] { return run_bench_rays(*cmd); };
-}});
+const RegisterCommand kBenchRaysCommand(
+    {"bench", "rays", "build time, memory and Mrays/s of each acceleration structure", [](CLI::App& app) {
+       auto cmd = std::make_shared<BenchRaysCommand>();
+       app.add_option("scene", cmd->scene, "scene file (JSON) or OBJ mesh")->required();
+       app.add_option("--accel", cmd->accel, "comma-separated structures (default bvh,lbvh,kdtree,kdtree-median,grid)");
+       app.add_option("--rays", cmd->incoherent, "incoherent rays (default 2^22)");
+       app.add_option("--grid-resolution", cmd->grid_resolution,
+                      "grid cells along the longest axis (default: by density)");
+       add_threads_option(app, cmd->threads);
+       return [cmd] { return run_bench_rays(*cmd); };
+     }});
 
 }  // namespace tracer

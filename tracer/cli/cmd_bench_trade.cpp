@@ -1,8 +1,8 @@
 // `tracer bench trade SCENE`: for each knob of the path integrator (NEE, sampler, Fresnel
-// model, Russian roulette depth, max_depth, sky sampling under a cube-map sky, triangle test), the time and the error of a render at a fixed
-// sample budget, and the error of a render given the baseline's time (its spp scaled by
-// the measured speed). Error is against one reference made with the scene's own settings,
-// so a knob that changes the expected image (max_depth, Fresnel) shows its bias too.
+// model, Russian roulette depth, max_depth, sky sampling under a cube-map sky, triangle test), the time and the error
+// of a render at a fixed sample budget, and the error of a render given the baseline's time (its spp scaled by the
+// measured speed). Error is against one reference made with the scene's own settings, so a knob that changes the
+// expected image (max_depth, Fresnel) shows its bias too.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -54,10 +54,13 @@ std::vector<Knob> knobs(bool cubemap_sky) {
   k.push_back({"sampler", "stratified", with([](RenderOverrides& o) { o.sampler = SamplerKind::Stratified; }), true});
   k.push_back({"fresnel", "schlick", with([](RenderOverrides& o) { o.fresnel = FresnelKind::Schlick; }), false});
   k.push_back({"fresnel", "exact", with([](RenderOverrides& o) { o.fresnel = FresnelKind::Exact; }), false});
-  k.push_back({"triangle", "watertight", with([](RenderOverrides& o) { o.triangle_test = TriangleTest::Watertight; }), false});
-  k.push_back({"triangle", "moller-trumbore", with([](RenderOverrides& o) { o.triangle_test = TriangleTest::MollerTrumbore; }), false});
+  k.push_back(
+      {"triangle", "watertight", with([](RenderOverrides& o) { o.triangle_test = TriangleTest::Watertight; }), false});
+  k.push_back({"triangle", "moller-trumbore",
+               with([](RenderOverrides& o) { o.triangle_test = TriangleTest::MollerTrumbore; }), false});
   for (uint32_t d : {1u, 3u, 8u, 65u})
-    k.push_back({"rr_depth", d == 65u ? "off" : std::to_string(d), with([d](RenderOverrides& o) { o.rr_depth = d; }), false});
+    k.push_back(
+        {"rr_depth", d == 65u ? "off" : std::to_string(d), with([d](RenderOverrides& o) { o.rr_depth = d; }), false});
   for (uint32_t d : {1u, 2u, 4u, 8u, 16u})
     k.push_back({"max_depth", std::to_string(d), with([d](RenderOverrides& o) { o.max_depth = d; }), false});
   return k;
@@ -79,20 +82,23 @@ static int run_bench_trade(const BenchTradeCommand& cmd) {
   if (cmd.height) base.height = cmd.height;
   const Scene probe = load_scene(cmd.scene, base);
   if (probe.settings.integrator != IntegratorKind::Path)
-    throw InputError(cmd.scene + ": bench trade measures the path integrator's knobs; give a scene with \"integrator\": \"path\"");
-  if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid) base.sampler = SamplerKind::Stochastic;
-  std::printf("tracer bench trade %s: %ux%u, %u spp budget; seconds are the median of %d renders\n",
-              cmd.scene.c_str(), probe.settings.width, probe.settings.height, cmd.spp, kRepeats);
+    throw InputError(cmd.scene +
+                     ": bench trade measures the path integrator's knobs; give a scene with \"integrator\": \"path\"");
+  if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid)
+    base.sampler = SamplerKind::Stochastic;
+  std::printf("tracer bench trade %s: %ux%u, %u spp budget; seconds are the median of %d renders\n", cmd.scene.c_str(),
+              probe.settings.width, probe.settings.height, cmd.spp, kRepeats);
   const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 16 * cmd.spp, cmd.threads,
                                     std::filesystem::path(cmd.scene).stem().string() + "-trade-ref.exr");
 
-  std::printf("%-12s %-15s | %6s %9s %11s %11s | %14s %9s %11s\n", "knob", "setting", "spp", "seconds", "RMSE", "relMSE",
-              "equal-time spp", "seconds", "RMSE");
+  std::printf("%-12s %-15s | %6s %9s %11s %11s | %14s %9s %11s\n", "knob", "setting", "spp", "seconds", "RMSE",
+              "relMSE", "equal-time spp", "seconds", "RMSE");
   double baseline_seconds = 0;
   for (const Knob& knob : knobs(probe.background.kind == BackgroundKind::Cubemap)) {
     RenderOverrides ov = combine(base, knob.overrides);
     // the stratified sampler, the knob's or the scene's own, needs n x n samples
-    const bool square = knob.square_spp || (!knob.overrides.sampler && probe.settings.sampler == SamplerKind::Stratified);
+    const bool square =
+        knob.square_spp || (!knob.overrides.sampler && probe.settings.sampler == SamplerKind::Stratified);
     ov.spp = square ? nearest_square(cmd.spp) : cmd.spp;
     const TimedRender fixed = timed_render(load_scene(cmd.scene, ov), cmd.threads, kRepeats);
     const ImageError fixed_error = image_error(fixed.image, ref);
@@ -108,15 +114,15 @@ static int run_bench_trade(const BenchTradeCommand& cmd) {
   return 0;
 }
 
-const RegisterCommand kBenchTradeCommand({"bench", "trade", "time and error of each knob, at a fixed sample budget and at equal time",
-                                          [](CLI::App& app) {
-  auto cmd = std::make_shared<BenchTradeCommand>();
-  app.add_option("scene", cmd->scene, "scene file (JSON)")->required();
-  app.add_option("--spp", cmd->spp, "the fixed sample budget (default 64)");
-  app.add_option("--ref", cmd->ref, "reference image (EXR); default: render one at --ref-spp");
-  app.add_option("--ref-spp", cmd->ref_spp, "reference samples per pixel (default 16 x --spp)");
-  add_bench_size_options(app, cmd->width, cmd->height, cmd->threads);
-  return [cmd] { return run_bench_trade(*cmd); };
-}});
+const RegisterCommand kBenchTradeCommand(
+    {"bench", "trade", "time and error of each knob, at a fixed sample budget and at equal time", [](CLI::App& app) {
+       auto cmd = std::make_shared<BenchTradeCommand>();
+       app.add_option("scene", cmd->scene, "scene file (JSON)")->required();
+       app.add_option("--spp", cmd->spp, "the fixed sample budget (default 64)");
+       app.add_option("--ref", cmd->ref, "reference image (EXR); default: render one at --ref-spp");
+       app.add_option("--ref-spp", cmd->ref_spp, "reference samples per pixel (default 16 x --spp)");
+       add_bench_size_options(app, cmd->width, cmd->height, cmd->threads);
+       return [cmd] { return run_bench_trade(*cmd); };
+     }});
 
 }  // namespace tracer

@@ -3,14 +3,14 @@
 // every edge (watertight_probe.h), traced with the watertight test and with
 // Moller-Trumbore: the rays that escape through cracks, and Mrays/s. Without arguments it
 // generates an icosphere and a grid cube, and adds scenes/generated/bunny.obj when present.
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
-#include <unistd.h>
 
-#include "cli/command_registry.h"
-#include "cli/commands.h"
 #include "bench/mesh_generators.h"
 #include "bench/watertight_probe.h"
+#include "cli/command_registry.h"
+#include "cli/commands.h"
 
 namespace tracer {
 
@@ -32,10 +32,11 @@ static int run_bench_watertight(const BenchWatertightCommand& cmd) {
     }
     if (std::filesystem::exists("scenes/generated/bunny.obj")) meshes.push_back("scenes/generated/bunny.obj");
   }
-  std::printf("tracer bench watertight: rays from points inside each closed mesh to every vertex and %u points of every edge\n",
-              cmd.edge_points);
-  std::printf("%-28s %9s %6s %10s | %12s %9s | %12s %9s\n", "mesh", "triangles", "open", "rays", "watertight", "Mrays/s",
-              "moller-trumbore", "Mrays/s");
+  std::printf(
+      "tracer bench watertight: rays from points inside each closed mesh to every vertex and %u points of every edge\n",
+      cmd.edge_points);
+  std::printf("%-28s %9s %6s %10s | %12s %9s | %12s %9s\n", "mesh", "triangles", "open", "rays", "watertight",
+              "Mrays/s", "moller-trumbore", "Mrays/s");
   for (const std::string& path : meshes) {
     WatertightProbe result[2];
     uint32_t triangles = 0;
@@ -54,14 +55,15 @@ static int run_bench_watertight(const BenchWatertightCommand& cmd) {
   return 0;
 }
 
-const RegisterCommand kBenchWatertightCommand({"bench", "watertight",
-                                               "rays that escape closed meshes through cracks: watertight test vs Moller-Trumbore",
-                                               [](CLI::App& app) {
-  auto cmd = std::make_shared<BenchWatertightCommand>();
-  app.add_option("meshes", cmd->meshes, "closed OBJ meshes (default: a generated icosphere and cube, and scenes/generated/bunny.obj)");
-  app.add_option("--edge-points", cmd->edge_points, "points aimed at along every edge (default 16)");
-  add_threads_option(app, cmd->threads);
-  return [cmd] { return run_bench_watertight(*cmd); };
-}});
+const RegisterCommand kBenchWatertightCommand(
+    {"bench", "watertight", "rays that escape closed meshes through cracks: watertight test vs Moller-Trumbore",
+     [](CLI::App& app) {
+       auto cmd = std::make_shared<BenchWatertightCommand>();
+       app.add_option("meshes", cmd->meshes,
+                      "closed OBJ meshes (default: a generated icosphere and cube, and scenes/generated/bunny.obj)");
+       app.add_option("--edge-points", cmd->edge_points, "points aimed at along every edge (default 16)");
+       add_threads_option(app, cmd->threads);
+       return [cmd] { return run_bench_watertight(*cmd); };
+     }});
 
 }  // namespace tracer

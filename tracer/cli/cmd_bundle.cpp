@@ -9,9 +9,9 @@
 #include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "io/input_error.h"
+#include "io/text_file.h"
 #include "render/partial_file.h"
 #include "scene/scene_loader.h"
-#include "io/text_file.h"
 
 namespace tracer {
 
@@ -34,12 +34,12 @@ static int run_bundle(const RenderCommand& cmd) {
   return 0;
 }
 
-const RegisterCommand kBundleCommand({"", "bundle", "write what the kernel reads for one render as a scene bundle for tracer-gpu",
-                                      [](CLI::App& app) {
-  auto cmd = std::make_shared<RenderCommand>();
-  add_scene_options(app, *cmd);
-  app.add_option("-o,--output", cmd->output, "output bundle, NAME.bundle")->required();
-  return [cmd] { return run_bundle(*cmd); };
-}});
+const RegisterCommand kBundleCommand(
+    {"", "bundle", "write what the kernel reads for one render as a scene bundle for tracer-gpu", [](CLI::App& app) {
+       auto cmd = std::make_shared<RenderCommand>();
+       add_scene_options(app, *cmd);
+       app.add_option("-o,--output", cmd->output, "output bundle, NAME.bundle")->required();
+       return [cmd] { return run_bundle(*cmd); };
+     }});
 
 }  // namespace tracer

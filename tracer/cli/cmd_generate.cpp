@@ -23,12 +23,13 @@ static int run_generate(const GenerateCommand& cmd) {
 
 }  // namespace
 
-const RegisterCommand kGenerateCommand({"", "generate", "write a deterministic procedural mesh as OBJ", [](CLI::App& app) {
-  auto cmd = std::make_shared<GenerateCommand>();
-  app.add_option("kind", cmd->kind, "terrain, sphere, boxes, cubes, mixed, icosphere or cube")->required();
-  app.add_option("--triangles", cmd->triangles, "target triangle count (default 100000)");
-  app.add_option("-o,--output", cmd->output, "OBJ file")->required();
-  return [cmd] { return run_generate(*cmd); };
-}});
+const RegisterCommand kGenerateCommand(
+    {"", "generate", "write a deterministic procedural mesh as OBJ", [](CLI::App& app) {
+       auto cmd = std::make_shared<GenerateCommand>();
+       app.add_option("kind", cmd->kind, "terrain, sphere, boxes, cubes, mixed, icosphere or cube")->required();
+       app.add_option("--triangles", cmd->triangles, "target triangle count (default 100000)");
+       app.add_option("-o,--output", cmd->output, "OBJ file")->required();
+       return [cmd] { return run_generate(*cmd); };
+     }});
 
 }  // namespace tracer

@@ -5,10 +5,10 @@
 #include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "golden/golden_check.h"
-#include "golden/golden_update.h"
-#include "render/device_error.h"
 #include "golden/golden_report.h"
+#include "golden/golden_update.h"
 #include "io/input_error.h"
+#include "render/device_error.h"
 
 namespace tracer {
 
@@ -51,7 +51,8 @@ static int run_golden_check(const GoldenCheckCommand& cmd) {
   try {
     manifest = read_manifest(cmd.root);
     entry = manifest.find(cmd.name);
-    if (cmd.device != "cpu" && cmd.device != "cuda") throw InputError("--device " + cmd.device + ": expected cpu or cuda");
+    if (cmd.device != "cpu" && cmd.device != "cuda")
+      throw InputError("--device " + cmd.device + ": expected cpu or cuda");
     const GoldenDevice device = cmd.device == "cuda" ? GoldenDevice::Cuda : GoldenDevice::Cpu;
     render = render_golden(manifest, entry, cmd.threads, device);
     outcome = judge_golden(manifest, entry, *render);
@@ -110,39 +111,40 @@ static int run_golden_list(const std::string& root) {
   return 0;
 }
 
-const RegisterCommand kGoldenCheckCommand({"golden", "check", "render one golden and compare it bit for bit with its reference",
-                                           [](CLI::App& app) {
-  auto cmd = std::make_shared<GoldenCheckCommand>();
-  app.add_option("name", cmd->name, "golden name (golden/manifest.json)")->required();
-  app.add_option("--root", cmd->root, "source root holding golden/ and scenes/ (default .)");
-  app.add_option("--report", cmd->report, "report directory: writes a row, and images on a difference");
-  add_threads_option(app, cmd->threads);
-  app.add_option("--device", cmd->device, "cpu or cuda; exit 77 (skipped) when the device is missing");
-  return [cmd] { return run_golden_check(*cmd); };
-}});
+const RegisterCommand kGoldenCheckCommand(
+    {"golden", "check", "render one golden and compare it bit for bit with its reference", [](CLI::App& app) {
+       auto cmd = std::make_shared<GoldenCheckCommand>();
+       app.add_option("name", cmd->name, "golden name (golden/manifest.json)")->required();
+       app.add_option("--root", cmd->root, "source root holding golden/ and scenes/ (default .)");
+       app.add_option("--report", cmd->report, "report directory: writes a row, and images on a difference");
+       add_threads_option(app, cmd->threads);
+       app.add_option("--device", cmd->device, "cpu or cuda; exit 77 (skipped) when the device is missing");
+       return [cmd] { return run_golden_check(*cmd); };
+     }});
 
-const RegisterCommand kGoldenUpdateCommand({"golden", "update", "rewrite the goldens that are new or differ, print what changed",
-                                            [](CLI::App& app) {
-  auto request = std::make_shared<UpdateRequest>();
-  app.add_option("--root", request->root, "source root holding golden/ and scenes/ (default .)");
-  app.add_option("--filter", request->filter, "only goldens whose name matches this regular expression");
-  app.add_flag("--force", request->force, "run even when golden/ has uncommitted edits");
-  add_threads_option(app, request->threads);
-  return [request] { return run_golden_update(*request); };
-}});
+const RegisterCommand kGoldenUpdateCommand(
+    {"golden", "update", "rewrite the goldens that are new or differ, print what changed", [](CLI::App& app) {
+       auto request = std::make_shared<UpdateRequest>();
+       app.add_option("--root", request->root, "source root holding golden/ and scenes/ (default .)");
+       app.add_option("--filter", request->filter, "only goldens whose name matches this regular expression");
+       app.add_flag("--force", request->force, "run even when golden/ has uncommitted edits");
+       add_threads_option(app, request->threads);
+       return [request] { return run_golden_update(*request); };
+     }});
 
-const RegisterCommand kGoldenReportCommand({"golden", "report", "assemble the HTML report from the rows the checks wrote",
+const RegisterCommand kGoldenReportCommand({"golden", "report",
+                                            "assemble the HTML report from the rows the checks wrote",
                                             [](CLI::App& app) {
-  auto cmd = std::make_shared<GoldenReportCommand>();
-  app.add_option("--report", cmd->report, "report directory")->required();
-  app.add_flag("--reset", cmd->reset, "remove all rows and images instead");
-  return [cmd] { return run_golden_report(*cmd); };
-}});
+                                              auto cmd = std::make_shared<GoldenReportCommand>();
+                                              app.add_option("--report", cmd->report, "report directory")->required();
+                                              app.add_flag("--reset", cmd->reset, "remove all rows and images instead");
+                                              return [cmd] { return run_golden_report(*cmd); };
+                                            }});
 
 const RegisterCommand kGoldenListCommand({"golden", "list", "print the golden names, one per line", [](CLI::App& app) {
-  auto root = std::make_shared<std::string>(".");
-  app.add_option("--root", *root, "source root holding golden/ (default .)");
-  return [root] { return run_golden_list(*root); };
-}});
+                                            auto root = std::make_shared<std::string>(".");
+                                            app.add_option("--root", *root, "source root holding golden/ (default .)");
+                                            return [root] { return run_golden_list(*root); };
+                                          }});
 
 }  // namespace tracer

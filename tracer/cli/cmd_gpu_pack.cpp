@@ -8,17 +8,17 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "bench/mesh_generators.h"
 #include "bundle/scene_bundle.h"
 #include "cli/command_registry.h"
 #include "cli/commands.h"
-#include "options/enum_names.h"
 #include "golden/golden_manifest.h"
 #include "io/input_error.h"
-#include "bench/mesh_generators.h"
+#include "io/text_file.h"
+#include "options/enum_names.h"
 #include "parity/parallel_for.h"
 #include "parity/parity_suite.h"
 #include "scene/scene_loader.h"
-#include "io/text_file.h"
 
 namespace tracer {
 
@@ -47,7 +47,8 @@ const char* kRunScript =
 
 const char* kMathNames[] = {"sin", "cos", "tan", "asin", "acos", "atan2", "exp", "log", "pow"};
 const char* kTraceScenes[] = {"cornell-box", "mesh", "refraction"};
-const AccelKind kAccels[] = {AccelKind::Bvh, AccelKind::Lbvh, AccelKind::Kdtree, AccelKind::KdtreeMedian, AccelKind::Grid, AccelKind::None};
+const AccelKind kAccels[] = {AccelKind::Bvh,          AccelKind::Lbvh, AccelKind::Kdtree,
+                             AccelKind::KdtreeMedian, AccelKind::Grid, AccelKind::None};
 
 Scene golden_scene(const GoldenManifest& manifest, const std::string& name, std::optional<AccelKind> accel) {
   const GoldenEntry& e = manifest.find(name);
@@ -71,13 +72,15 @@ std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
     for (const AccelKind accel : kAccels) {
       const Scene scene = accel == AccelKind::Bvh ? bvh : golden_scene(manifest, name, accel);
       const std::string label = std::string("trace-") + name + "-" + enum_name(accel);
-      cases.push_back({label, {ParityKind::Trace, 0, 13, 1u << 18, 0, root.lo, root.hi},
+      cases.push_back({label,
+                       {ParityKind::Trace, 0, 13, 1u << 18, 0, root.lo, root.hi},
                        make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, label)});
     }
   }
   cases.push_back({"lbvh-build-1m", {ParityKind::Lbvh, 0, 17, 1u << 20, 0, {}, {}}, {}});
   const Scene sample = golden_scene(manifest, "cornell-box", std::nullopt);
-  cases.push_back({"sample-cornell-box", {ParityKind::Sample, 0, 0, 0, 0, {}, {}},
+  cases.push_back({"sample-cornell-box",
+                   {ParityKind::Sample, 0, 0, 0, 0, {}, {}},
                    make_scene_bundle(sample, sample.view(), {0, sample.settings.spp}, "sample-cornell-box")});
   return cases;
 }
@@ -86,14 +89,21 @@ std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
 // the Cornell box per sampler, per effect and per resolution, and a generated 100k-triangle
 // mesh. bench.tsv rows: "TABLE LABEL FILE"; `tracer-gpu bench` times them.
 std::string write_bench(const fs::path& root, const fs::path& out) {
-  struct Sampler { const char* label; SamplerKind sampler; uint32_t spp; };
-  const Sampler samplers[] = {{"1spp-center", SamplerKind::Center, 1}, {"2spp-stochastic", SamplerKind::Stochastic, 2}, {"4spp-grid", SamplerKind::Grid, 4}};
+  struct Sampler {
+    const char* label;
+    SamplerKind sampler;
+    uint32_t spp;
+  };
+  const Sampler samplers[] = {{"1spp-center", SamplerKind::Center, 1},
+                              {"2spp-stochastic", SamplerKind::Stochastic, 2},
+                              {"4spp-grid", SamplerKind::Grid, 4}};
   fs::create_directories(out / "bench");
   std::string list = "# table label file: `tracer-gpu bench DIR` times every row\n";
   const auto add = [&](const std::string& table, const std::string& label, const std::string& scene_path,
                        uint32_t width, uint32_t height, const Sampler& s, Effects effects) {
     RenderOverrides o;
-    o.width = width, o.height = height, o.sampler = s.sampler, o.spp = s.spp, o.effects = effects, o.integrator = IntegratorKind::Whitted;
+    o.width = width, o.height = height, o.sampler = s.sampler, o.spp = s.spp, o.effects = effects,
+    o.integrator = IntegratorKind::Whitted;
     const Scene scene = load_scene(scene_path, o);
     const std::string file = "bench/" + table + "-" + label + ".bundle";
     write_bundle((out / file).string(),
@@ -101,12 +111,13 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
     list += table + " " + label + " " + file + "\n";
   };
   const std::string cornell = (root / "scenes/cornell-box.json").string();
-  for (const Sampler& s : {samplers[0], samplers[2]}) add("main", std::string("cornell-box-") + s.label, cornell, 720, 480, s, kEffectAll);
+  for (const Sampler& s : {samplers[0], samplers[2]})
+    add("main", std::string("cornell-box-") + s.label, cornell, 720, 480, s, kEffectAll);
   const std::pair<const char*, Effects> effects[] = {{"none", kEffectNone},
-                                                      {"shadows", kEffectShadows},
-                                                      {"reflections", kEffectReflection},
-                                                      {"refractions", kEffectRefraction},
-                                                      {"all", kEffectAll}};
+                                                     {"shadows", kEffectShadows},
+                                                     {"reflections", kEffectReflection},
+                                                     {"refractions", kEffectRefraction},
+                                                     {"all", kEffectAll}};
   for (const auto& [name, mask] : effects)
     for (const Sampler& s : samplers) add("effects", std::string(name) + "-" + s.label, cornell, 720, 480, s, mask);
   const uint32_t sizes[][2] = {{640, 480}, {1280, 720}, {1920, 1080}};
@@ -218,14 +229,14 @@ static int run_gpu_pack(const GpuPackCommand& cmd) {
   return 0;
 }
 
-const RegisterCommand kGpuPackCommand({"", "gpu-pack", "write the GPU pack: golden bundles, parity cases, tracer-gpu and run.sh",
-                                       [](CLI::App& app) {
-  auto cmd = std::make_shared<GpuPackCommand>();
-  app.add_option("dir", cmd->dir, "new directory to create")->required();
-  app.add_option("--root", cmd->root, "source root holding golden/ and scenes/ (default .)");
-  app.add_option("--runner", cmd->runner, "tracer-gpu binary to include (default: beside this tracer)");
-  add_threads_option(app, cmd->threads);
-  return [cmd] { return run_gpu_pack(*cmd); };
-}});
+const RegisterCommand kGpuPackCommand(
+    {"", "gpu-pack", "write the GPU pack: golden bundles, parity cases, tracer-gpu and run.sh", [](CLI::App& app) {
+       auto cmd = std::make_shared<GpuPackCommand>();
+       app.add_option("dir", cmd->dir, "new directory to create")->required();
+       app.add_option("--root", cmd->root, "source root holding golden/ and scenes/ (default .)");
+       app.add_option("--runner", cmd->runner, "tracer-gpu binary to include (default: beside this tracer)");
+       add_threads_option(app, cmd->threads);
+       return [cmd] { return run_gpu_pack(*cmd); };
+     }});
 
 }  // namespace tracer

@@ -20,9 +20,10 @@ static int run_info(const std::string& scene_path) {
   for (const auto& [type, count] : scene.report.shape_counts) std::printf(" %s: %u", type.c_str(), count);
   uint32_t by_kind[4] = {};
   for (const Primitive& p : scene.primitives) ++by_kind[static_cast<int>(p.kind)];
-  std::printf("\nprimitives %zu (spheres %u, planes %u, triangles %u, quads %u)\n", scene.primitives.size(),
-              by_kind[0], by_kind[1], by_kind[2], by_kind[3]);
-  if (scene.report.degenerate_triangles > 0) std::printf("left out   %u mesh triangles of zero area\n", scene.report.degenerate_triangles);
+  std::printf("\nprimitives %zu (spheres %u, planes %u, triangles %u, quads %u)\n", scene.primitives.size(), by_kind[0],
+              by_kind[1], by_kind[2], by_kind[3]);
+  if (scene.report.degenerate_triangles > 0)
+    std::printf("left out   %u mesh triangles of zero area\n", scene.report.degenerate_triangles);
   std::printf("materials  %zu, point lights %zu\n", scene.materials.size(), scene.lights.size());
   std::printf("features  ");
   for (const std::string& f : feature_names(scene.features)) std::printf(" %s", f.c_str());
@@ -36,10 +37,11 @@ static int run_info(const std::string& scene_path) {
 
 }  // namespace
 
-const RegisterCommand kInfoCommand({"", "info", "primitive counts, feature mask and acceleration stats", [](CLI::App& app) {
-  auto scene = std::make_shared<std::string>();
-  app.add_option("scene", *scene, "scene file (JSON)")->required();
-  return [scene] { return run_info(*scene); };
-}});
+const RegisterCommand kInfoCommand({"", "info", "primitive counts, feature mask and acceleration stats",
+                                    [](CLI::App& app) {
+                                      auto scene = std::make_shared<std::string>();
+                                      app.add_option("scene", *scene, "scene file (JSON)")->required();
+                                      return [scene] { return run_info(*scene); };
+                                    }});
 
 }  // namespace tracer

@@ -50,7 +50,8 @@ static int run_merge(const MergeCommand& cmd) {
   }
   const uint32_t spp = first.header.spp;
   if (next != spp)
-    throw InputError(cmd.parts.front() + "...: no part holds samples [" + std::to_string(next) + ", " + std::to_string(spp) + ")");
+    throw InputError(cmd.parts.front() + "...: no part holds samples [" + std::to_string(next) + ", " +
+                     std::to_string(spp) + ")");
 
   FilmBuffer total = parts.front().second.film;
   total.range = {0, spp};
@@ -71,18 +72,18 @@ static int run_merge(const MergeCommand& cmd) {
   }
   for (const FilmSum& s : total.pixels) nonfinite += s.nonfinite, overflow += s.overflow;
   write_image(resolve_film(total, spp), cmd.output);
-  std::printf("merged %zu parts, samples [0, %u), %llu NaN/inf samples, %llu overflowing samples: wrote %s\n", parts.size(),
-              spp, static_cast<unsigned long long>(nonfinite), static_cast<unsigned long long>(overflow),
+  std::printf("merged %zu parts, samples [0, %u), %llu NaN/inf samples, %llu overflowing samples: wrote %s\n",
+              parts.size(), spp, static_cast<unsigned long long>(nonfinite), static_cast<unsigned long long>(overflow),
               std::filesystem::absolute(cmd.output).string().c_str());
   return 0;
 }
 
-const RegisterCommand kMergeCommand({"", "merge", "add partial renders (--samples) into the image of all their samples",
-                                     [](CLI::App& app) {
-  auto cmd = std::make_shared<MergeCommand>();
-  app.add_option("parts", cmd->parts, "partial files of one render covering samples [0, spp) once")->required();
-  app.add_option("-o,--output", cmd->output, "output image (.exr, .png, ...)")->required();
-  return [cmd] { return run_merge(*cmd); };
-}});
+const RegisterCommand kMergeCommand(
+    {"", "merge", "add partial renders (--samples) into the image of all their samples", [](CLI::App& app) {
+       auto cmd = std::make_shared<MergeCommand>();
+       app.add_option("parts", cmd->parts, "partial files of one render covering samples [0, spp) once")->required();
+       app.add_option("-o,--output", cmd->output, "output image (.exr, .png, ...)")->required();
+       return [cmd] { return run_merge(*cmd); };
+     }});
 
 }  // namespace tracer

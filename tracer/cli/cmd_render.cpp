@@ -12,13 +12,13 @@
 #include "cli/commands.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
+#include "io/text_file.h"
+#include "options/render_options.h"
 #include "render/partial_file.h"
 #include "render/progress.h"
-#include "options/render_options.h"
 #include "render/render_cpu.h"
 #include "render/render_cuda.h"
 #include "scene/scene_loader.h"
-#include "io/text_file.h"
 
 namespace tracer {
 namespace {
@@ -37,8 +37,10 @@ void check_output_path(const std::string& path, bool partial) {
     return;
   }
   if (p.extension().empty()) throw InputError(path + ": output needs a file extension (.exr, .png, ...)");
-  if (p.extension() == ".partial") throw InputError(path + ": a .partial file holds a sample range; give --samples A:B");
-  if (!OIIO::ImageOutput::create(path)) throw InputError(path + ": no image writer for extension " + p.extension().string());
+  if (p.extension() == ".partial")
+    throw InputError(path + ": a .partial file holds a sample range; give --samples A:B");
+  if (!OIIO::ImageOutput::create(path))
+    throw InputError(path + ": no image writer for extension " + p.extension().string());
 }
 
 // What makes two partial files parts of one render: every option its identity records.
@@ -51,7 +53,8 @@ Json render_identity(const Scene& scene) {
 void add_scene_options(CLI::App& app, RenderCommand& cmd) {
   app.add_option("scene", cmd.scene, "scene file (JSON)")->required();
   for (const OptionInfo& o : option_table()) app.add_option(option_flag(o.name), cmd.options[o.name], o.help);
-  app.add_option("--samples", cmd.samples, "A:B renders only samples [A, B) of every pixel (render: into NAME.partial, for tracer merge)");
+  app.add_option("--samples", cmd.samples,
+                 "A:B renders only samples [A, B) of every pixel (render: into NAME.partial, for tracer merge)");
 }
 
 RenderOverrides scene_overrides(const RenderCommand& cmd) {
@@ -96,8 +99,12 @@ static int run_render(const RenderCommand& cmd) {
   }
   const double render_s = seconds_since(t_render);
   if (partial) {
-    part.header = {render_identity(scene), cmd.scene, OIIO::SHA1::digest(scene_text.data(), scene_text.size()), rs.spp,
-                   stats.nonfinite_samples, stats.overflow_samples};
+    part.header = {render_identity(scene),
+                   cmd.scene,
+                   OIIO::SHA1::digest(scene_text.data(), scene_text.size()),
+                   rs.spp,
+                   stats.nonfinite_samples,
+                   stats.overflow_samples};
     write_partial(output, part);
   } else {
     write_image(resolve_film(part.film, rs.spp), output);
@@ -116,13 +123,16 @@ static int run_render(const RenderCommand& cmd) {
     j["device"] = cmd.device == "cuda" ? cuda.device : "cpu";
     if (cmd.device == "cuda") {
       j["device_bytes"] = cuda.device_bytes;
-      j["cuda_seconds"] = {{"upload", cuda.upload_seconds}, {"kernel", cuda.kernel_seconds}, {"download", cuda.download_seconds}};
+      j["cuda_seconds"] = {
+          {"upload", cuda.upload_seconds}, {"kernel", cuda.kernel_seconds}, {"download", cuda.download_seconds}};
     } else {
       j["threads"] = cmd.threads > 0 ? cmd.threads : omp_get_max_threads();
     }
     j["seconds"] = {{"load", load_build_s - build_s}, {"build", build_s}, {"render", render_s}};
-    j["rays"] = {{"camera", stats.rays.camera}, {"shadow", stats.rays.shadow},
-                 {"secondary", stats.rays.secondary}, {"total", rays}};
+    j["rays"] = {{"camera", stats.rays.camera},
+                 {"shadow", stats.rays.shadow},
+                 {"secondary", stats.rays.secondary},
+                 {"total", rays}};
     j["mrays_per_second"] = mrays;
     j["nonfinite_samples"] = stats.nonfinite_samples;
     j["overflow_samples"] = stats.overflow_samples;
@@ -138,8 +148,8 @@ static int run_render(const RenderCommand& cmd) {
     std::fprintf(stderr, "%s: kernel %.6f s, upload %.3f s, download %.3f s\n", cuda.device.c_str(),
                  cuda.kernel_seconds, cuda.upload_seconds, cuda.download_seconds);
   if (!cmd.quiet)
-    std::fprintf(stderr, "%ux%u, %u spp, %.3f s, %.2fM rays, %.2f Mrays/s, %llu NaN/inf samples\n", rs.width,
-                 rs.height, rs.spp, render_s, static_cast<double>(rays) / 1e6, mrays,
+    std::fprintf(stderr, "%ux%u, %u spp, %.3f s, %.2fM rays, %.2f Mrays/s, %llu NaN/inf samples\n", rs.width, rs.height,
+                 rs.spp, render_s, static_cast<double>(rays) / 1e6, mrays,
                  static_cast<unsigned long long>(stats.nonfinite_samples));
   if (!cmd.quiet && scene.report.degenerate_triangles > 0)
     std::fprintf(stderr, "note: %u mesh triangles of zero area were left out (they have no normal)\n",
@@ -154,14 +164,16 @@ static int run_render(const RenderCommand& cmd) {
 }
 
 const RegisterCommand kRenderCommand({"", "render", "render a scene to an image", [](CLI::App& app) {
-  auto cmd = std::make_shared<RenderCommand>();
-  add_scene_options(app, *cmd);
-  app.add_option("-o,--output", cmd->output, "output image (.exr linear float, .png sRGB, ...); default SCENE.png");
-  add_threads_option(app, cmd->threads);
-  app.add_option("--device", cmd->device, "cpu or cuda");
-  app.add_option("--stats", cmd->stats, "write timings and ray counts as JSON");
-  app.add_flag("--quiet", cmd->quiet, "no progress bar or summary");
-  return [cmd] { return run_render(*cmd); };
-}});
+                                        auto cmd = std::make_shared<RenderCommand>();
+                                        add_scene_options(app, *cmd);
+                                        app.add_option(
+                                            "-o,--output", cmd->output,
+                                            "output image (.exr linear float, .png sRGB, ...); default SCENE.png");
+                                        add_threads_option(app, cmd->threads);
+                                        app.add_option("--device", cmd->device, "cpu or cuda");
+                                        app.add_option("--stats", cmd->stats, "write timings and ray counts as JSON");
+                                        app.add_flag("--quiet", cmd->quiet, "no progress bar or summary");
+                                        return [cmd] { return run_render(*cmd); };
+                                      }});
 
 }  // namespace tracer

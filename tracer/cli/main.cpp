@@ -27,8 +27,9 @@ int main(int argc, char** argv) {
       {"bench", "benchmarks: speed against a baseline measured in the same run"}};
   std::map<std::string, CLI::App*> groups;
   std::vector<CommandSpec> commands = command_registry();
-  std::sort(commands.begin(), commands.end(),
-            [](const CommandSpec& a, const CommandSpec& b) { return std::tie(a.group, a.name) < std::tie(b.group, b.name); });
+  std::sort(commands.begin(), commands.end(), [](const CommandSpec& a, const CommandSpec& b) {
+    return std::tie(a.group, a.name) < std::tie(b.group, b.name);
+  });
   std::vector<std::pair<CLI::App*, CommandRun>> runs;
   for (const CommandSpec& c : commands) {
     CLI::App* parent = &app;

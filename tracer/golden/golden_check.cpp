@@ -6,9 +6,9 @@
 #include <cstring>
 #include <filesystem>
 
-#include "io/input_error.h"
 #include "image/image_io.h"
 #include "image/pixel_hash.h"
+#include "io/input_error.h"
 #include "render/render_cpu.h"
 #include "render/render_cuda.h"
 #include "scene/scene_loader.h"
@@ -24,11 +24,11 @@ uint64_t count_nonfinite(const Image& image) {
 
 }  // namespace
 
-GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& entry, int threads,
-                           GoldenDevice device) {
+GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& entry, int threads, GoldenDevice device) {
   const std::string scene_path = manifest.scene_path(entry);
   if (!std::filesystem::is_regular_file(scene_path))
-    throw InputError(manifest.path + ": goldens." + entry.name + ".scene: scene file " + scene_path + " does not exist");
+    throw InputError(manifest.path + ": goldens." + entry.name + ".scene: scene file " + scene_path +
+                     " does not exist");
   const auto start = std::chrono::steady_clock::now();
   const Scene scene = load_scene(scene_path, RenderOverrides{entry.options});
   GoldenRender r;

@@ -6,8 +6,8 @@
 #include <optional>
 #include <string>
 
-#include "image/compare.h"
 #include "golden/golden_manifest.h"
+#include "image/compare.h"
 #include "image/image.h"
 
 namespace tracer {
@@ -27,11 +27,11 @@ enum class GoldenStatus { Pass, Fail, Error, Skipped };
 struct GoldenOutcome {
   std::string name;
   GoldenStatus status = GoldenStatus::Error;
-  std::string message;                    // one line: why it failed, or "identical"
-  std::optional<CompareResult> metrics;   // new against reference, when both exist
-  std::optional<Image> reference;         // the golden image, when readable
-  uint64_t nonfinite_values = 0;          // NaN/inf samples and pixel values of the new image
-  uint64_t overflow_samples = 0;          // samples of the new image beyond the film's range
+  std::string message;                   // one line: why it failed, or "identical"
+  std::optional<CompareResult> metrics;  // new against reference, when both exist
+  std::optional<Image> reference;        // the golden image, when readable
+  uint64_t nonfinite_values = 0;         // NaN/inf samples and pixel values of the new image
+  uint64_t overflow_samples = 0;         // samples of the new image beyond the film's range
 };
 
 enum class GoldenDevice { Cpu, Cuda };

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "scene/scene_types.h"
 #include "io/text_file.h"
+#include "scene/scene_types.h"
 
 namespace tracer {
 namespace {
@@ -28,7 +28,8 @@ RenderOptions read_entry_options(const Json& value, const std::string& path, con
 std::optional<GoldenTolerance> read_compare(JsonObject& entry) {
   const Json* v = entry.find("compare");
   if (!v || (v->is_string() && v->get<std::string>() == "exact")) return std::nullopt;
-  if (!v->is_object()) entry.fail("compare", "expected \"exact\" or {\"fail\", \"failpercent\", \"why\"}, got " + describe(*v));
+  if (!v->is_object())
+    entry.fail("compare", "expected \"exact\" or {\"fail\", \"failpercent\", \"why\"}, got " + describe(*v));
   JsonObject obj(*v, entry.child("compare"), entry.file());
   GoldenTolerance t;
   t.fail = obj.number("fail");
@@ -56,7 +57,9 @@ GoldenEntry read_entry(const std::string& name, const Json& value, const std::st
   if (!e.hash.empty() && (e.hash.rfind("sha1:", 0) != 0 || e.hash.size() != 45))
     obj.fail("hash", "expected \"sha1:\" and 40 hex digits, got \"" + e.hash + "\"");
   if (!e.hash.empty() && !e.options.complete())
-    obj.fail("options", "a golden with a hash records every option (integrator, sampler, spp, seed, width, height, accel, max_depth); run `tracer golden update`");
+    obj.fail("options",
+             "a golden with a hash records every option (integrator, sampler, spp, seed, width, height, accel, "
+             "max_depth); run `tracer golden update`");
   e.tolerance = read_compare(obj);
   obj.finish();
   return e;
@@ -108,7 +111,8 @@ void write_manifest(const GoldenManifest& manifest) {
     entry["options"] = e.options.to_json();
     if (!e.hash.empty()) entry["hash"] = e.hash;
     if (e.tolerance)
-      entry["compare"] = {{"fail", e.tolerance->fail}, {"failpercent", e.tolerance->failpercent}, {"why", e.tolerance->why}};
+      entry["compare"] = {
+          {"fail", e.tolerance->fail}, {"failpercent", e.tolerance->failpercent}, {"why", e.tolerance->why}};
     else
       entry["compare"] = "exact";
     doc["goldens"][e.name] = entry;

@@ -22,25 +22,25 @@ struct GoldenTolerance {
 };
 
 struct GoldenEntry {
-  std::string name;                          // [a-z0-9-]+: the test and the file name
-  std::string scene;                         // relative to the source root
+  std::string name;   // [a-z0-9-]+: the test and the file name
+  std::string scene;  // relative to the source root
   RenderOptions options;
   std::string hash;                          // pixel_hash of the reference; empty for a new entry
   std::optional<GoldenTolerance> tolerance;  // nullopt: exact
 };
 
 struct GoldenManifest {
-  std::string path;  // ROOT/golden/manifest.json
-  std::string root;  // the source root
+  std::string path;                  // ROOT/golden/manifest.json
+  std::string root;                  // the source root
   std::vector<GoldenEntry> entries;  // sorted by name
 
-  std::string image_path(const GoldenEntry& e) const;  // ROOT/golden/NAME.exr
-  std::string scene_path(const GoldenEntry& e) const;  // ROOT/SCENE
+  std::string image_path(const GoldenEntry& e) const;      // ROOT/golden/NAME.exr
+  std::string scene_path(const GoldenEntry& e) const;      // ROOT/SCENE
   const GoldenEntry& find(const std::string& name) const;  // InputError when absent
 };
 
 std::string manifest_path(const std::string& root);
 GoldenManifest read_manifest(const std::string& root);  // InputError naming file and key
-void write_manifest(const GoldenManifest& manifest);     // atomically, in a stable layout
+void write_manifest(const GoldenManifest& manifest);    // atomically, in a stable layout
 
 }  // namespace tracer

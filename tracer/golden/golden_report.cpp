@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <sstream>
 
+#include "golden/shell.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
 #include "io/json_reader.h"
-#include "golden/shell.h"
 #include "io/text_file.h"
 
 namespace fs = std::filesystem;
@@ -235,8 +235,9 @@ ReportCounts assemble_report(const std::string& report_dir) {
        << " differ, " << counts.errors << " could not be checked, " << counts.skipped << " skipped, " << counts.passed
        << " identical</h1>\n"
        << "<p id=\"broken\" hidden></p>\n"
-       << (rows.empty() ? "<p>No golden was checked in this run.</p>\n" : "")
-       << "<table class=\"report\"><tbody>\n" << body << "</tbody></table>\n" << kScript << "\n</body></html>\n";
+       << (rows.empty() ? "<p>No golden was checked in this run.</p>\n" : "") << "<table class=\"report\"><tbody>\n"
+       << body << "</tbody></table>\n"
+       << kScript << "\n</body></html>\n";
   fs::create_directories(dir);
   write_text_atomically((dir / "index.html").string(), html.str());
   return counts;

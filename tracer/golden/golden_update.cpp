@@ -5,10 +5,10 @@
 
 #include "golden/golden_check.h"
 #include "golden/golden_manifest.h"
-#include "image/image_io.h"
-#include "io/input_error.h"
-#include "image/pixel_hash.h"
 #include "golden/shell.h"
+#include "image/image_io.h"
+#include "image/pixel_hash.h"
+#include "io/input_error.h"
 
 namespace fs = std::filesystem;
 
@@ -39,7 +39,8 @@ const char* change_name(GoldenChangeKind kind) {
 
 std::vector<std::string> uncommitted_golden_edits(const std::string& root) {
   std::string output;
-  const int code = run_capture("git -C " + shell_quote(root) + " status --porcelain --untracked-files=all -- golden 2>&1", output);
+  const int code =
+      run_capture("git -C " + shell_quote(root) + " status --porcelain --untracked-files=all -- golden 2>&1", output);
   if (code != 0)
     throw InputError(root + ": cannot tell whether golden/ has uncommitted edits (git status failed: " +
                      output.substr(0, output.find('\n')) + "); pass --force to update anyway");
@@ -104,8 +105,7 @@ std::vector<GoldenChange> update_goldens(const UpdateRequest& request) {
     }
     pending.push_back(std::move(p));
   }
-  if (pending.empty())
-    throw InputError(manifest.path + ": no golden name matches --filter \"" + request.filter + "\"");
+  if (pending.empty()) throw InputError(manifest.path + ": no golden name matches --filter \"" + request.filter + "\"");
 
   bool manifest_changed = false;
   std::vector<GoldenChange> changes;

@@ -38,8 +38,8 @@ bool is_float_format(const std::string& path) {
 void write_image(const Image& image, const std::string& path) {
   const std::filesystem::path target(path);
   if (target.extension().empty()) throw InputError(path + ": output needs a file extension (.exr, .png, ...)");
-  const std::filesystem::path temp =
-      target.parent_path() / ("." + target.stem().string() + ".tmp" + std::to_string(getpid()) + target.extension().string());
+  const std::filesystem::path temp = target.parent_path() / ("." + target.stem().string() + ".tmp" +
+                                                             std::to_string(getpid()) + target.extension().string());
   auto out = OIIO::ImageOutput::create(temp.string());
   if (!out) throw InputError(path + ": no image writer for this extension: " + OIIO::geterror());
   const bool linear = is_float_format(path);
@@ -67,10 +67,10 @@ void write_image(const Image& image, const std::string& path) {
 
 Image read_image(const std::string& path) {
   OIIO::ImageBuf buf(path);
-  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-    throw InputError(path + ": cannot read image: " + buf.geterror());
+  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) throw InputError(path + ": cannot read image: " + buf.geterror());
   const OIIO::ImageSpec& spec = buf.spec();
-  if (spec.nchannels < 3) throw InputError(path + ": expected at least 3 channels, got " + std::to_string(spec.nchannels));
+  if (spec.nchannels < 3)
+    throw InputError(path + ": expected at least 3 channels, got " + std::to_string(spec.nchannels));
   Image image;
   image.width = static_cast<uint32_t>(spec.width);
   image.height = static_cast<uint32_t>(spec.height);

@@ -22,8 +22,7 @@ Json parse_json_text(const std::string& text, const std::string& file) {
     std::string what = e.what();
     const size_t colon = what.find("parse error");
     if (colon != std::string::npos) what = what.substr(colon);
-    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                     ": malformed JSON: " + what);
+    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": malformed JSON: " + what);
   } catch (const Json::out_of_range& e) {  // e.g. 1e999: no position is reported
     throw InputError(file + ": malformed JSON: " + e.what());
   }
@@ -43,27 +42,23 @@ float read_number(const Json& v, const std::string& path, const std::string& fil
   if (!v.is_number()) fail_at(file, path, "expected a number, got " + describe(v));
   const double d = v.get<double>();
   const float f = static_cast<float>(d);
-  if (!std::isfinite(d) || !std::isfinite(f))
-    fail_at(file, path, "expected a finite number, got " + describe(v));
+  if (!std::isfinite(d) || !std::isfinite(f)) fail_at(file, path, "expected a finite number, got " + describe(v));
   return f;
 }
 
 Vec3 read_vec3(const Json& v, const std::string& path, const std::string& file) {
-  if (!v.is_array() || v.size() != 3)
-    fail_at(file, path, "expected an array of 3 numbers, got " + describe(v));
+  if (!v.is_array() || v.size() != 3) fail_at(file, path, "expected an array of 3 numbers, got " + describe(v));
   return {read_number(v[0], path + "[0]", file), read_number(v[1], path + "[1]", file),
           read_number(v[2], path + "[2]", file)};
 }
 
 JsonObject::JsonObject(const Json& value, std::string path, const std::string& file)
     : value_(value), path_(std::move(path)), file_(file) {
-  if (!value_.is_object()) fail_at(file_, path_.empty() ? "(top level)" : path_,
-                                   "expected an object, got " + describe(value_));
+  if (!value_.is_object())
+    fail_at(file_, path_.empty() ? "(top level)" : path_, "expected an object, got " + describe(value_));
 }
 
-std::string JsonObject::child(const std::string& key) const {
-  return path_.empty() ? key : path_ + "." + key;
-}
+std::string JsonObject::child(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
 
 void JsonObject::fail(const std::string& key, const std::string& message) const {
   fail_at(file_, key.empty() ? path_ : child(key), message);

@@ -20,10 +20,10 @@ Json parse_json_text(const std::string& text, const std::string& file);
 class JsonObject {
  public:
   JsonObject(const Json& value, std::string path, const std::string& file);
-  const Json* find(const std::string& key);  // nullptr when absent; marks the key as read
-  const Json& get(const std::string& key);   // error when absent
+  const Json* find(const std::string& key);         // nullptr when absent; marks the key as read
+  const Json& get(const std::string& key);          // error when absent
   std::string child(const std::string& key) const;  // "path.key"
-  void finish() const;                        // error on any key not read
+  void finish() const;                              // error on any key not read
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
   const std::string& path() const { return path_; }
   const std::string& file() const { return file_; }

@@ -54,8 +54,10 @@ void write_text_atomically(const std::string& path, const std::string& text) {
   for (size_t done = 0; failure.empty() && done < text.size();) {
     const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) failure = n < 0 ? errno_text() : "no space written";
-    else done += static_cast<size_t>(n);
+    if (n <= 0)
+      failure = n < 0 ? errno_text() : "no space written";
+    else
+      done += static_cast<size_t>(n);
   }
   if (failure.empty() && ::fsync(fd) != 0) failure = errno_text();
   if (::close(fd) != 0 && failure.empty()) failure = errno_text();

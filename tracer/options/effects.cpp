@@ -11,7 +11,8 @@ struct EffectName {
   const char* name;
   Effects bit;
 };
-constexpr EffectName kEffects[] = {{"shadows", kEffectShadows}, {"reflections", kEffectReflection}, {"refractions", kEffectRefraction}};
+constexpr EffectName kEffects[] = {
+    {"shadows", kEffectShadows}, {"reflections", kEffectReflection}, {"refractions", kEffectRefraction}};
 
 }  // namespace
 
@@ -31,7 +32,8 @@ Effects parse_effects(const std::string& list, const std::string& where) {
                        "\" (expected a comma-separated list of shadows, reflections, refractions, or all, or none)");
     any = true;
   }
-  if (!any) throw InputError(where + ": expected all, none, or a comma-separated list of shadows, reflections, refractions");
+  if (!any)
+    throw InputError(where + ": expected all, none, or a comma-separated list of shadows, reflections, refractions");
   return static_cast<Effects>(mask);
 }
 

@@ -26,17 +26,23 @@ T value_from_json(const Json& v, const std::string& path, const std::string& fil
     return v.get<bool>() ? Switch::On : Switch::Off;
   } else {
     if (!v.is_string()) fail_at(file, path, "expected a string, got " + describe(v));
-    if constexpr (std::is_same_v<T, Effects>) return parse_effects(v.get<std::string>(), where);
-    else return parse_enum<T>(v.get<std::string>(), where);
+    if constexpr (std::is_same_v<T, Effects>)
+      return parse_effects(v.get<std::string>(), where);
+    else
+      return parse_enum<T>(v.get<std::string>(), where);
   }
 }
 
 template <class T>
 nlohmann::ordered_json value_to_json(T value) {
-  if constexpr (std::is_same_v<T, uint32_t> || std::is_same_v<T, uint64_t>) return value;
-  else if constexpr (std::is_same_v<T, Switch>) return value == Switch::On;
-  else if constexpr (std::is_same_v<T, Effects>) return effects_text(value);
-  else return enum_name(value);
+  if constexpr (std::is_same_v<T, uint32_t> || std::is_same_v<T, uint64_t>)
+    return value;
+  else if constexpr (std::is_same_v<T, Switch>)
+    return value == Switch::On;
+  else if constexpr (std::is_same_v<T, Effects>)
+    return effects_text(value);
+  else
+    return enum_name(value);
 }
 
 // Command-line text: decimal digits only (no sign, space or empty string), on/off, names.
@@ -66,7 +72,8 @@ T value_from_text(const std::string& text, const std::string& flag) {
 
 const std::vector<OptionInfo>& option_table() {
   static const std::vector<OptionInfo> table = {
-#define TRACER_OPTION_INFO(name, Type, default_value, section, recorded, help) {#name, #section, Record::recorded, help},
+#define TRACER_OPTION_INFO(name, Type, default_value, section, recorded, help) \
+  {#name, #section, Record::recorded, help},
       TRACER_RENDER_OPTIONS(TRACER_OPTION_INFO)
 #undef TRACER_OPTION_INFO
   };
@@ -122,17 +129,18 @@ nlohmann::ordered_json RenderOptions::to_json() const {
 void read_options(JsonObject& obj, const char* section, RenderOptions& into) {
   const std::string wanted = section ? section : "";
 #define TRACER_OPTION_READ(name, Type, default_value, option_section, recorded, help) \
-  if (wanted.empty() || wanted == #option_section)                                   \
+  if (wanted.empty() || wanted == #option_section)                                    \
     if (const Json* v = obj.find(#name)) into.name = value_from_json<Type>(*v, obj.child(#name), obj.file());
   TRACER_RENDER_OPTIONS(TRACER_OPTION_READ)
 #undef TRACER_OPTION_READ
 }
 
-void parse_option_text(const std::string& key, const std::string& text, const std::string& context, RenderOptions& into) {
-#define TRACER_OPTION_TEXT(name, Type, ...) \
-  if (key == #name) {                        \
+void parse_option_text(const std::string& key, const std::string& text, const std::string& context,
+                       RenderOptions& into) {
+#define TRACER_OPTION_TEXT(name, Type, ...)                                \
+  if (key == #name) {                                                      \
     into.name = value_from_text<Type>(text, context + option_flag(#name)); \
-    return;                                  \
+    return;                                                                \
   }
   TRACER_RENDER_OPTIONS(TRACER_OPTION_TEXT)
 #undef TRACER_OPTION_TEXT

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "kernel/scene/render_settings.h"
-#include "kernel/shading/material.h"
 #include "io/json_reader.h"
+#include "kernel/scene/render_settings.h"
 #include "kernel/scene/scene_view.h"
+#include "kernel/shading/material.h"
 
 namespace tracer {
 
@@ -34,11 +34,11 @@ struct RenderOptions {
   TRACER_RENDER_OPTIONS(TRACER_OPTION_FIELD)
 #undef TRACER_OPTION_FIELD
 
-  bool complete() const;                    // every option recorded Always is set
-  bool has(const std::string& name) const;  // the option of that name is set
-  void apply_to(RenderSettings& settings) const;  // the set options replace the settings' values
+  bool complete() const;                           // every option recorded Always is set
+  bool has(const std::string& name) const;         // the option of that name is set
+  void apply_to(RenderSettings& settings) const;   // the set options replace the settings' values
   void override_with(const RenderOptions& other);  // the options set in `other` replace these
-  nlohmann::ordered_json to_json() const;   // the set options in table order
+  nlohmann::ordered_json to_json() const;          // the set options in table order
 };
 
 // Command-line overrides of a scene: the options, and the Fresnel model of every dielectric

@@ -18,13 +18,18 @@ static_assert(sizeof(FilmSum) == 32, "the partial file stores film sums as 32 by
 
 void write_partial(const std::string& path, const Partial& partial) {
   const PartialHeader& h = partial.header;
-  Json header = {{"scene", h.scene},       {"scene_sha1", h.scene_sha1},
-                 {"render", h.render},     {"spp", h.spp},
+  Json header = {{"scene", h.scene},
+                 {"scene_sha1", h.scene_sha1},
+                 {"render", h.render},
+                 {"spp", h.spp},
                  {"samples", {partial.film.range.begin, partial.film.range.end}},
-                 {"width", partial.film.width}, {"height", partial.film.height},
-                 {"nonfinite", h.nonfinite}, {"overflow", h.overflow}};
+                 {"width", partial.film.width},
+                 {"height", partial.film.height},
+                 {"nonfinite", h.nonfinite},
+                 {"overflow", h.overflow}};
   const std::filesystem::path target(path);
-  const std::filesystem::path temp = target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()));
+  const std::filesystem::path temp =
+      target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()));
   {
     std::ofstream out(temp, std::ios::binary);
     out << kMagic << "\n" << header.dump() << "\n";
@@ -44,7 +49,8 @@ Partial read_partial(const std::string& path) {
   if (!in) throw InputError(path + ": cannot open the partial file");
   std::string magic, line;
   std::getline(in, magic);
-  if (magic != kMagic) throw InputError(path + ": not a partial file (expected the line \"" + std::string(kMagic) + "\")");
+  if (magic != kMagic)
+    throw InputError(path + ": not a partial file (expected the line \"" + std::string(kMagic) + "\")");
   std::getline(in, line);
   const Json doc = parse_json_text(line, path);
   JsonObject obj(doc, "", path);
@@ -58,7 +64,8 @@ Partial read_partial(const std::string& path) {
   p.film.width = static_cast<uint32_t>(obj.unsigned_integer("width"));
   p.film.height = static_cast<uint32_t>(obj.unsigned_integer("height"));
   const Json& samples = obj.get("samples");
-  if (!samples.is_array() || samples.size() != 2 || !samples[0].is_number_unsigned() || !samples[1].is_number_unsigned())
+  if (!samples.is_array() || samples.size() != 2 || !samples[0].is_number_unsigned() ||
+      !samples[1].is_number_unsigned())
     obj.fail("samples", "expected [begin, end]");
   p.film.range = {samples[0].get<uint32_t>(), samples[1].get<uint32_t>()};
   obj.finish();
@@ -74,9 +81,7 @@ Partial read_partial(const std::string& path) {
 
 SampleRange parse_sample_range(const std::string& text, uint32_t spp) {
   const size_t colon = text.find(':');
-  const auto bad = [&](const std::string& why) {
-    return InputError("--samples " + text + ": " + why);
-  };
+  const auto bad = [&](const std::string& why) { return InputError("--samples " + text + ": " + why); };
   if (colon == std::string::npos) throw bad("expected A:B, the samples [A, B) of every pixel");
   uint64_t a = 0, b = 0;
   try {

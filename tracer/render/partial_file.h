@@ -7,8 +7,8 @@
 #pragma once
 #include <string>
 
-#include "render/film_buffer.h"
 #include "io/json_reader.h"
+#include "render/film_buffer.h"
 
 namespace tracer {
 

@@ -7,7 +7,9 @@
 namespace tracer {
 
 ProgressBar::ProgressBar(uint64_t total, bool enabled)
-    : total_(total), enabled_(enabled && isatty(STDERR_FILENO)), start_(std::chrono::steady_clock::now()),
+    : total_(total),
+      enabled_(enabled && isatty(STDERR_FILENO)),
+      start_(std::chrono::steady_clock::now()),
       last_draw_(start_) {}
 
 void ProgressBar::update(uint64_t done) {

@@ -26,7 +26,8 @@ FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, R
 
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : camera, secondary, shadow, nonfinite, overflow)
   for (int64_t tile = 0; tile < tile_count; ++tile) {
-    const uint32_t x0 = static_cast<uint32_t>(tile % tiles_x) * kTile, y0 = static_cast<uint32_t>(tile / tiles_x) * kTile;
+    const uint32_t x0 = static_cast<uint32_t>(tile % tiles_x) * kTile,
+                   y0 = static_cast<uint32_t>(tile / tiles_x) * kTile;
     RayCounts counts{};
     for (uint32_t y = y0; y < std::min(y0 + kTile, h); ++y) {
       for (uint32_t x = x0; x < std::min(x0 + kTile, w); ++x) {

@@ -5,9 +5,9 @@
 #pragma once
 #include <functional>
 
-#include "render/film_buffer.h"
 #include "image/image.h"
 #include "kernel/integrator/ray_counts.h"
+#include "render/film_buffer.h"
 #include "scene/scene.h"
 
 namespace tracer {

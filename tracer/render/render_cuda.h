@@ -12,8 +12,8 @@
 namespace tracer {
 
 struct CudaRunInfo {
-  std::string device;         // "NVIDIA H100 80GB HBM3 (sm_90, 79.1 GiB)"
-  size_t device_bytes = 0;    // scene arrays + image + counters on the device
+  std::string device;       // "NVIDIA H100 80GB HBM3 (sm_90, 79.1 GiB)"
+  size_t device_bytes = 0;  // scene arrays + image + counters on the device
   double upload_seconds = 0, kernel_seconds = 0, download_seconds = 0;
 };
 

@@ -33,7 +33,8 @@ CameraSpec read_camera_spec(const Json& value, const std::string& file) {
   if (!(spec.vfov_degrees > 0.0f && spec.vfov_degrees < 180.0f)) obj.fail("vfov", "must be in (0, 180) degrees");
   if (!(spec.aperture >= 0.0f)) obj.fail("aperture", "must be >= 0");
   if (!(spec.focus_distance > 0.0f)) obj.fail("focus_distance", "must be > 0");
-  if (!(length(cross(spec.up, spec.to - spec.from)) > 0.0f)) obj.fail("up", "must not be parallel to the view direction");
+  if (!(length(cross(spec.up, spec.to - spec.from)) > 0.0f))
+    obj.fail("up", "must not be parallel to the view direction");
   obj.finish();
   return spec;
 }

@@ -27,7 +27,10 @@ PointLight read_light(const Json& value, const std::string& path, const std::str
 }
 
 Background read_background(const Json* value, const std::string& file, std::string& type, TextureLoader& textures) {
-  Background bg{BackgroundKind::Constant, {0, 0, 0}, {0, 0, 0}, {kNoTexture, kNoTexture, kNoTexture, kNoTexture, kNoTexture, kNoTexture}};
+  Background bg{BackgroundKind::Constant,
+                {0, 0, 0},
+                {0, 0, 0},
+                {kNoTexture, kNoTexture, kNoTexture, kNoTexture, kNoTexture, kNoTexture}};
   type = "constant";
   if (!value) return bg;
   JsonObject obj(*value, "background", file);

@@ -30,10 +30,12 @@ double build_sky_cells(Scene& scene) {
         float brightest = 0.0f;
         for (uint32_t j = 0; j <= steps; ++j)
           for (uint32_t i = 0; i <= steps; ++i) {
-            const float fx = static_cast<float>(i) / static_cast<float>(steps), fy = static_cast<float>(j) / static_cast<float>(steps);
+            const float fx = static_cast<float>(i) / static_cast<float>(steps),
+                        fy = static_cast<float>(j) / static_cast<float>(steps);
             const float a = 2.0f * (static_cast<float>(cx) + fx) / static_cast<float>(n) - 1.0f;
             const float b = 2.0f * (static_cast<float>(cy) + fy) / static_cast<float>(n) - 1.0f;
-            brightest = std::max(brightest, luminance(background_radiance(view, normalize(cube_direction(face, a, b)))));
+            brightest =
+                std::max(brightest, luminance(background_radiance(view, normalize(cube_direction(face, a, b)))));
           }
         const double a = 2.0 * (cx + 0.5) / n - 1.0, b = 2.0 * (cy + 0.5) / n - 1.0;
         const double solid_angle = 4.0 / (static_cast<double>(n) * n) / std::pow(1.0 + a * a + b * b, 1.5);
@@ -46,8 +48,8 @@ double build_sky_cells(Scene& scene) {
   float previous = 0.0f;
   for (size_t i = 0; i < weight.size(); ++i) {
     running += weight[i];
-    const float cdf = i + 1 == weight.size() ? 1.0f
-                                             : static_cast<float>(std::round(running / luminance_integral * 0x1p24) * 0x1p-24);
+    const float cdf =
+        i + 1 == weight.size() ? 1.0f : static_cast<float>(std::round(running / luminance_integral * 0x1p24) * 0x1p-24);
     scene.sky_cells[i] = {cdf - previous, cdf};
     previous = cdf;
   }

@@ -48,12 +48,14 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.kind = MaterialKind::Emissive;
     m.radiance = textures.colour(obj, "radiance", m.texture[kSlotRadiance]);
     m.two_sided = obj.boolean_or("two_sided", false) ? 1u : 0u;
-    m.albedo = textures.colour_or(obj, "albedo", {0.0f, 0.0f, 0.0f}, m.texture[kSlotAlbedo]);  // an emitter that also reflects
+    m.albedo =
+        textures.colour_or(obj, "albedo", {0.0f, 0.0f, 0.0f}, m.texture[kSlotAlbedo]);  // an emitter that also reflects
   }
   if (type != "dielectric" && type != "emissive") {  // surfaces with a diffuse or glossy response
     m.normal_map = textures.data_map(obj, "normal_map");
     m.bump_map = textures.data_map(obj, "bump_map");
-    if (m.normal_map != kNoTexture && m.bump_map != kNoTexture) obj.fail("bump_map", "give a normal_map or a bump_map, not both");
+    if (m.normal_map != kNoTexture && m.bump_map != kNoTexture)
+      obj.fail("bump_map", "give a normal_map or a bump_map, not both");
   }
   obj.finish();
   return m;

@@ -31,7 +31,7 @@ struct MtlMaterial {
 // Loads an OBJ file with tinyobjloader; polygons are fan-triangulated (v0, vk, vk+1).
 // `key_path` names the scene key that referred to the file, for error messages.
 // With `materials`, also returns the MTL materials (an error when the file names none).
-std::vector<MeshTriangle> load_obj(const std::string& path, const std::string& scene_file,
-                                   const std::string& key_path, std::vector<MtlMaterial>* materials = nullptr);
+std::vector<MeshTriangle> load_obj(const std::string& path, const std::string& scene_file, const std::string& key_path,
+                                   std::vector<MtlMaterial>* materials = nullptr);
 
 }  // namespace tracer

@@ -52,8 +52,10 @@ Material material_from_mtl(const MtlMaterial& mtl, TextureLoader& textures, cons
   }
   if (type == "lambert" || type == "metal" || type == "phong") {
     Vec3 mean;
-    if (!mtl.norm.empty()) m.normal_map = textures.image_file(at, file(mtl.norm), true, mean);
-    else if (!mtl.map_bump.empty()) m.bump_map = textures.image_file(at, file(mtl.map_bump), true, mean);
+    if (!mtl.norm.empty())
+      m.normal_map = textures.image_file(at, file(mtl.norm), true, mean);
+    else if (!mtl.map_bump.empty())
+      m.bump_map = textures.image_file(at, file(mtl.map_bump), true, mean);
   }
   return m;
 }

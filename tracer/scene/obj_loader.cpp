@@ -7,8 +7,8 @@
 
 namespace tracer {
 
-std::vector<MeshTriangle> load_obj(const std::string& path, const std::string& scene_file,
-                                   const std::string& key_path, std::vector<MtlMaterial>* materials) {
+std::vector<MeshTriangle> load_obj(const std::string& path, const std::string& scene_file, const std::string& key_path,
+                                   std::vector<MtlMaterial>* materials) {
   auto fail = [&](const std::string& message) -> void {
     throw InputError(scene_file + ": " + key_path + ": " + path + ": " + message);
   };
@@ -19,8 +19,7 @@ std::vector<MeshTriangle> load_obj(const std::string& path, const std::string& s
   tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(path, config)) fail("malformed OBJ: " + reader.Error());
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
-  const size_t nv = attrib.vertices.size() / 3, nn = attrib.normals.size() / 3,
-               nt = attrib.texcoords.size() / 2;
+  const size_t nv = attrib.vertices.size() / 3, nn = attrib.normals.size() / 3, nt = attrib.texcoords.size() / 2;
   std::vector<MeshTriangle> out;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     size_t offset = 0;
@@ -42,8 +41,7 @@ std::vector<MeshTriangle> load_obj(const std::string& path, const std::string& s
         tri.has_normals = tri.has_uvs = true;
         tri.mtl = f < shape.mesh.material_ids.size() ? shape.mesh.material_ids[f] : -1;
         for (int c = 0; c < 3; ++c) {
-          const int vi = corners[c].vertex_index, ni = corners[c].normal_index,
-                    ti = corners[c].texcoord_index;
+          const int vi = corners[c].vertex_index, ni = corners[c].normal_index, ti = corners[c].texcoord_index;
           tri.p[c] = {attrib.vertices[3 * vi], attrib.vertices[3 * vi + 1], attrib.vertices[3 * vi + 2]};
           if (ni >= 0)
             tri.n[c] = {attrib.normals[3 * ni], attrib.normals[3 * ni + 1], attrib.normals[3 * ni + 2]};
@@ -69,7 +67,8 @@ std::vector<MeshTriangle> load_obj(const std::string& path, const std::string& s
     const auto& mtl = reader.GetMaterials();
     if (mtl.empty())
       fail("the mesh has no \"material\" and its OBJ names no MTL materials" +
-           (reader.Warning().empty() ? std::string() : " (" + reader.Warning().substr(0, reader.Warning().find('\n')) + ")"));
+           (reader.Warning().empty() ? std::string()
+                                     : " (" + reader.Warning().substr(0, reader.Warning().find('\n')) + ")"));
     for (const tinyobj::material_t& m : mtl) {
       MtlMaterial out_m;
       out_m.name = m.name;

@@ -33,8 +33,10 @@ uint32_t shape_feature(ShapeKind kind) {
 float ray_offset_scale(const Scene& scene) {
   Bounds b;
   for (const Primitive& p : scene.primitives) {
-    if (p.kind == ShapeKind::Plane) b.grow(p.a);
-    else b.grow(primitive_bounds(p));
+    if (p.kind == ShapeKind::Plane)
+      b.grow(p.a);
+    else
+      b.grow(primitive_bounds(p));
   }
   b.grow(scene.camera.origin);
   for (const PointLight& l : scene.lights) b.grow(l.position);
@@ -87,14 +89,16 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
     materials.find(item.key());
     material_ids[item.key()] = static_cast<uint32_t>(scene.materials.size());
     material_types.emplace_back();
-    scene.materials.push_back(read_material(item.value(), materials.child(item.key()), path, material_types.back(), textures));
+    scene.materials.push_back(
+        read_material(item.value(), materials.child(item.key()), path, material_types.back(), textures));
     scene.material_names.push_back(item.key());
   }
 
   if (const Json* lights = top.find("lights")) {
     if (!lights->is_array()) top.fail("lights", "expected an array, got " + describe(*lights));
     for (size_t i = 0; i < lights->size(); ++i)
-      scene.lights.push_back(read_light((*lights)[i], "lights[" + std::to_string(i) + "]", path, scene.report.used_types));
+      scene.lights.push_back(
+          read_light((*lights)[i], "lights[" + std::to_string(i) + "]", path, scene.report.used_types));
   }
 
   read_shapes(top.get("shapes"), path, material_ids, material_types, textures, scene);
@@ -111,7 +115,8 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
   scene.offset_scale = ray_offset_scale(scene);
   build_light_table(scene);
   const auto build_start = std::chrono::steady_clock::now();
-  install_acceleration(build_acceleration(scene.settings.accel, scene.primitives, scene.settings.grid_resolution), scene);
+  install_acceleration(build_acceleration(scene.settings.accel, scene.primitives, scene.settings.grid_resolution),
+                       scene);
   scene.report.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
   return scene;
 }
@@ -121,9 +126,9 @@ Scene load_scene(const std::string& path, const RenderOverrides& overrides) {
 }
 
 std::vector<std::string> feature_names(uint32_t features) {
-  static const char* names[] = {"sphere",     "plane",   "triangle", "quad",        "lambert",   "metal",
-                                "dielectric", "phong",   "emissive", "point-light", "thin-lens", "shading-normals",
-                                "textures"};
+  static const char* names[] = {"sphere",    "plane",           "triangle", "quad",     "lambert",
+                                "metal",     "dielectric",      "phong",    "emissive", "point-light",
+                                "thin-lens", "shading-normals", "textures"};
   std::vector<std::string> out;
   for (uint32_t i = 0; i < sizeof names / sizeof names[0]; ++i)
     if (features & (1u << i)) out.push_back(names[i]);

@@ -11,8 +11,7 @@ namespace tracer {
 Scene load_scene(const std::string& path, const RenderOverrides& overrides = {});
 
 // Parses scene text as if it were the file `path` (relative paths resolve next to it).
-Scene load_scene_text(const std::string& text, const std::string& path,
-                      const RenderOverrides& overrides = {});
+Scene load_scene_text(const std::string& text, const std::string& path, const RenderOverrides& overrides = {});
 
 // Names of feature bits set in a mask, for `tracer info` and the stats file.
 std::vector<std::string> feature_names(uint32_t features);

@@ -36,7 +36,8 @@ RenderSettings read_settings(const Json* render, const Json& film, const std::st
     throw InputError(where("grid_resolution") + ": must be at most 1024 cells along the longest axis");
   for (const auto& [size, name] : {std::pair{rs.width, "width"}, std::pair{rs.height, "height"}})
     if (size < 1 || size > kMaxResolution)
-      throw InputError(where(name) + ": must be in [1, " + std::to_string(kMaxResolution) + "], got " + std::to_string(size));
+      throw InputError(where(name) + ": must be in [1, " + std::to_string(kMaxResolution) + "], got " +
+                       std::to_string(size));
   rs.grid_n = 1;
   while (static_cast<uint64_t>(rs.grid_n) * rs.grid_n < rs.spp) ++rs.grid_n;
   const bool square = static_cast<uint64_t>(rs.grid_n) * rs.grid_n == rs.spp;

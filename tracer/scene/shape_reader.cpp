@@ -35,8 +35,7 @@ Transform read_transform(const Json& value, const std::string& path, const std::
     if (step.find("translate")) {
       t = Transform::translation(step.vec3("translate"));
     } else if (const Json* s = step.find("scale")) {
-      const Vec3 f = s->is_number() ? Vec3{1, 1, 1} * read_number(*s, step.child("scale"), file)
-                                    : step.vec3("scale");
+      const Vec3 f = s->is_number() ? Vec3{1, 1, 1} * read_number(*s, step.child("scale"), file) : step.vec3("scale");
       if (f.x == 0.0f || f.y == 0.0f || f.z == 0.0f) step.fail("scale", "a scale factor of 0 collapses the shape");
       t = Transform::scaling(f);
     } else if (step.find("rotate")) {
@@ -62,19 +61,20 @@ class ShapeReader {
   ShapeReader(Scene& scene, const std::string& dir, TextureLoader& textures)
       : scene_(scene), dir_(dir), textures_(textures) {}
 
-  void add_shape(const Json& value, const std::string& path,
-                 const std::map<std::string, uint32_t>& material_ids,
+  void add_shape(const Json& value, const std::string& path, const std::map<std::string, uint32_t>& material_ids,
                  const std::vector<std::string>& material_types) {
     JsonObject obj(value, path, scene_.file);
     const std::string type = obj.string("type");
     if (!is_accepted_type("shape", type))
       obj.fail("type", "unknown shape type \"" + type + "\" (expected " + expected_types("shape") + ")");
     const Json* tv = obj.find("transform");
-    const Transform xf = tv ? read_transform(*tv, obj.child("transform"), scene_.file, scene_.report.used_types) : Transform{};
+    const Transform xf =
+        tv ? read_transform(*tv, obj.child("transform"), scene_.file, scene_.report.used_types) : Transform{};
     const Json* mat = obj.find("material");
     if (!mat && type == "mesh" && obj.find("file")) return add_mtl_mesh(obj, xf);
-    if (!mat) obj.fail("material", type == "mesh" ? "missing: give the mesh a \"material\", or a file whose MTL has them"
-                                                  : "missing required key");
+    if (!mat)
+      obj.fail("material", type == "mesh" ? "missing: give the mesh a \"material\", or a file whose MTL has them"
+                                          : "missing required key");
     if (!mat->is_string()) obj.fail("material", "expected a material name, got " + describe(*mat));
     const auto it = material_ids.find(mat->get<std::string>());
     if (it == material_ids.end()) obj.fail("material", "unknown material \"" + mat->get<std::string>() + "\"");
@@ -127,7 +127,8 @@ class ShapeReader {
     const uint32_t base = static_cast<uint32_t>(scene_.materials.size());
     for (const MtlMaterial& mtl : mtls) {
       std::string type;
-      scene_.materials.push_back(material_from_mtl(mtl, textures_, file.parent_path().string(), obj.child("file"), type));
+      scene_.materials.push_back(
+          material_from_mtl(mtl, textures_, file.parent_path().string(), obj.child("file"), type));
       scene_.material_names.push_back(file.filename().string() + ":" + mtl.name);
       scene_.report.used_types.insert("material:" + type);
     }
@@ -154,15 +155,15 @@ class ShapeReader {
   }
 
   void add_quad(JsonObject& obj, Vec3 corner, Vec3 u, Vec3 v, uint32_t material) {
-    if (!has_unit_normal(u, v)) obj.fail("", "zero-area quad (u and v are parallel or zero, or its normal under- or overflows a float)");
+    if (!has_unit_normal(u, v))
+      obj.fail("", "zero-area quad (u and v are parallel or zero, or its normal under- or overflows a float)");
     add({ShapeKind::Quad, material, -1, 0.0f, corner, u, v});
   }
 
   void add_box(JsonObject& obj, Vec3 lo, Vec3 hi, const Transform& xf, uint32_t material) {
     const Vec3 dx = {hi.x - lo.x, 0, 0}, dy = {0, hi.y - lo.y, 0}, dz = {0, 0, hi.z - lo.z};
     // Six faces with outward normals cross(u, v).
-    const Vec3 faces[6][3] = {{lo, dx, dz},      {lo, dy, dx},      {lo, dz, dy},
-                              {hi, -dz, -dx},    {hi, -dx, -dy},    {hi, -dy, -dz}};
+    const Vec3 faces[6][3] = {{lo, dx, dz}, {lo, dy, dx}, {lo, dz, dy}, {hi, -dz, -dx}, {hi, -dx, -dy}, {hi, -dy, -dz}};
     for (const auto& f : faces) add_quad(obj, xf.point(f[0]), xf.vector(f[1]), xf.vector(f[2]), material);
   }
 
@@ -170,15 +171,20 @@ class ShapeReader {
     const Json& vs = obj.get("vertices");
     if (!vs.is_array() || vs.size() != 3) obj.fail("vertices", "expected 3 vertices, got " + describe(vs));
     MeshTriangle t;
-    for (int i = 0; i < 3; ++i) t.p[i] = read_vec3(vs[i], obj.child("vertices") + "[" + std::to_string(i) + "]", scene_.file);
+    for (int i = 0; i < 3; ++i)
+      t.p[i] = read_vec3(vs[i], obj.child("vertices") + "[" + std::to_string(i) + "]", scene_.file);
     if (const Json* ns = obj.find("normals")) {
       if (!ns->is_array() || ns->size() != 3) obj.fail("normals", "expected 3 normals, got " + describe(*ns));
-      for (int i = 0; i < 3; ++i) t.n[i] = read_vec3((*ns)[i], obj.child("normals") + "[" + std::to_string(i) + "]", scene_.file);
+      for (int i = 0; i < 3; ++i)
+        t.n[i] = read_vec3((*ns)[i], obj.child("normals") + "[" + std::to_string(i) + "]", scene_.file);
       t.has_normals = true;
     }
     if (const Json* uvs = obj.find("uvs")) {
       if (!uvs->is_array() || uvs->size() != 3) obj.fail("uvs", "expected 3 uv pairs, got " + describe(*uvs));
-      read_uvs(*uvs, obj.child("uvs"), [&](size_t i, float u, float v) { t.uv[i][0] = u; t.uv[i][1] = v; });
+      read_uvs(*uvs, obj.child("uvs"), [&](size_t i, float u, float v) {
+        t.uv[i][0] = u;
+        t.uv[i][1] = v;
+      });
       t.has_uvs = true;
     }
     return t;
@@ -220,7 +226,8 @@ class ShapeReader {
       for (int c = 0; c < 3; ++c) {
         const Json& iv = is[t][c];
         if (!iv.is_number_unsigned() || iv.get<uint64_t>() >= positions.size())
-          fail_at(scene_.file, p + "[" + std::to_string(c) + "]", "expected an index below " + std::to_string(positions.size()) + ", got " + describe(iv));
+          fail_at(scene_.file, p + "[" + std::to_string(c) + "]",
+                  "expected an index below " + std::to_string(positions.size()) + ", got " + describe(iv));
         const size_t k = iv.get<size_t>();
         tri.p[c] = positions[k];
         if (!normals.empty()) tri.n[c] = normals[k];

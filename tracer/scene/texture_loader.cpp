@@ -27,8 +27,10 @@ Vec3 TextureLoader::colour(JsonObject& obj, const std::string& key, uint32_t& te
   if (spec.find("texture")) {
     const std::string file = spec.string("texture");
     const std::string wrap = spec.string_or("wrap", "repeat");
-    if (wrap != "repeat" && wrap != "clamp") spec.fail("wrap", "expected \"repeat\" or \"clamp\", got \"" + wrap + "\"");
-    texture = image(spec.child("texture"), resolve(file), wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat, mean);
+    if (wrap != "repeat" && wrap != "clamp")
+      spec.fail("wrap", "expected \"repeat\" or \"clamp\", got \"" + wrap + "\"");
+    texture =
+        image(spec.child("texture"), resolve(file), wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat, mean);
     scene_.report.used_types.insert("texture:image");
   } else if (spec.find("checker")) {
     JsonObject checker(spec.get("checker"), spec.child("checker"), obj.file());
@@ -71,10 +73,12 @@ void TextureLoader::cube_faces(JsonObject& background, uint32_t faces[6]) {
     const Texture& t = scene_.textures[faces[i]];
     const Texture& first = scene_.textures[faces[0]];
     if (t.width != t.height)
-      fail_at(background.file(), where, "cube faces must be square, got " + std::to_string(t.width) + "x" + std::to_string(t.height));
+      fail_at(background.file(), where,
+              "cube faces must be square, got " + std::to_string(t.width) + "x" + std::to_string(t.height));
     if (t.width != first.width)
-      fail_at(background.file(), where, "cube faces must all be the same size: " + std::to_string(t.width) + " against " +
-                                             std::to_string(first.width) + " for faces[0]");
+      fail_at(background.file(), where,
+              "cube faces must all be the same size: " + std::to_string(t.width) + " against " +
+                  std::to_string(first.width) + " for faces[0]");
   }
   scene_.features |= kFeatureTextures;
 }
@@ -94,7 +98,8 @@ uint32_t TextureLoader::data_map(JsonObject& obj, const std::string& key) {
   return index;
 }
 
-uint32_t TextureLoader::image(const std::string& where, const std::string& path, TextureWrap wrap, Vec3& mean, bool data) {
+uint32_t TextureLoader::image(const std::string& where, const std::string& path, TextureWrap wrap, Vec3& mean,
+                              bool data) {
   const auto known = loaded_.find({path, wrap, data});
   if (known != loaded_.end()) {
     mean = known->second.second;
@@ -103,14 +108,16 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& path,
   const std::string& scene_file = scene_.file;
   OIIO::ImageBuf buf(path);
   if (!std::filesystem::is_regular_file(path)) fail_at(scene_file, where, "image " + path + " does not exist");
-  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) fail_at(scene_file, where, "cannot read image " + path + ": " + buf.geterror());
+  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
+    fail_at(scene_file, where, "cannot read image " + path + ": " + buf.geterror());
   const OIIO::ImageSpec& s = buf.spec();
   if (s.nchannels != 1 && s.nchannels != 3 && s.nchannels != 4)
     fail_at(scene_file, where, path + ": expected 1, 3 or 4 channels, got " + std::to_string(s.nchannels));
   if (s.width < 1 || s.height < 1) fail_at(scene_file, where, path + ": empty image");
   const bool srgb = !data && !buf.nativespec().format.is_floating_point();
   std::vector<float> pixels(size_t(s.width) * s.height * s.nchannels);
-  buf.get_pixels(OIIO::ROI(s.x, s.x + s.width, s.y, s.y + s.height, 0, 1, 0, s.nchannels), OIIO::TypeDesc::FLOAT, pixels.data());
+  buf.get_pixels(OIIO::ROI(s.x, s.x + s.width, s.y, s.y + s.height, 0, 1, 0, s.nchannels), OIIO::TypeDesc::FLOAT,
+                 pixels.data());
   Texture t{};
   t.kind = TextureKind::Image;
   t.wrap = wrap;

@@ -6,8 +6,8 @@
 // colour itself is set to the texture's mean, the value light power and debug views use.
 #pragma once
 #include <map>
-#include <tuple>
 #include <string>
+#include <tuple>
 
 #include "io/json_reader.h"
 #include "scene/scene.h"

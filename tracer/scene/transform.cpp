@@ -11,8 +11,7 @@ Vec3 Transform::vector(Vec3 v) const {
 
 Vec3 Transform::normal(Vec3 n) const {
   // cofactor matrix = det * inverse transpose; dividing by |det| keeps the orientation
-  const Vec3 r0 = {m[0][0], m[0][1], m[0][2]}, r1 = {m[1][0], m[1][1], m[1][2]},
-             r2 = {m[2][0], m[2][1], m[2][2]};
+  const Vec3 r0 = {m[0][0], m[0][1], m[0][2]}, r1 = {m[1][0], m[1][1], m[1][2]}, r2 = {m[2][0], m[2][1], m[2][2]};
   const Vec3 c0 = cross(r1, r2), c1 = cross(r2, r0), c2 = cross(r0, r1);
   const float det = dot(r0, c0);
   const Vec3 out = c0 * n.x + c1 * n.y + c2 * n.z;
@@ -22,8 +21,7 @@ Vec3 Transform::normal(Vec3 n) const {
 Transform Transform::then(const Transform& next) const {
   Transform r;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      r.m[i][j] = next.m[i][0] * m[0][j] + next.m[i][1] * m[1][j] + next.m[i][2] * m[2][j];
+    for (int j = 0; j < 3; ++j) r.m[i][j] = next.m[i][0] * m[0][j] + next.m[i][1] * m[1][j] + next.m[i][2] * m[2][j];
   r.t = next.point(t);
   r.uniform_scale = uniform_scale && next.uniform_scale;
   r.scale = scale * next.scale;

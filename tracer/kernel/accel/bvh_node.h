@@ -21,8 +21,7 @@ TRACER_HD Vec3 inverse_direction(Vec3 d) { return {1.0f / d.x, 1.0f / d.y, 1.0f 
 // ray touches. NaN from 0 * inf leaves the interval unchanged (conservative).
 constexpr float kSlabWiden = 1.0f + 2.0f * error_gamma(3);
 
-TRACER_HD bool ray_box(Vec3 lo, Vec3 hi, Vec3 origin, Vec3 inv_dir, float tmin, float tmax,
-                       float& t_enter) {
+TRACER_HD bool ray_box(Vec3 lo, Vec3 hi, Vec3 origin, Vec3 inv_dir, float tmin, float tmax, float& t_enter) {
   for (int axis = 0; axis < 3; ++axis) {
     float t0 = (lo[axis] - origin[axis]) * inv_dir[axis];
     float t1 = (hi[axis] - origin[axis]) * inv_dir[axis];

@@ -7,10 +7,10 @@
 namespace tracer {
 
 struct GridInfo {
-  Vec3 lo, hi;   // the grid's box
-  Vec3 cell;     // cell size per axis
-  uint32_t n[3]; // cells per axis; 0 when there is no grid
-  float pad;     // world-space widening of primitive bounds and shrinking of cell exits
+  Vec3 lo, hi;    // the grid's box
+  Vec3 cell;      // cell size per axis
+  uint32_t n[3];  // cells per axis; 0 when there is no grid
+  float pad;      // world-space widening of primitive bounds and shrinking of cell exits
 };
 
 }  // namespace tracer

@@ -18,8 +18,7 @@ struct Hit {
 };
 
 // Tests one primitive; keeps it when (t, id) is below the best so far.
-TRACER_HD void test_primitive(const SceneView& scene, uint32_t id, const Ray& ray,
-                              const RayShear& shear, Hit& best) {
+TRACER_HD void test_primitive(const SceneView& scene, uint32_t id, const Ray& ray, const RayShear& shear, Hit& best) {
   const Primitive& p = scene.primitives[id];
   float t = 0.0f, b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;
   bool hit = false;

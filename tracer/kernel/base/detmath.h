@@ -30,7 +30,7 @@ constexpr double kLn2Lo = 0x1.a39ef35793c76p-33;
 constexpr double kInvLn2 = 0x1.71547652b82fep+0;
 
 struct Reduced {
-  double r;    // in [-pi/4, pi/4]
+  double r;      // in [-pi/4, pi/4]
   int quadrant;  // x = (4k + quadrant) * pi/2 + r
 };
 
@@ -104,9 +104,7 @@ TRACER_HD double atan_unit(double t) {
 }
 
 // atan for t >= 0 (t may be +inf).
-TRACER_HD double atan_nonneg(double t) {
-  return t > 1.0 ? kPiOver2 - atan_unit(1.0 / t) : atan_unit(t);
-}
+TRACER_HD double atan_nonneg(double t) { return t > 1.0 ? kPiOver2 - atan_unit(1.0 / t) : atan_unit(t); }
 
 // e^x in double: x = k ln2 + r (Cody-Waite), |r| <= ln2/2, Taylor to r^13.
 TRACER_HD double exp_d(double x) {

@@ -9,8 +9,8 @@
 
 namespace tracer {
 
-constexpr double kFilmUnits = 4294967296.0;          // 2^32 film units per unit of radiance
-constexpr double kFilmSampleLimit = 1073741824.0;    // 2^30: larger samples are rejected
+constexpr double kFilmUnits = 4294967296.0;              // 2^32 film units per unit of radiance
+constexpr double kFilmSampleLimit = 1073741824.0;        // 2^30: larger samples are rejected
 constexpr int64_t kFilmSumLimit = 0x3fffffffffffffffll;  // |sum| stays below 2^62
 
 struct FilmSum {

@@ -31,10 +31,9 @@ TRACER_HD float uniform_from_bits(uint32_t u) { return static_cast<float>(u >> 8
 // Two uniforms for dimension `dimension` of one sample of one pixel. The counter is
 // (pixel, sample, dimension, 0) and the key the 64-bit seed: no state crosses pixels or
 // samples, so thread count, tile order and device cannot change a number.
-TRACER_HD void sample_uniform2(uint64_t seed, uint32_t pixel, uint32_t sample, uint32_t dimension,
-                               float& a, float& b) {
-  const Philox4 r = philox4x32_10({{pixel, sample, dimension, 0u}}, static_cast<uint32_t>(seed),
-                                  static_cast<uint32_t>(seed >> 32));
+TRACER_HD void sample_uniform2(uint64_t seed, uint32_t pixel, uint32_t sample, uint32_t dimension, float& a, float& b) {
+  const Philox4 r =
+      philox4x32_10({{pixel, sample, dimension, 0u}}, static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32));
   a = uniform_from_bits(r.v[0]);
   b = uniform_from_bits(r.v[1]);
 }

@@ -73,14 +73,18 @@ TRACER_HD double det_sqrt(double x) {
 TRACER_HD bool is_nan(float x) { return x != x; }
 TRACER_HD bool is_nan(double x) { return x != x; }
 TRACER_HD bool is_finite(float x) { return (bits_of(x) & 0x7f800000u) != 0x7f800000u; }
-TRACER_HD bool is_finite(double x) {
-  return (bits_of(x) & 0x7ff0000000000000ull) != 0x7ff0000000000000ull;
-}
+TRACER_HD bool is_finite(double x) { return (bits_of(x) & 0x7ff0000000000000ull) != 0x7ff0000000000000ull; }
 
 // min/max with a fixed NaN rule (the second operand wins when a comparison fails), the
 // same on every compiler; fminf/fmaxf differ in how they treat NaN and signed zero.
-template <class T> TRACER_HD T min_of(T a, T b) { return a < b ? a : b; }
-template <class T> TRACER_HD T max_of(T a, T b) { return a > b ? a : b; }
+template <class T>
+TRACER_HD T min_of(T a, T b) {
+  return a < b ? a : b;
+}
+template <class T>
+TRACER_HD T max_of(T a, T b) {
+  return a > b ? a : b;
+}
 TRACER_HD float abs_of(float x) { return float_of_bits(bits_of(x) & 0x7fffffffu); }
 TRACER_HD double abs_of(double x) { return double_of_bits(bits_of(x) & 0x7fffffffffffffffull); }
 TRACER_HD float clamp_of(float x, float lo, float hi) { return min_of(max_of(x, lo), hi); }

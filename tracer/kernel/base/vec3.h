@@ -23,9 +23,7 @@ TRACER_HD Vec3& operator*=(Vec3& a, Vec3 b) { return a = a * b; }
 TRACER_HD bool operator==(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
 TRACER_HD float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-TRACER_HD Vec3 cross(Vec3 a, Vec3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
+TRACER_HD Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 TRACER_HD float length(Vec3 a) { return det_sqrt(dot(a, a)); }
 TRACER_HD Vec3 normalize(Vec3 a) { return a / length(a); }
 TRACER_HD Vec3 min_of(Vec3 a, Vec3 b) { return {min_of(a.x, b.x), min_of(a.y, b.y), min_of(a.z, b.z)}; }

@@ -8,19 +8,15 @@ enum class SamplerKind : uint32_t { Center, Grid, Stochastic, Stratified };
 
 // Offset in [0,1)^2 inside the pixel of sample `s` of `spp`; `grid_n` = sqrt(spp) for the
 // grid and stratified samplers (the loader checks that spp is a square).
-TRACER_HD void film_offset(SamplerKind kind, uint32_t grid_n, uint64_t seed, uint32_t pixel,
-                           uint32_t s, float& ox, float& oy) {
+TRACER_HD void film_offset(SamplerKind kind, uint32_t grid_n, uint64_t seed, uint32_t pixel, uint32_t s, float& ox,
+                           float& oy) {
   switch (kind) {
-    case SamplerKind::Center:
-      ox = oy = 0.5f;
-      return;
+    case SamplerKind::Center: ox = oy = 0.5f; return;
     case SamplerKind::Grid:
       ox = (static_cast<float>(s % grid_n) + 0.5f) / static_cast<float>(grid_n);
       oy = (static_cast<float>(s / grid_n) + 0.5f) / static_cast<float>(grid_n);
       return;
-    case SamplerKind::Stochastic:
-      sample_uniform2(seed, pixel, s, kDimFilm, ox, oy);
-      return;
+    case SamplerKind::Stochastic: sample_uniform2(seed, pixel, s, kDimFilm, ox, oy); return;
     case SamplerKind::Stratified: {
       float jx, jy;
       sample_uniform2(seed, pixel, s, kDimFilm, jx, jy);

@@ -5,8 +5,7 @@
 
 namespace tracer {
 
-TRACER_HD bool intersect_plane(Vec3 point, Vec3 normal, const Ray& ray, float tmin, float tmax,
-                               float& t_out) {
+TRACER_HD bool intersect_plane(Vec3 point, Vec3 normal, const Ray& ray, float tmin, float tmax, float& t_out) {
   const float denom = dot(ray.dir, normal);
   if (denom == 0.0f) return false;
   const Vec3 rel_origin = point - ray.origin;

@@ -5,8 +5,8 @@
 
 namespace tracer {
 
-TRACER_HD bool intersect_quad(Vec3 corner, Vec3 u, Vec3 v, const Ray& ray, float tmin, float tmax,
-                              float& t_out, float& alpha, float& beta) {
+TRACER_HD bool intersect_quad(Vec3 corner, Vec3 u, Vec3 v, const Ray& ray, float tmin, float tmax, float& t_out,
+                              float& alpha, float& beta) {
   const Vec3 n = cross(u, v);
   float t = 0.0f;
   if (!intersect_plane(corner, n, ray, tmin, tmax, t)) return false;

@@ -6,8 +6,7 @@
 namespace tracer {
 
 // Smallest root t with tmin < t <= tmax, written to t_out.
-TRACER_HD bool intersect_sphere(Vec3 center, float radius, const Ray& ray, float tmin, float tmax,
-                                float& t_out) {
+TRACER_HD bool intersect_sphere(Vec3 center, float radius, const Ray& ray, float tmin, float tmax, float& t_out) {
   const Vec3 f = ray.origin - center;
   const float b = dot(f, ray.dir);
   const Vec3 l = f - ray.dir * b;  // f minus its projection on the ray

@@ -31,9 +31,8 @@ TRACER_HD RayShear make_ray_shear(Vec3 d) {
 }
 
 // On a hit writes t and the barycentric weights (b0, b1, b2) of v0, v1, v2.
-TRACER_HD bool intersect_triangle(Vec3 v0, Vec3 v1, Vec3 v2, const Ray& ray, const RayShear& s,
-                                  float tmin, float tmax, float& t_out, float& b0, float& b1,
-                                  float& b2) {
+TRACER_HD bool intersect_triangle(Vec3 v0, Vec3 v1, Vec3 v2, const Ray& ray, const RayShear& s, float tmin, float tmax,
+                                  float& t_out, float& b0, float& b1, float& b2) {
   const Vec3 a = v0 - ray.origin, b = v1 - ray.origin, c = v2 - ray.origin;
   const float ax = a[s.kx] - s.sx * a[s.kz], ay = a[s.ky] - s.sy * a[s.kz];
   const float bx = b[s.kx] - s.sx * b[s.kz], by = b[s.ky] - s.sy * b[s.kz];
@@ -66,8 +65,7 @@ TRACER_HD bool intersect_triangle(Vec3 v0, Vec3 v1, Vec3 v2, const Ray& ray, con
   const float delta_y = error_gamma(5) * (max_yt + 2.0f * abs_of(s.sy) * max_z);
   const float delta_e = 2.0f * (error_gamma(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
   const float max_e = max_of(abs_of(u), max_of(abs_of(v), abs_of(w)));
-  const float delta_t =
-      3.0f * (error_gamma(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) / abs_of(det);
+  const float delta_t = 3.0f * (error_gamma(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e) / abs_of(det);
   if (!(t > delta_t)) return false;
   t_out = t;
   b0 = u / det;

@@ -27,8 +27,7 @@ TRACER_HD Vec3 debug_view(const SceneView& scene, const Ray& ray) {
       Surface s = surface_at(scene, ray, hit);
       return material_albedo(material_at(scene, s));
     }
-    default:
-      return {hit.t, hit.t, hit.t};
+    default: return {hit.t, hit.t, hit.t};
   }
 }
 

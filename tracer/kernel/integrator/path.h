@@ -7,12 +7,12 @@
 // A cube-map sky sampled as a light (render.sky_sampling) is MIS-weighted like the shapes.
 // Random numbers per bounce b: four Philox pairs at dimensions kDimFirstFree + 4b + {0..3}.
 #pragma once
-#include "kernel/shading/bsdf.h"
-#include "kernel/shading/light_sampling.h"
 #include "kernel/base/philox.h"
 #include "kernel/geom/ray_offset.h"
-#include "kernel/shading/surface.h"
 #include "kernel/integrator/whitted.h"
+#include "kernel/shading/bsdf.h"
+#include "kernel/shading/light_sampling.h"
+#include "kernel/shading/surface.h"
 
 namespace tracer {
 
@@ -30,7 +30,7 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, ui
   const bool nee = rs.nee == Switch::On && scene.light_entry_count > 0;
   Vec3 radiance = {0.0f, 0.0f, 0.0f}, throughput = {1.0f, 1.0f, 1.0f};
   float bsdf_pdf = 0.0f;
-  bool specular = true;  // the camera ray: emission it sees counts fully
+  bool specular = true;    // the camera ray: emission it sees counts fully
   Vec3 from = ray.origin;  // the previous shading point, where light_pdf must be evaluated
                            // exactly as sample_light saw it for the MIS weights to sum to 1
   for (uint32_t depth = 0;; ++depth) {
@@ -46,9 +46,10 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, ui
     const Material m = material_at(scene, s);  // may bend s.ns by a normal or bump map
     const bool front = dot(ray.dir, s.ng) < 0.0f;
     if (m.kind == MaterialKind::Emissive && (front || m.two_sided)) {
-      const float w = nee && !specular
-                          ? power_heuristic(bsdf_pdf, light_pdf(scene, hit.prim, from, ray.dir, length(s.p - from), s.ng))
-                          : 1.0f;
+      const float w =
+          nee && !specular
+              ? power_heuristic(bsdf_pdf, light_pdf(scene, hit.prim, from, ray.dir, length(s.p - from), s.ng))
+              : 1.0f;
       radiance += throughput * m.radiance * w;
     }
     if (depth >= rs.max_depth) break;

@@ -2,10 +2,10 @@
 // explicit fixed-size stack of weighted rays replaces recursion. How each material kind
 // maps onto the model is documented in docs/materials.md and coded in whitted_response().
 #pragma once
-#include "kernel/shading/light_sources.h"
-#include "kernel/shading/optics.h"
 #include "kernel/geom/ray_offset.h"
 #include "kernel/integrator/ray_counts.h"
+#include "kernel/shading/light_sources.h"
+#include "kernel/shading/optics.h"
 #include "kernel/shading/surface.h"
 
 namespace tracer {
@@ -14,8 +14,8 @@ namespace tracer {
 struct WhittedResponse {
   Vec3 ka, kd, ks;  // ambient, diffuse, specular reflectance
   float shininess;
-  Vec3 kr;          // mirror reflection weight
-  Vec3 kt;          // transmission weight, split by Fresnel into reflection and refraction
+  Vec3 kr;  // mirror reflection weight
+  Vec3 kt;  // transmission weight, split by Fresnel into reflection and refraction
   float ior;
   FresnelKind fresnel;
   Vec3 emission;
@@ -58,8 +58,8 @@ TRACER_HD WhittedResponse whitted_response(const Material& m) {
 
 // Ambient plus, per point light, diffuse kd I cos and Blinn-Phong specular
 // ks I cos(h, n)^shininess, each times the falloff, for lights not in shadow.
-TRACER_HD Vec3 whitted_local(const SceneView& scene, const WhittedResponse& w, const Surface& s,
-                             Vec3 n, Vec3 view_dir, RayCounts& counts) {
+TRACER_HD Vec3 whitted_local(const SceneView& scene, const WhittedResponse& w, const Surface& s, Vec3 n, Vec3 view_dir,
+                             RayCounts& counts) {
   Vec3 result = w.ka * scene.ambient;
   if (!(scene.features & kFeaturePointLight)) return result;
   for (uint32_t i = 0; i < scene.light_count; ++i) {
@@ -122,7 +122,8 @@ TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, R
         const Vec3 weight = task.weight * w.kt * (1.0f - f);
         if (max_component(weight) > 0.0f) {
           ++counts.secondary;
-          stack[top++] = {{offset_ray_origin(s.p, s.ng, refracted, scene.offset_scale), refracted}, weight, task.depth + 1};
+          stack[top++] = {
+              {offset_ray_origin(s.p, s.ng, refracted, scene.offset_scale), refracted}, weight, task.depth + 1};
         }
       } else {
         kr += w.kt;  // total internal reflection

@@ -19,23 +19,32 @@ enum class Switch : uint32_t { Off, On };
 // Whitted effects that can be switched off to measure their cost (`--effects`, `tracer
 // bench device`): a mask of these bits. Off, shadows let every light through; reflection and
 // refraction rays (including a dielectric's Fresnel reflection) are not traced.
-enum Effects : uint32_t { kEffectNone = 0u, kEffectShadows = 1u, kEffectReflection = 2u, kEffectRefraction = 4u, kEffectAll = 7u };
+enum Effects : uint32_t {
+  kEffectNone = 0u,
+  kEffectShadows = 1u,
+  kEffectReflection = 2u,
+  kEffectRefraction = 4u,
+  kEffectAll = 7u
+};
 
 #define TRACER_RENDER_OPTIONS(X)                                                                                    \
   X(integrator, IntegratorKind, IntegratorKind::Whitted, render, Always, "whitted, path, normals, albedo or depth") \
-  X(sampler, SamplerKind, SamplerKind::Stochastic, render, Always, "center, grid, stochastic or stratified")         \
-  X(spp, uint32_t, 1u, render, Always, "samples per pixel")                                                          \
+  X(sampler, SamplerKind, SamplerKind::Stochastic, render, Always, "center, grid, stochastic or stratified")        \
+  X(spp, uint32_t, 1u, render, Always, "samples per pixel")                                                         \
   X(seed, uint64_t, 0u, render, Always, "64-bit seed")                                                              \
-  X(width, uint32_t, 0u, film, Always, "image width in pixels")                                                      \
-  X(height, uint32_t, 0u, film, Always, "image height in pixels")                                                    \
+  X(width, uint32_t, 0u, film, Always, "image width in pixels")                                                     \
+  X(height, uint32_t, 0u, film, Always, "image height in pixels")                                                   \
   X(accel, AccelKind, AccelKind::Bvh, render, Always, "bvh (default), kdtree, kdtree-median, grid, lbvh or none")   \
-  X(max_depth, uint32_t, 5u, render, Always, "maximum ray depth")                                                    \
-  X(nee, Switch, Switch::On, render, PathTracer, "path: next-event estimation with MIS, on (default) or off (the plain estimator)") \
-  X(rr_depth, uint32_t, 3u, render, PathTracer, "path: Russian roulette from this many bounces on (default 3)")      \
-  X(sky_sampling, Switch, Switch::On, render, PathTracerUnderCubemap,                                                \
+  X(max_depth, uint32_t, 5u, render, Always, "maximum ray depth")                                                   \
+  X(nee, Switch, Switch::On, render, PathTracer,                                                                    \
+    "path: next-event estimation with MIS, on (default) or off (the plain estimator)")                              \
+  X(rr_depth, uint32_t, 3u, render, PathTracer, "path: Russian roulette from this many bounces on (default 3)")     \
+  X(sky_sampling, Switch, Switch::On, render, PathTracerUnderCubemap,                                               \
     "path: sample a cube-map sky as a light, on (default) or off (only BSDF rays find it)")                         \
-  X(triangle_test, TriangleTest, TriangleTest::Watertight, render, UnlessDefault, "watertight (default) or moller-trumbore") \
-  X(grid_resolution, uint32_t, 0u, render, UnlessDefault, "grid: cells along the longest axis (default 0: about 3 per primitive)") \
+  X(triangle_test, TriangleTest, TriangleTest::Watertight, render, UnlessDefault,                                   \
+    "watertight (default) or moller-trumbore")                                                                      \
+  X(grid_resolution, uint32_t, 0u, render, UnlessDefault,                                                           \
+    "grid: cells along the longest axis (default 0: about 3 per primitive)")                                        \
   X(effects, Effects, kEffectAll, render, UnlessDefault,                                                            \
     "Whitted effects to trace: all (default), none, or a list of shadows,reflections,refractions")
 

@@ -5,20 +5,20 @@
 // added here reaches all of them and none can hand a host pointer to the GPU.
 #pragma once
 
-#define TRACER_SCENE_ARRAYS(X)                                                                     \
-  X(Primitive, primitives)             /* every shape, by primitive id */                          \
-  X(TriangleShading, triangle_shading) /* per triangle: normals, uvs, tangents */                  \
+#define TRACER_SCENE_ARRAYS(X)                                                                       \
+  X(Primitive, primitives)             /* every shape, by primitive id */                            \
+  X(TriangleShading, triangle_shading) /* per triangle: normals, uvs, tangents */                    \
   X(uint32_t, bounded)                 /* ids of primitives with finite bounds, in BVH leaf order */ \
-  X(uint32_t, unbounded)               /* ids of planes, tested for every ray */                   \
-  X(BvhNode, bvh_nodes)                /* bvh and lbvh */                                          \
-  X(KdNode, kd_nodes)                  /* kdtree and kdtree-median */                              \
-  X(uint32_t, kd_prims)                                                                            \
-  X(uint32_t, grid_cell_start)         /* grid: first entry of each cell in grid_prims */          \
-  X(uint32_t, grid_prims)                                                                          \
-  X(Material, materials)                                                                           \
-  X(Texture, textures)                 /* kernel/shading/texture.h */                                      \
-  X(float, texels)                     /* image textures' linear RGB */                            \
-  X(PointLight, lights)                                                                            \
-  X(LightEntry, light_table)           /* path: every light with its selection probability */      \
-  X(uint32_t, light_of_prim)           /* per primitive: its light_table entry, or kNoHit */       \
-  X(SkyCell, sky_cells)                /* 6 faces x n x n, face-major then row-major */
+  X(uint32_t, unbounded)               /* ids of planes, tested for every ray */                     \
+  X(BvhNode, bvh_nodes)                /* bvh and lbvh */                                            \
+  X(KdNode, kd_nodes)                  /* kdtree and kdtree-median */                                \
+  X(uint32_t, kd_prims)                                                                              \
+  X(uint32_t, grid_cell_start) /* grid: first entry of each cell in grid_prims */                    \
+  X(uint32_t, grid_prims)                                                                            \
+  X(Material, materials)                                                                             \
+  X(Texture, textures) /* kernel/shading/texture.h */                                                \
+  X(float, texels)     /* image textures' linear RGB */                                              \
+  X(PointLight, lights)                                                                              \
+  X(LightEntry, light_table) /* path: every light with its selection probability */                  \
+  X(uint32_t, light_of_prim) /* per primitive: its light_table entry, or kNoHit */                   \
+  X(SkyCell, sky_cells)      /* 6 faces x n x n, face-major then row-major */

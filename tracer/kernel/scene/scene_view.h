@@ -4,15 +4,15 @@
 // (t, primitive id) compared lexicographically (DESIGN.md rule 4).
 #pragma once
 #include "kernel/accel/bvh_node.h"
-#include "kernel/camera/camera.h"
-#include "kernel/base/features.h"
 #include "kernel/accel/grid.h"
 #include "kernel/accel/kd_node.h"
-#include "kernel/shading/material.h"
+#include "kernel/base/features.h"
+#include "kernel/camera/camera.h"
+#include "kernel/camera/sampler.h"
 #include "kernel/geom/primitive.h"
 #include "kernel/scene/render_settings.h"
 #include "kernel/scene/scene_arrays.h"
-#include "kernel/camera/sampler.h"
+#include "kernel/shading/material.h"
 
 namespace tracer {
 
@@ -21,7 +21,7 @@ enum class BackgroundKind : uint32_t { Constant, Gradient, Cubemap };
 struct PointLight {
   Vec3 position;
   Vec3 intensity;
-  float kc, kl, kq;         // attenuation, used when has_attenuation
+  float kc, kl, kq;          // attenuation, used when has_attenuation
   uint32_t has_attenuation;  // 0: physical 1/d^2 falloff
 };
 
@@ -58,12 +58,12 @@ struct SceneView {
   uint32_t kd_node_count;
   uint32_t light_count;
   uint32_t light_entry_count;
-  Vec3 kd_lo, kd_hi;               // the kd-tree's box
-  float kd_pad;                    // as GridInfo::pad
+  Vec3 kd_lo, kd_hi;  // the kd-tree's box
+  float kd_pad;       // as GridInfo::pad
   GridInfo grid;
-  uint32_t sky_cells_per_side;    // n
-  uint32_t sky_light;             // the sky's light_table entry, or kNoHit
-  float offset_scale;             // ray offsets near the origin (kernel/geom/ray_offset.h): a power of two <= 1
+  uint32_t sky_cells_per_side;  // n
+  uint32_t sky_light;           // the sky's light_table entry, or kNoHit
+  float offset_scale;           // ray offsets near the origin (kernel/geom/ray_offset.h): a power of two <= 1
   Background background;
   Vec3 ambient;
   Camera camera;

@@ -23,8 +23,8 @@ namespace tracer {
 
 struct BsdfSample {
   Vec3 wi;
-  Vec3 weight;    // f |cos| / pdf, or the specular choice's throughput
-  float pdf;      // 0 for a specular choice
+  Vec3 weight;  // f |cos| / pdf, or the specular choice's throughput
+  float pdf;    // 0 for a specular choice
   bool specular;
 };
 

@@ -6,19 +6,19 @@
 // uniformly in the cone they subtend, the sky by its cells (kernel/shading/sky_sampling.h).
 #pragma once
 #include "kernel/shading/light_sources.h"
-#include "kernel/shading/surface.h"
 #include "kernel/shading/sampling.h"
 #include "kernel/shading/sky_sampling.h"
+#include "kernel/shading/surface.h"
 
 namespace tracer {
 
 struct LightSample {
-  Vec3 wi;          // unit direction from the shading point to the light
-  float distance;   // to the sampled point (point lights: to the light)
-  Vec3 radiance;    // arriving at the shading point if unoccluded (point lights: I x falloff)
-  float pdf;        // solid-angle density including the selection probability; the
-                    // selection probability alone for a point light (delta)
-  uint32_t prim;    // the emitting primitive, kNoHit for a point light, kSkyLight for the sky
+  Vec3 wi;         // unit direction from the shading point to the light
+  float distance;  // to the sampled point (point lights: to the light)
+  Vec3 radiance;   // arriving at the shading point if unoccluded (point lights: I x falloff)
+  float pdf;       // solid-angle density including the selection probability; the
+                   // selection probability alone for a point light (delta)
+  uint32_t prim;   // the emitting primitive, kNoHit for a point light, kSkyLight for the sky
   bool valid;
 };
 

@@ -1,7 +1,7 @@
 // Materials as plain data: one struct for every kind, the fields a kind does not use are 0.
 #pragma once
-#include "kernel/shading/texture.h"
 #include "kernel/base/vec3.h"
+#include "kernel/shading/texture.h"
 
 namespace tracer {
 
@@ -13,18 +13,18 @@ enum ColourSlot : uint32_t { kSlotAlbedo, kSlotAmbient, kSlotSpecular, kSlotTint
 
 struct Material {
   MaterialKind kind;
-  FresnelKind fresnel;  // dielectric, and phong with transparency
-  uint32_t two_sided;   // emissive
-  float shininess;      // phong
-  Vec3 albedo;          // lambert, metal; phong's diffuse colour
-  Vec3 ambient;         // phong
-  Vec3 specular;        // phong
-  Vec3 tint;            // dielectric transmission colour
-  Vec3 radiance;        // emissive
-  float roughness;      // metal
-  float reflectivity;   // phong
-  float transparency;   // phong
-  float ior;            // dielectric, phong
+  FresnelKind fresnel;             // dielectric, and phong with transparency
+  uint32_t two_sided;              // emissive
+  float shininess;                 // phong
+  Vec3 albedo;                     // lambert, metal; phong's diffuse colour
+  Vec3 ambient;                    // phong
+  Vec3 specular;                   // phong
+  Vec3 tint;                       // dielectric transmission colour
+  Vec3 radiance;                   // emissive
+  float roughness;                 // metal
+  float reflectivity;              // phong
+  float transparency;              // phong
+  float ior;                       // dielectric, phong
   uint32_t texture[kColourSlots];  // per ColourSlot: kNoTexture, or the texture replacing it
   uint32_t specular_map;           // phong: scales specular; kNoTexture when absent
   uint32_t normal_map;             // tangent-space normals (2c - 1); kNoTexture when absent

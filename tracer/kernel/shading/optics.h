@@ -1,8 +1,8 @@
 // Reflection, refraction (Snell's law) and Fresnel reflectance for unit vectors.
 #pragma once
 #include "kernel/base/detmath.h"
-#include "kernel/shading/material.h"
 #include "kernel/base/vec3.h"
+#include "kernel/shading/material.h"
 
 namespace tracer {
 

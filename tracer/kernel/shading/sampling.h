@@ -29,9 +29,7 @@ TRACER_HD Vec3 direction_from(float cos_theta, float u) {
 
 // Cosine-weighted hemisphere about +z (Malley's method with the polar disk map):
 // pdf = cos(theta) / pi.
-TRACER_HD Vec3 sample_cosine_hemisphere(float u1, float u2) {
-  return direction_from(det_sqrt(1.0f - u1), u2);
-}
+TRACER_HD Vec3 sample_cosine_hemisphere(float u1, float u2) { return direction_from(det_sqrt(1.0f - u1), u2); }
 
 // A Phong lobe cos^e(alpha) about +z: cos(alpha) = u1^(1/(e+1)), pdf = (e+1)/(2 pi) cos^e.
 TRACER_HD Vec3 sample_phong_lobe(float exponent, float u1, float u2) {
@@ -58,12 +56,15 @@ TRACER_HD void sample_triangle(float u1, float u2, float& b1, float& b2) {
 
 // The index of the first entry whose cdf exceeds u (entries[count - 1].cdf is 1), by
 // binary search: drawing an entry of a discrete distribution given a uniform u.
-template <class Entry> TRACER_HD uint32_t find_cdf_interval(const Entry* entries, uint32_t count, float u) {
+template <class Entry>
+TRACER_HD uint32_t find_cdf_interval(const Entry* entries, uint32_t count, float u) {
   uint32_t lo = 0, hi = count - 1;
   while (lo < hi) {
     const uint32_t mid = (lo + hi) / 2;
-    if (u < entries[mid].cdf) hi = mid;
-    else lo = mid + 1;
+    if (u < entries[mid].cdf)
+      hi = mid;
+    else
+      lo = mid + 1;
   }
   return lo;
 }

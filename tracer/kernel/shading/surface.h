@@ -1,8 +1,8 @@
 // From a hit to the local surface: position, geometric and shading normals, uv.
 #pragma once
+#include "kernel/accel/trace.h"
 #include "kernel/base/detmath.h"
 #include "kernel/shading/sampling.h"
-#include "kernel/accel/trace.h"
 
 namespace tracer {
 
@@ -123,7 +123,8 @@ TRACER_HD Material material_at(const SceneView& scene, Surface& s) {
   Vec3* colour[kColourSlots] = {&m.albedo, &m.ambient, &m.specular, &m.tint, &m.radiance};
   for (uint32_t k = 0; k < kColourSlots; ++k)
     if (m.texture[k] != kNoTexture) *colour[k] = sample_texture(scene.textures, scene.texels, m.texture[k], s.u, s.v);
-  if (m.specular_map != kNoTexture) m.specular = m.specular * sample_texture(scene.textures, scene.texels, m.specular_map, s.u, s.v);
+  if (m.specular_map != kNoTexture)
+    m.specular = m.specular * sample_texture(scene.textures, scene.texels, m.specular_map, s.u, s.v);
   if (m.normal_map == kNoTexture && m.bump_map == kNoTexture) return m;
   const Vec3 t = surface_tangent(scene, s), b = cross(s.ns, t);
   Vec3 local = {0.0f, 0.0f, 1.0f};

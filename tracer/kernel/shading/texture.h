@@ -29,8 +29,9 @@ TRACER_HD int wrap_texel(int i, int n, TextureWrap wrap) {
 }
 
 TRACER_HD Vec3 texel_at(const float* texels, const Texture& t, int x, int y) {
-  const float* p = texels + t.offset + 3u * (static_cast<uint32_t>(wrap_texel(y, t.height, t.wrap)) * t.width +
-                                             static_cast<uint32_t>(wrap_texel(x, t.width, t.wrap)));
+  const float* p = texels + t.offset +
+                   3u * (static_cast<uint32_t>(wrap_texel(y, t.height, t.wrap)) * t.width +
+                         static_cast<uint32_t>(wrap_texel(x, t.width, t.wrap)));
   return {p[0], p[1], p[2]};
 }
 
@@ -39,7 +40,8 @@ TRACER_HD Vec3 texel_at(const float* texels, const Texture& t, int x, int y) {
 TRACER_HD Vec3 sample_texture(const Texture* textures, const float* texels, uint32_t index, float u, float v) {
   const Texture& t = textures[index];
   if (t.kind == TextureKind::Checker) {
-    if (!(abs_of(u * t.scale) < 0x1p23f && abs_of(v * t.scale) < 0x1p23f)) return t.even;  // NaN or beyond float's integers
+    if (!(abs_of(u * t.scale) < 0x1p23f && abs_of(v * t.scale) < 0x1p23f))
+      return t.even;  // NaN or beyond float's integers
     const float cu = floorf(u * t.scale), cv = floorf(v * t.scale);
     const float parity = cu + cv - 2.0f * floorf((cu + cv) * 0.5f);
     return parity == 0.0f ? t.even : t.odd;
