@@ -10,8 +10,8 @@
 // At 1e5 from the origin every coordinate is quantised to 2^-7 = 0.0078, moving the light
 // vector by ~0.2 % and silhouettes by ~0.1 pixel: at most 2 % of pixels may differ by more
 // than 0.05 and the mean difference must stay below 0.01 (measured 1.0 % and 0.005).
-// Found by these tests and fixed: ray offsets near the origin were a fixed 2^-16 (a third
-// of the sphere at scale 1e-4), and 256 ulps away from it (2 units at 1e5).
+// These tests guard the scaled ray offsets of kernel/geom/ray_offset.h: the paper's fixed
+// 2^-16 near the origin is a third of the sphere at scale 1e-4, its 256 ulps 2 units at 1e5.
 #include <gtest/gtest.h>
 
 #include <cmath>
