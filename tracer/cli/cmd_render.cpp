@@ -43,6 +43,24 @@ void check_output_path(const std::string& path, bool partial) {
     throw InputError(path + ": no image writer for extension " + p.extension().string());
 }
 
+// The output and the stats file may name no file the render reads, nor each other.
+void refuse_overwriting_inputs(const Scene& scene, const std::string& output, const std::string& stats) {
+  std::error_code ec;
+  const auto same = [&](const std::string& a, const std::string& b) {
+    return std::filesystem::exists(a, ec) && std::filesystem::exists(b, ec) && std::filesystem::equivalent(a, b, ec);
+  };
+  std::vector<std::string> inputs(scene.report.input_files.begin(), scene.report.input_files.end());
+  inputs.push_back(scene.file);
+  for (const auto& [path, option] : {std::pair{output, "-o"}, std::pair{stats, "--stats"}}) {
+    if (path.empty()) continue;
+    for (const std::string& input : inputs)
+      if (same(path, input) || std::filesystem::absolute(path) == std::filesystem::absolute(input))
+        throw InputError(path + ": " + option + " names a file this render reads (" + input + "); choose another name");
+  }
+  if (!stats.empty() && std::filesystem::absolute(stats) == std::filesystem::absolute(output))
+    throw InputError(stats + ": --stats names the output image; choose another name");
+}
+
 // What makes two partial files parts of one render: every option its identity records.
 Json render_identity(const Scene& scene) {
   return Json::parse(recorded_options(scene.settings, scene.background.kind).to_json().dump());
@@ -81,6 +99,7 @@ static int run_render(const RenderCommand& cmd) {
   const std::string scene_text = read_text_file(cmd.scene, "scene file");
   const Scene scene = load_scene_text(scene_text, cmd.scene, overrides);  // loading includes the BVH build
   const double load_build_s = seconds_since(t_load);
+  refuse_overwriting_inputs(scene, output, cmd.stats);
   const double build_s = scene.report.build_seconds;
 
   const RenderSettings& rs = scene.settings;

@@ -26,9 +26,9 @@ struct RegisterCommand {
   explicit RegisterCommand(CommandSpec spec) { command_registry().push_back(std::move(spec)); }
 };
 
-// The `--threads` option every CPU command takes.
+// The `--threads` option every CPU command takes: 0 (all) to 1024.
 inline void add_threads_option(CLI::App& app, int& threads) {
-  app.add_option("--threads", threads, "CPU threads (default: all)")->check(CLI::NonNegativeNumber);
+  app.add_option("--threads", threads, "CPU threads, at most 1024 (default: all)")->check(CLI::Range(0, 1024));
 }
 
 }  // namespace tracer

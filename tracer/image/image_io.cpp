@@ -61,11 +61,16 @@ void write_image(const Image& image, const std::string& path) {
   if (ok) std::filesystem::rename(temp, target, ec);
   if (!ok || ec) {
     std::filesystem::remove(temp, ec);
-    throw InputError(path + ": cannot write image: " + (error.empty() ? ec.message() : error));
+    throw InputError(path + ": cannot write image: " +
+                     (!error.empty() ? error : ec ? ec.message() : "the image writer failed (is the disk full?)"));
   }
 }
 
 Image read_image(const std::string& path) {
+  // A FIFO or a device would block OpenImageIO or never end.
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": cannot read image: no such file");
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": cannot read image: not a regular file");
   OIIO::ImageBuf buf(path);
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) throw InputError(path + ": cannot read image: " + buf.geterror());
   const OIIO::ImageSpec& spec = buf.spec();

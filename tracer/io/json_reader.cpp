@@ -4,9 +4,25 @@
 
 namespace tracer {
 
+namespace {
+
+// Deeper values are refused while parsing, so that printing or destroying one never
+// recurses far (nlohmann's dump recurses once per level).
+constexpr int kMaxJsonDepth = 64;
+
+// A key as error messages print it: at most 60 characters.
+std::string shown_key(const std::string& key) { return key.size() > 60 ? key.substr(0, 57) + "..." : key; }
+
+}  // namespace
+
 Json parse_json_text(const std::string& text, const std::string& file) {
+  const Json::parser_callback_t limit_depth = [&file](int depth, Json::parse_event_t, Json&) {
+    if (depth > kMaxJsonDepth)
+      throw InputError(file + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    return true;
+  };
   try {
-    return Json::parse(text);
+    return Json::parse(text, limit_depth);
   } catch (const Json::parse_error& e) {
     // nlohmann reports a byte offset; turn it into line:column.
     size_t line = 1, column = 1;
@@ -58,7 +74,9 @@ JsonObject::JsonObject(const Json& value, std::string path, const std::string& f
     fail_at(file_, path_.empty() ? "(top level)" : path_, "expected an object, got " + describe(value_));
 }
 
-std::string JsonObject::child(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+std::string JsonObject::child(const std::string& key) const {
+  return path_.empty() ? shown_key(key) : path_ + "." + shown_key(key);
+}
 
 void JsonObject::fail(const std::string& key, const std::string& message) const {
   fail_at(file_, key.empty() ? path_ : child(key), message);

@@ -1,81 +1,95 @@
 #include "render/partial_file.h"
 
-#include <unistd.h>
-
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 
+#include "bundle/sha1.h"
 #include "io/input_error.h"
+#include "io/text_file.h"
 
 namespace tracer {
 namespace {
 
-constexpr const char* kMagic = "tracer-partial/1";
+constexpr const char* kMagic = "tracer-partial/2";
+constexpr uint32_t kMaxSide = 16384;  // film.width and film.height, as the loader allows
 static_assert(sizeof(FilmSum) == 32, "the partial file stores film sums as 32 bytes");
+
+std::string pixels_sha1(const FilmSum* pixels, size_t count) {
+  Sha1 h;
+  h.append(pixels, count * sizeof(FilmSum));
+  return h.hex_digest();
+}
+
+uint32_t read_u32(JsonObject& obj, const std::string& key) {
+  const uint64_t v = obj.unsigned_integer(key);
+  if (v > 0xffffffffu) obj.fail(key, "must fit in 32 bits, got " + std::to_string(v));
+  return static_cast<uint32_t>(v);
+}
 
 }  // namespace
 
 void write_partial(const std::string& path, const Partial& partial) {
   const PartialHeader& h = partial.header;
-  Json header = {{"scene", h.scene},
-                 {"scene_sha1", h.scene_sha1},
-                 {"render", h.render},
-                 {"spp", h.spp},
-                 {"samples", {partial.film.range.begin, partial.film.range.end}},
-                 {"width", partial.film.width},
-                 {"height", partial.film.height},
-                 {"nonfinite", h.nonfinite},
-                 {"overflow", h.overflow}};
-  const std::filesystem::path target(path);
-  const std::filesystem::path temp =
-      target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()));
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out << kMagic << "\n" << header.dump() << "\n";
-    out.write(reinterpret_cast<const char*>(partial.film.pixels.data()),
-              static_cast<std::streamsize>(partial.film.pixels.size() * sizeof(FilmSum)));
-    if (!out) {
-      std::error_code ec;
-      std::filesystem::remove(temp, ec);
-      throw InputError(path + ": cannot write the partial file");
-    }
-  }
-  std::filesystem::rename(temp, target);
+  const size_t count = partial.film.pixels.size();
+  const Json header = {{"scene", h.scene},
+                       {"scene_sha1", h.scene_sha1},
+                       {"render", h.render},
+                       {"spp", h.spp},
+                       {"samples", {partial.film.range.begin, partial.film.range.end}},
+                       {"width", partial.film.width},
+                       {"height", partial.film.height},
+                       {"nonfinite", h.nonfinite},
+                       {"overflow", h.overflow},
+                       {"pixels_sha1", pixels_sha1(partial.film.pixels.data(), count)}};
+  std::string bytes = std::string(kMagic) + "\n" + header.dump() + "\n";
+  const size_t start = bytes.size();
+  bytes.resize(start + count * sizeof(FilmSum));
+  std::memcpy(bytes.data() + start, partial.film.pixels.data(), count * sizeof(FilmSum));
+  write_text_atomically(path, bytes);
 }
 
 Partial read_partial(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the partial file");
-  std::string magic, line;
-  std::getline(in, magic);
-  if (magic != kMagic)
+  const std::string bytes = read_text_file(path, "partial file");
+  const size_t magic_end = bytes.find('\n');
+  if (magic_end == std::string::npos || bytes.compare(0, magic_end, kMagic) != 0)
     throw InputError(path + ": not a partial file (expected the line \"" + std::string(kMagic) + "\")");
-  std::getline(in, line);
-  const Json doc = parse_json_text(line, path);
+  const size_t header_end = bytes.find('\n', magic_end + 1);
+  if (header_end == std::string::npos) throw InputError(path + ": truncated partial file (no header line)");
+  const Json doc = parse_json_text(bytes.substr(magic_end + 1, header_end - magic_end - 1), path);
   JsonObject obj(doc, "", path);
   Partial p;
   p.header.scene = obj.string("scene");
   p.header.scene_sha1 = obj.string("scene_sha1");
   p.header.render = obj.get("render");
-  p.header.spp = static_cast<uint32_t>(obj.unsigned_integer("spp"));
+  p.header.spp = read_u32(obj, "spp");
   p.header.nonfinite = obj.unsigned_integer("nonfinite");
   p.header.overflow = obj.unsigned_integer("overflow");
-  p.film.width = static_cast<uint32_t>(obj.unsigned_integer("width"));
-  p.film.height = static_cast<uint32_t>(obj.unsigned_integer("height"));
+  p.film.width = read_u32(obj, "width");
+  p.film.height = read_u32(obj, "height");
+  const std::string sha1 = obj.string("pixels_sha1");
   const Json& samples = obj.get("samples");
   if (!samples.is_array() || samples.size() != 2 || !samples[0].is_number_unsigned() ||
-      !samples[1].is_number_unsigned())
-    obj.fail("samples", "expected [begin, end]");
+      !samples[1].is_number_unsigned() || samples[0].get<uint64_t>() > 0xffffffffu ||
+      samples[1].get<uint64_t>() > 0xffffffffu)
+    obj.fail("samples", "expected [begin, end], each fitting in 32 bits");
   p.film.range = {samples[0].get<uint32_t>(), samples[1].get<uint32_t>()};
   obj.finish();
   if (!(p.film.range.begin < p.film.range.end && p.film.range.end <= p.header.spp))
     obj.fail("samples", "expected 0 <= begin < end <= spp");
+  for (const auto& [side, name] : {std::pair{p.film.width, "width"}, std::pair{p.film.height, "height"}})
+    if (side < 1 || side > kMaxSide) obj.fail(name, "must be in [1, " + std::to_string(kMaxSide) + "]");
+  // The size is checked before anything is allocated for the pixels.
   const size_t count = static_cast<size_t>(p.film.width) * p.film.height;
+  if (bytes.size() - header_end - 1 != count * sizeof(FilmSum))
+    throw InputError(path + ": truncated or oversized partial file (expected " + std::to_string(count) + " pixels of " +
+                     std::to_string(sizeof(FilmSum)) + " bytes after the header)");
   p.film.pixels.resize(count);
-  in.read(reinterpret_cast<char*>(p.film.pixels.data()), static_cast<std::streamsize>(count * sizeof(FilmSum)));
-  if (static_cast<size_t>(in.gcount()) != count * sizeof(FilmSum) || in.peek() != std::char_traits<char>::eof())
-    throw InputError(path + ": truncated or oversized partial file (expected " + std::to_string(count) + " pixels)");
+  std::memcpy(p.film.pixels.data(), bytes.data() + header_end + 1, count * sizeof(FilmSum));
+  if (pixels_sha1(p.film.pixels.data(), count) != sha1)
+    throw InputError(path + ": the film sums do not match pixels_sha1 (the file is damaged)");
+  for (size_t i = 0; i < count; ++i)
+    for (const int64_t v : p.film.pixels[i].rgb)
+      if (v > kFilmSumLimit || v < -kFilmSumLimit)
+        throw InputError(path + ": pixel " + std::to_string(i) + " holds a film sum beyond 2^62 (not written by tracer)");
   return p;
 }
 

@@ -1,9 +1,10 @@
 // A partial render: `tracer render SCENE --samples A:B -o NAME.partial` stores the
 // fixed-point film sums of samples [A, B) of every pixel, and `tracer merge` adds the parts
 // of one render into the image of all its samples, identical bit for bit to rendering them
-// at once (kernel/base/film.h). The file: the line "tracer-partial/1", one line of JSON (the
-// render's identity and the range), then width x height film sums, each three int64 and
-// two uint32, little-endian.
+// at once (kernel/base/film.h). The file: the line "tracer-partial/2", one line of JSON (the
+// render's identity, the range and the SHA-1 of the film sums), then width x height film
+// sums, each three int64 and two uint32, little-endian. Reading checks every header
+// number's range, the size before allocating, the checksum and each sum's range.
 #pragma once
 #include <string>
 

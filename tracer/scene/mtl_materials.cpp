@@ -3,6 +3,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "io/input_error.h"
+
 namespace tracer {
 
 Material material_from_mtl(const MtlMaterial& mtl, TextureLoader& textures, const std::string& obj_dir,
@@ -20,6 +22,13 @@ Material material_from_mtl(const MtlMaterial& mtl, TextureLoader& textures, cons
     slot = textures.image_file(at, file(name), false, mean);
     return mean;
   };
+  // tinyobjloader reads 1e999 as inf and keeps negative colours; refuse both.
+  for (const auto& [name, c] : {std::pair{"Kd", mtl.kd}, std::pair{"Ks", mtl.ks}, std::pair{"Ke", mtl.ke}})
+    if (!is_finite(c) || c.x < 0.0f || c.y < 0.0f || c.z < 0.0f)
+      throw InputError(at + ": " + name + " must be three finite numbers >= 0");
+  if (!std::isfinite(mtl.ns) || mtl.ns < 0.0f) throw InputError(at + ": Ns must be a finite number >= 0");
+  if (!std::isfinite(mtl.ni)) throw InputError(at + ": Ni must be a finite number");
+  if (!(mtl.d >= 0.0f && mtl.d <= 1.0f)) throw InputError(at + ": d must be in [0, 1]");
   if (max_component(mtl.ke) > 0.0f) {
     type = "emissive";
     m.kind = MaterialKind::Emissive;

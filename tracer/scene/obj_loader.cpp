@@ -3,6 +3,8 @@
 #include <filesystem>
 
 #include "io/input_error.h"
+#include "io/text_file.h"
+#include "scene/obj_text_check.h"
 #include "scene/mesh.h"
 
 namespace tracer {
@@ -12,7 +14,9 @@ std::vector<MeshTriangle> load_obj(const std::string& path, const std::string& s
   auto fail = [&](const std::string& message) -> void {
     throw InputError(scene_file + ": " + key_path + ": " + path + ": " + message);
   };
-  if (!std::filesystem::is_regular_file(path)) fail("no such file");
+  if (!std::filesystem::exists(path)) fail("no such file");
+  if (!std::filesystem::is_regular_file(path)) fail("not a regular file");
+  check_obj_text(read_text_file(path, "OBJ file"), scene_file + ": " + key_path + ": " + path);
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;  // we fan-triangulate ourselves, the documented way
   config.mtl_search_path = std::filesystem::path(path).parent_path().string();

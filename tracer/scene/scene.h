@@ -17,6 +17,7 @@ struct LoadReport {
   std::map<std::string, uint32_t> shape_counts;  // by the scene file's shape type
   uint32_t degenerate_triangles = 0;             // mesh triangles of zero area, left out
   std::set<std::string> used_types;              // "shape:box", "sampler:grid": scene_types.h
+  std::set<std::string> input_files;             // meshes and images read, as the scene names them
   AccelSummary accel;                            // the built structure's name, nodes and cells
   size_t accel_bytes = 0;                        // its nodes, cells and index arrays
   double build_seconds = 0.0;                    // its build time

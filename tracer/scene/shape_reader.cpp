@@ -102,7 +102,9 @@ class ShapeReader {
         const std::string rel = obj.string("file");
         for (const char* k : {"positions", "indices", "normals", "uvs"})
           if (obj.find(k)) obj.fail(k, "a mesh has either \"file\" or inline data, not both");
-        const auto tris = load_obj((std::filesystem::path(dir_) / rel).string(), scene_.file, obj.child("file"));
+        const std::string path = (std::filesystem::path(dir_) / rel).string();
+        scene_.report.input_files.insert(path);
+        const auto tris = load_obj(path, scene_.file, obj.child("file"));
         add_triangles(obj, tris, xf, std::vector<uint32_t>(tris.size(), material));
       } else {
         const auto tris = inline_mesh(obj);
@@ -123,6 +125,7 @@ class ShapeReader {
     for (const char* k : {"positions", "indices", "normals", "uvs"})
       if (obj.find(k)) obj.fail(k, "a mesh has either \"file\" or inline data, not both");
     std::vector<MtlMaterial> mtls;
+    scene_.report.input_files.insert(file.string());
     const auto tris = load_obj(file.string(), scene_.file, obj.child("file"), &mtls);
     const uint32_t base = static_cast<uint32_t>(scene_.materials.size());
     for (const MtlMaterial& mtl : mtls) {

@@ -106,8 +106,10 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& path,
     return known->second.first;
   }
   const std::string& scene_file = scene_.file;
+  scene_.report.input_files.insert(path);
+  if (!std::filesystem::exists(path)) fail_at(scene_file, where, "image " + path + " does not exist");
+  if (!std::filesystem::is_regular_file(path)) fail_at(scene_file, where, "image " + path + " is not a regular file");
   OIIO::ImageBuf buf(path);
-  if (!std::filesystem::is_regular_file(path)) fail_at(scene_file, where, "image " + path + " does not exist");
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
     fail_at(scene_file, where, "cannot read image " + path + ": " + buf.geterror());
   const OIIO::ImageSpec& s = buf.spec();

@@ -1,0 +1,189 @@
+// Hostile input through the CLI: each class of input that once crashed, hung, lost a file or
+// was accepted silently now exits 2 with a message naming the file, within a time limit
+// (`timeout`), and leaves every file it was given as it was.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "bundle/sha1.h"
+#include "test_util.h"
+
+namespace tracer {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kScene = R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
+  "film": {"width": 8, "height": 6}, "render": {RENDER}, "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
+  "shapes": [SHAPES]})";
+constexpr const char* kSphere = R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})";
+
+std::string scene_text(const std::string& render, const std::string& shapes = kSphere) {
+  std::string s = kScene;
+  s.replace(s.find("RENDER"), 6, render);
+  s.replace(s.find("SHAPES"), 6, shapes);
+  return s;
+}
+
+void write(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// The tracer under a 30 s limit: a hang fails the test instead of the CI runner.
+int run_limited(const std::string& args, std::string& output) {
+  return test::run_command("timeout 30 " + std::string(TRACER_BINARY) + " " + args, &output);
+}
+
+void expect_refused(const std::string& args, const std::string& expected) {
+  std::string output;
+  const std::string shown = args.substr(0, 300);  // arguments may be huge
+  EXPECT_EQ(run_limited(args, output), 2) << shown << "\n" << output.substr(0, 1000);
+  EXPECT_NE(output.find(expected), std::string::npos) << shown << "\n" << output.substr(0, 1000);
+}
+
+class HostileInput : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = test::temp_dir("hostile"); }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string scene_file(const std::string& text) {
+    write(dir_ / "s.json", text);
+    return (dir_ / "s.json").string();
+  }
+  std::string out() const { return " --quiet -o " + (dir_ / "out.png").string(); }
+  fs::path dir_;
+};
+
+// Deep nesting crashed the process when a message printed it (the serialiser recursed).
+TEST_F(HostileInput, DeeplyNestedJsonIsRefused) {
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  expect_refused("render " + scene_file(scene_text("\"x\": " + deep)) + out(), "nested deeper than 64 levels");
+}
+
+// A 10 MB key was echoed whole.
+TEST_F(HostileInput, HugeKeysAreShortenedInMessages) {
+  const std::string key(10'000'000, 'k');
+  std::string output;
+  EXPECT_EQ(run_limited("render " + scene_file(scene_text("\"" + key + "\": 1")) + out(), output), 2);
+  EXPECT_NE(output.find("unknown key"), std::string::npos) << output.substr(0, 300);
+  EXPECT_LT(output.size(), 1000u);
+}
+
+// --threads 65535 crashed inside the OpenMP runtime; spp near 2^32 hung finding the grid size.
+TEST_F(HostileInput, LimitsOnThreadsAndWork) {
+  const std::string scene = scene_file(scene_text(""));
+  expect_refused("render " + scene + " --threads 65535" + out(), "--threads");
+  expect_refused("render " + scene + " --spp 4294967295" + out(), "more than 2^36 samples");
+  expect_refused("render " + scene + " --spp 4294967295 --sampler grid --width 1 --height 1" + out(), "square spp");
+  expect_refused("render " + scene + " --seed -1" + out(), "--seed");
+  expect_refused("render " + scene + " --seed 18446744073709551616" + out(), "--seed");
+  expect_refused("render " + scene + " --spp ' 4'" + out(), "--spp");
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+}
+
+// A device or a FIFO as an input blocked or read forever.
+TEST_F(HostileInput, DevicesAndFifosAreNotRead) {
+  const fs::path fifo = dir_ / "pipe.png";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  write(dir_ / "a.png", "");
+  expect_refused("compare /dev/zero " + (dir_ / "a.png").string(), "not a regular file");
+  expect_refused("compare " + fifo.string() + " " + (dir_ / "a.png").string(), "not a regular file");
+  expect_refused("render /dev/zero" + out(), "not a regular file");
+  expect_refused("render " + fifo.string() + out(), "not a regular file");
+  const std::string textured = R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "t"})";
+  std::string text = scene_text("", textured);
+  text.replace(text.find(R"("materials": {)"), 14,
+               R"("materials": {"t": {"type": "lambert", "albedo": {"texture": "pipe.png"}}, )");
+  expect_refused("render " + scene_file(text) + out(), "is not a regular file");
+  expect_refused("render " + scene_file(scene_text("", R"({"type": "mesh", "file": "/dev/zero", "material": "m"})")) + out(),
+                 "not a regular file");
+  expect_refused("merge " + fifo.string() + " -o " + (dir_ / "m.exr").string(), "not a regular file");
+}
+
+// -o or --stats naming the scene, a texture or each other overwrote it.
+TEST_F(HostileInput, OutputsNeverOverwriteInputs) {
+  const std::string scene = scene_file(scene_text(""));
+  const std::string before = read(scene);
+  expect_refused("render " + scene + " --quiet --stats " + scene + " -o " + (dir_ / "out.png").string(),
+                 "names a file this render reads");
+  expect_refused("render " + scene + " --quiet --stats " + (dir_ / "out.png").string() + " -o " + (dir_ / "out.png").string(),
+                 "--stats names the output image");
+  EXPECT_EQ(read(scene), before);
+  write_image(test::image_from(2, 2, [](uint32_t, uint32_t) { return Vec3{1, 1, 1}; }), (dir_ / "tex.png").string());
+  const std::string tex_before = read(dir_ / "tex.png");
+  const std::string textured = R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "t"})";
+  std::string text = scene_text("", textured);
+  text.replace(text.find(R"("materials": {)"), 14,
+               R"("materials": {"t": {"type": "lambert", "albedo": {"texture": "tex.png"}}, )");
+  expect_refused("render " + scene_file(text) + " --quiet -o " + (dir_ / "tex.png").string(), "names a file this render reads");
+  EXPECT_EQ(read(dir_ / "tex.png"), tex_before);
+}
+
+// OBJ and MTL values tinyobjloader reads as 0, inf or a negative colour.
+TEST_F(HostileInput, ObjAndMtlValuesAreChecked) {
+  const std::string mesh = R"({"type": "mesh", "file": "m.obj", "material": "m"})";
+  const std::string scene = scene_file(scene_text("", mesh));
+  const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+  const std::pair<std::string, std::string> cases[] = {
+      {"v nan 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n", "line 1: vertex (v): \"nan\" is not a finite number"},
+      {"v a b c\nv 1 0 0\nv 1 1 0\nf 1 2 3\n", "line 1: vertex (v)"},
+      {"v 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n", "line 1: vertex (v): wrong number of values (2)"},
+      {square + "f 1 2 4294967298\n", "line 5: face (f)"},
+      {square + "f 1 2 3.5\n", "line 5: face (f)"},
+      {square + "f 1 2\n", "line 5: face (f) with 2 vertices"},
+      {square + "vt 1e999 0\nf 1 2 3\n", "line 5: texture coordinate (vt)"},
+  };
+  for (const auto& [obj, expected] : cases) {
+    write(dir_ / "m.obj", obj);
+    expect_refused("render " + scene + out(), expected);
+  }
+  const std::string mtl_scene = scene_file(scene_text("", R"({"type": "mesh", "file": "m.obj"})"));
+  for (const std::string& kd : {"Kd -1 0 0", "Kd 1e999 0 0"}) {
+    write(dir_ / "m.obj", "mtllib m.mtl\nusemtl a\n" + square + "f 1 2 3\n");
+    write(dir_ / "m.mtl", "newmtl a\n" + kd + "\n");
+    expect_refused("render " + mtl_scene + out(), "Kd must be three finite numbers >= 0");
+  }
+}
+
+// Partial files: header numbers beyond 32 bits, a flipped bit, a small file claiming a huge
+// image and sums beyond the film's range are all refused, naming the file.
+TEST_F(HostileInput, PartialFilesAreNotTrusted) {
+  const std::string scene = scene_file(scene_text("\"spp\": 4"));
+  const std::string part = (dir_ / "p.partial").string();
+  std::string output;
+  ASSERT_EQ(run_limited("render " + scene + " --quiet --samples 0:4 -o " + part, output), 0) << output;
+  const std::string good = read(part);
+  const size_t header_end = good.find('\n', good.find('\n') + 1);
+  const auto merge_refuses = [&](const std::string& bytes, const std::string& expected) {
+    write(part, bytes);
+    expect_refused("merge " + part + " -o " + (dir_ / "m.exr").string(), expected);
+    EXPECT_FALSE(fs::exists(dir_ / "m.exr"));
+  };
+  const auto with_header = [&](const std::string& from, const std::string& to) {
+    std::string bytes = good;
+    const size_t at = bytes.rfind(from, header_end);  // the header's own key, after the identity's
+    bytes.replace(at, from.size(), to);
+    return bytes;
+  };
+  merge_refuses(with_header("\"width\":8", "\"width\":4294967304"), "width: must fit in 32 bits");
+  merge_refuses(with_header("\"width\":8", "\"width\":16384"), "truncated or oversized");
+  std::string flipped = good;
+  flipped[header_end + 5] ^= 0x10;
+  merge_refuses(flipped, "do not match pixels_sha1");
+  // A sum beyond 2^62 with a matching checksum: only the range check catches it.
+  std::string huge = good;
+  const int64_t big = int64_t{1} << 62;
+  std::memcpy(huge.data() + header_end + 1, &big, sizeof big);
+  Sha1 h;
+  h.append(huge.data() + header_end + 1, huge.size() - header_end - 1);
+  const size_t sha_at = huge.find("\"pixels_sha1\":\"") + 15;
+  huge.replace(sha_at, 40, h.hex_digest());
+  merge_refuses(huge, "beyond 2^62");
+}
+
+}  // namespace
+}  // namespace tracer
