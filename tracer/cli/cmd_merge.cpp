@@ -24,10 +24,12 @@ static int run_merge(const MergeCommand& cmd) {
   std::vector<std::pair<std::string, Partial>> parts;
   for (const std::string& path : cmd.parts) parts.emplace_back(path, read_partial(path));
 
-  const auto& [first_path, first] = parts.front();
+  const std::string& first_path = parts.front().first;
+  const Partial& first = parts.front().second;
   for (const auto& [path, p] : parts) {
+    const std::string& part_path = path;  // clang 14 cannot capture a structured binding in a lambda
     const auto differs = [&](const std::string& what) {
-      return InputError(path + ": not a part of the same render as " + first_path + ": " + what + " differ");
+      return InputError(part_path + ": not a part of the same render as " + first_path + ": " + what + " differ");
     };
     if (p.header.scene_sha1 != first.header.scene_sha1) throw differs("the scene files' contents");
     if (p.header.render != first.header.render)

@@ -44,6 +44,8 @@ struct RenderOptions {
 // Command-line overrides of a scene: the options, and the Fresnel model of every dielectric
 // (a `bench trade` knob, not an option of the renderer).
 struct RenderOverrides : RenderOptions {
+  RenderOverrides() = default;
+  explicit RenderOverrides(const RenderOptions& options) : RenderOptions(options) {}
   std::optional<FresnelKind> fresnel;
 };
 
