@@ -15,7 +15,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kScene = R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
+constexpr const char* kScene =
+    R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
   "film": {"width": 8, "height": 6}, "render": {RENDER}, "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
   "shapes": [SHAPES]})";
 constexpr const char* kSphere = R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})";
@@ -99,8 +100,9 @@ TEST_F(HostileInput, DevicesAndFifosAreNotRead) {
   text.replace(text.find(R"("materials": {)"), 14,
                R"("materials": {"t": {"type": "lambert", "albedo": {"texture": "pipe.png"}}, )");
   expect_refused("render " + scene_file(text) + out(), "is not a regular file");
-  expect_refused("render " + scene_file(scene_text("", R"({"type": "mesh", "file": "/dev/zero", "material": "m"})")) + out(),
-                 "not a regular file");
+  expect_refused(
+      "render " + scene_file(scene_text("", R"({"type": "mesh", "file": "/dev/zero", "material": "m"})")) + out(),
+      "not a regular file");
   expect_refused("merge " + fifo.string() + " -o " + (dir_ / "m.exr").string(), "not a regular file");
 }
 
@@ -110,8 +112,9 @@ TEST_F(HostileInput, OutputsNeverOverwriteInputs) {
   const std::string before = read(scene);
   expect_refused("render " + scene + " --quiet --stats " + scene + " -o " + (dir_ / "out.png").string(),
                  "names a file this render reads");
-  expect_refused("render " + scene + " --quiet --stats " + (dir_ / "out.png").string() + " -o " + (dir_ / "out.png").string(),
-                 "--stats names the output image");
+  expect_refused(
+      "render " + scene + " --quiet --stats " + (dir_ / "out.png").string() + " -o " + (dir_ / "out.png").string(),
+      "--stats names the output image");
   EXPECT_EQ(read(scene), before);
   write_image(test::image_from(2, 2, [](uint32_t, uint32_t) { return Vec3{1, 1, 1}; }), (dir_ / "tex.png").string());
   const std::string tex_before = read(dir_ / "tex.png");
@@ -119,8 +122,26 @@ TEST_F(HostileInput, OutputsNeverOverwriteInputs) {
   std::string text = scene_text("", textured);
   text.replace(text.find(R"("materials": {)"), 14,
                R"("materials": {"t": {"type": "lambert", "albedo": {"texture": "tex.png"}}, )");
-  expect_refused("render " + scene_file(text) + " --quiet -o " + (dir_ / "tex.png").string(), "names a file this render reads");
+  expect_refused("render " + scene_file(text) + " --quiet -o " + (dir_ / "tex.png").string(),
+                 "names a file this render reads");
   EXPECT_EQ(read(dir_ / "tex.png"), tex_before);
+}
+
+// Float textures holding NaN, inf or negative colours were used as they were.
+TEST_F(HostileInput, TexturesHoldOnlyFiniteTexels) {
+  const std::string textured = R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "t"})";
+  std::string text = scene_text("", textured);
+  text.replace(text.find(R"("materials": {)"), 14,
+               R"("materials": {"t": {"type": "lambert", "albedo": {"texture": "tex.exr"}}, )");
+  const std::string scene = scene_file(text);
+  for (const float bad : {std::nanf(""), INFINITY, -0.5f}) {
+    write_image(test::image_from(2, 2,
+                                 [&](uint32_t x, uint32_t y) {
+                                   return x == 1 && y == 1 ? Vec3{0.5f, bad, 0.5f} : Vec3{0.5f, 0.5f, 0.5f};
+                                 }),
+                (dir_ / "tex.exr").string());
+    expect_refused("render " + scene + out(), "tex.exr: texel (1, 1) channel 1");
+  }
 }
 
 // OBJ and MTL values tinyobjloader reads as 0, inf or a negative colour.
@@ -142,9 +163,9 @@ TEST_F(HostileInput, ObjAndMtlValuesAreChecked) {
     expect_refused("render " + scene + out(), expected);
   }
   const std::string mtl_scene = scene_file(scene_text("", R"({"type": "mesh", "file": "m.obj"})"));
-  for (const std::string& kd : {"Kd -1 0 0", "Kd 1e999 0 0"}) {
+  for (const char* kd : {"Kd -1 0 0", "Kd 1e999 0 0"}) {
     write(dir_ / "m.obj", "mtllib m.mtl\nusemtl a\n" + square + "f 1 2 3\n");
-    write(dir_ / "m.mtl", "newmtl a\n" + kd + "\n");
+    write(dir_ / "m.mtl", std::string("newmtl a\n") + kd + "\n");
     expect_refused("render " + mtl_scene + out(), "Kd must be three finite numbers >= 0");
   }
 }

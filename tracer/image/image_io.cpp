@@ -62,7 +62,9 @@ void write_image(const Image& image, const std::string& path) {
   if (!ok || ec) {
     std::filesystem::remove(temp, ec);
     throw InputError(path + ": cannot write image: " +
-                     (!error.empty() ? error : ec ? ec.message() : "the image writer failed (is the disk full?)"));
+                     (!error.empty() ? error
+                      : ec           ? ec.message()
+                                     : "the image writer failed (is the disk full?)"));
   }
 }
 

@@ -89,7 +89,8 @@ Partial read_partial(const std::string& path) {
   for (size_t i = 0; i < count; ++i)
     for (const int64_t v : p.film.pixels[i].rgb)
       if (v > kFilmSumLimit || v < -kFilmSumLimit)
-        throw InputError(path + ": pixel " + std::to_string(i) + " holds a film sum beyond 2^62 (not written by tracer)");
+        throw InputError(path + ": pixel " + std::to_string(i) +
+                         " holds a film sum beyond 2^62 (not written by tracer)");
   return p;
 }
 

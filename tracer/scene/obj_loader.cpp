@@ -4,8 +4,8 @@
 
 #include "io/input_error.h"
 #include "io/text_file.h"
-#include "scene/obj_text_check.h"
 #include "scene/mesh.h"
+#include "scene/obj_text_check.h"
 
 namespace tracer {
 

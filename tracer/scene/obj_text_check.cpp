@@ -63,13 +63,17 @@ void check_obj_text(const std::string& text, const std::string& where) {
       for (const std::string& a : args)
         if (!finite_number(a)) fail(std::string(what) + ": \"" + a.substr(0, 40) + "\" is not a finite number");
     };
-    if (keyword == "v") numbers({3, 4, 6}, "vertex (v)");
-    else if (keyword == "vn") numbers({3}, "normal (vn)");
-    else if (keyword == "vt") numbers({2, 3}, "texture coordinate (vt)");
+    if (keyword == "v")
+      numbers({3, 4, 6}, "vertex (v)");
+    else if (keyword == "vn")
+      numbers({3}, "normal (vn)");
+    else if (keyword == "vt")
+      numbers({2, 3}, "texture coordinate (vt)");
     else if (keyword == "f") {
       if (args.size() < 3) fail("face (f) with " + std::to_string(args.size()) + " vertices; a face needs at least 3");
       for (const std::string& a : args)
-        if (!face_reference(a)) fail("face (f): \"" + a.substr(0, 40) + "\" is not i, i/j, i//k or i/j/k with whole non-zero indices");
+        if (!face_reference(a))
+          fail("face (f): \"" + a.substr(0, 40) + "\" is not i, i/j, i//k or i/j/k with whole non-zero indices");
     }
   }
 }

@@ -41,7 +41,8 @@ RenderSettings read_settings(const Json* render, const Json& film, const std::st
   const uint64_t samples = static_cast<uint64_t>(rs.spp) * rs.width * rs.height;
   if (samples > kMaxSamples)
     throw InputError(where("spp") + ": " + std::to_string(rs.spp) + " spp x " + std::to_string(rs.width) + " x " +
-                     std::to_string(rs.height) + " pixels is more than 2^36 samples (hours on one machine); lower spp or the film size");
+                     std::to_string(rs.height) +
+                     " pixels is more than 2^36 samples (hours on one machine); lower spp or the film size");
   rs.grid_n = 1;
   while (static_cast<uint64_t>(rs.grid_n) * rs.grid_n < rs.spp) ++rs.grid_n;
   const bool square = static_cast<uint64_t>(rs.grid_n) * rs.grid_n == rs.spp;

@@ -10,7 +10,7 @@
 
 namespace tracer {
 
-constexpr uint32_t kMaxResolution = 16384;  // film.width and film.height at most
+constexpr uint32_t kMaxResolution = 16384;    // film.width and film.height at most
 constexpr uint64_t kMaxSamples = 1ull << 36;  // spp x width x height at most: hours on one machine
 
 // Also records the integrator, sampler and accel in `used_types` ("sampler:grid").

@@ -2,11 +2,14 @@
 
 #include <OpenImageIO/imagebuf.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "kernel/base/detmath.h"
 
 namespace tracer {
+
+constexpr int kMaxTextureSide = 16384;  // texels on a side, as the film
 
 std::string TextureLoader::resolve(const std::string& file) const {
   return (std::filesystem::path(dir_) / file).string();
@@ -110,6 +113,11 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& path,
   if (!std::filesystem::exists(path)) fail_at(scene_file, where, "image " + path + " does not exist");
   if (!std::filesystem::is_regular_file(path)) fail_at(scene_file, where, "image " + path + " is not a regular file");
   OIIO::ImageBuf buf(path);
+  const OIIO::ImageSpec& header = buf.spec();  // read before the pixels: refuse huge images unread
+  if (header.width > kMaxTextureSide || header.height > kMaxTextureSide)
+    fail_at(scene_file, where,
+            path + ": " + std::to_string(header.width) + "x" + std::to_string(header.height) + " is larger than " +
+                std::to_string(kMaxTextureSide) + " texels on a side");
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
     fail_at(scene_file, where, "cannot read image " + path + ": " + buf.geterror());
   const OIIO::ImageSpec& s = buf.spec();
@@ -131,6 +139,12 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& path,
     for (int c = 0; c < 3; ++c) {
       float v = pixels[p * s.nchannels + (s.nchannels == 1 ? 0 : c)];
       if (srgb) v = srgb_to_linear(v);
+      // A NaN, inf or (in a colour) negative texel would reach the film as NaN or negative light.
+      if (!std::isfinite(v) || (!data && v < 0.0f))
+        fail_at(scene_file, where,
+                path + ": texel (" + std::to_string(p % s.width) + ", " + std::to_string(p / s.width) + ") channel " +
+                    std::to_string(c) + " is " + std::to_string(v) + "; texels must be finite" +
+                    (data ? "" : " and >= 0"));
       scene_.texels.push_back(v);
       sum[c] += v;
     }
