@@ -14,7 +14,7 @@ packages=(
   git                                     # golden update's check for uncommitted edits
   fonts-dejavu-core                       # the font of the bench converge plot
   libembree-dev                           # the Embree row of bench rays (benchmark only)
-  clang libomp-dev                        # the second compiler and its OpenMP runtime (ci/extra.sh)
+  clang libomp-dev libclang-rt-14-dev     # the second compiler, its OpenMP runtime, libFuzzer and sanitizers (ci/extra.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

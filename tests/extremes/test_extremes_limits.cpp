@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "golden/golden_check.h"
-#include "io/text_file.h"
+#include "io/output_batch.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
 
@@ -74,7 +74,7 @@ TEST(ExtremesLimits, FilmCapacityIsReachedAndCountedExactly) {
   EXPECT_EQ(stats.overflow_samples, spp - ((1u << 20) - 1));
   EXPECT_EQ(img.rgb[0], static_cast<float>(1024.0 * ((1u << 20) - 1) / spp));  // rejected samples count as 0
   const auto dir = test::temp_dir("film-capacity");
-  write_text_atomically((dir / "bright.json").string(), json);
+  write_file_atomically((dir / "bright.json").string(), json);
   std::string output;
   ASSERT_EQ(
       test::run_tracer("render " + (dir / "bright.json").string() + " -o " + (dir / "bright.exr").string() + " --quiet",

@@ -9,7 +9,7 @@
 #include "bench/mesh_generators.h"
 #include "bench/watertight_probe.h"
 #include "io/input_error.h"
-#include "io/text_file.h"
+#include "io/output_batch.h"
 #include "test_util.h"
 
 namespace tracer {
@@ -52,7 +52,7 @@ TEST(ExtremesWatertight, BunnyHasNoCracks) {
 TEST(ExtremesWatertight, InsidePointsOfAnOpenMeshAreAnError) {
   const auto dir = test::temp_dir("watertight-open");
   const std::string obj = (dir / "open.obj").string();
-  write_text_atomically(obj, "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\n");
+  write_file_atomically(obj, "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3\nf 1 3 4\n");
   const Scene quad = load_probe_mesh(obj, TriangleTest::Watertight);
   EXPECT_THROW(inside_points(quad), InputError);
   std::filesystem::remove_all(dir);

@@ -86,6 +86,27 @@ TEST_F(HostileInput, LimitsOnThreadsAndWork) {
   EXPECT_FALSE(fs::exists(dir_ / "out.png"));
 }
 
+// CLI11 converted the other commands' numbers leniently: " 4", "0x10" and "" as counts, nan,
+// -1 and 1e999 as thresholds; every numeric flag now takes decimal digits within a range.
+TEST_F(HostileInput, EveryNumericFlagIsStrict) {
+  const std::string obj = " -o " + (dir_ / "m.obj").string();
+  for (const char* bad : {"' 4'", "0x10", "''", "-5", "4.5", "1e3", "99999999999999999999", "16777217"})
+    expect_refused(std::string("generate cube --triangles ") + bad + obj, "--triangles");
+  EXPECT_FALSE(fs::exists(dir_ / "m.obj"));
+  const std::string golden = std::string(TRACER_SOURCE_DIR) + "/golden/cornell-box.exr";
+  for (const char* flag : {"--fail", "--warn", "--failpercent", "--warnpercent"})
+    for (const char* bad : {"nan", "-1", "1e999", "inf", "' 0.1'", "0x1p3", "''", "1.2.3", "101"}) {
+      if (std::string(bad) == "101" && std::string(flag).find("percent") == std::string::npos) continue;
+      expect_refused("compare " + golden + " " + golden + " " + flag + " " + bad, flag);
+    }
+  for (const char* bad : {"' 4'", "-1", "1025", "0x4"})
+    expect_refused(std::string("bench rays ") + TRACER_SOURCE_DIR + "/scenes/cornell-box.json --threads " + bad,
+                   "--threads");
+  expect_refused(std::string("bench rays ") + TRACER_SOURCE_DIR + "/scenes/cornell-box.json --rays 0", "--rays");
+  expect_refused("render " + scene_file(scene_text(R"({"spp": 1})")) + " --samples ' 0:1'" + out(), "--samples");
+  expect_refused("render " + scene_file(scene_text(R"({"spp": 1})")) + " --samples +0:1" + out(), "--samples");
+}
+
 // A device or a FIFO as an input blocked or read forever.
 TEST_F(HostileInput, DevicesAndFifosAreNotRead) {
   const fs::path fifo = dir_ / "pipe.png";

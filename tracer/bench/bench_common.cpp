@@ -8,6 +8,7 @@
 
 #include "image/image_io.h"
 #include "io/input_error.h"
+#include "options/number_text.h"
 #include "render/render_cpu.h"
 #include "scene/scene_loader.h"
 
@@ -57,8 +58,11 @@ std::string bench_reference_dir() {
 }
 
 Image reference_image(const std::string& scene_path, RenderOverrides overrides, const std::string& ref_file,
-                      uint32_t ref_spp, int threads, const std::string& save_as) {
+                      uint64_t ref_spp, int threads, const std::string& save_as) {
   const Scene probe = load_scene(scene_path, overrides);
+  if (ref_spp > UINT32_MAX)
+    throw InputError("--ref-spp: the default reference would take " + std::to_string(ref_spp) +
+                     " samples per pixel, over " + std::to_string(UINT32_MAX) + "; give --ref-spp or --ref");
   if (!ref_file.empty()) {
     Image ref = read_image(ref_file);
     if (ref.width != probe.settings.width || ref.height != probe.settings.height)
@@ -68,7 +72,7 @@ Image reference_image(const std::string& scene_path, RenderOverrides overrides, 
     std::printf("reference: %s\n", ref_file.c_str());
     return ref;
   }
-  overrides.spp = ref_spp;
+  overrides.spp = static_cast<uint32_t>(ref_spp);
   overrides.seed = probe.settings.seed + kReferenceSeedOffset;
   if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid)
     overrides.sampler = SamplerKind::Stochastic;
@@ -85,14 +89,11 @@ std::vector<uint32_t> parse_spp_list(const std::string& option, const std::strin
   std::stringstream items(text);
   std::string item;
   while (std::getline(items, item, ',')) {
-    try {
-      size_t used = 0;
-      const unsigned long v = std::stoul(item, &used);
-      if (used != item.size() || v == 0 || v > 0xffffffffu || item[0] == '-') throw std::invalid_argument("");
-      out.push_back(static_cast<uint32_t>(v));
-    } catch (const std::exception&) {
-      throw InputError(option + " " + text + ": expected a comma-separated list of positive sample counts");
-    }
+    const std::optional<uint64_t> v = parse_count(item, UINT32_MAX);
+    if (!v || *v == 0)
+      throw InputError(option + " " + text + ": expected a comma-separated list of sample counts, each " +
+                       count_range(1, UINT32_MAX));
+    out.push_back(static_cast<uint32_t>(*v));
   }
   if (out.empty()) throw InputError(option + ": expected at least one sample count");
   return out;

@@ -30,7 +30,7 @@ ImageError image_error(const Image& image, const Image& reference);
 // at ref_spp samples with a seed no measured render uses, saved as `save_as` in
 // bench_reference_dir() for --ref next time. Prints what it used.
 Image reference_image(const std::string& scene_path, RenderOverrides overrides, const std::string& ref_file,
-                      uint32_t ref_spp, int threads, const std::string& save_as);
+                      uint64_t ref_spp, int threads, const std::string& save_as);
 
 // Where benchmarks save the references they render: bench-refs/ beside the tracer binary
 // (build/bench-refs/), never the source tree or the working directory.

@@ -1,8 +1,8 @@
 #include "bench/loglog_plot.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -35,7 +35,8 @@ std::string decade_label(double exponent) {
 
 }  // namespace
 
-void write_loglog_plot(const std::string& path, const PlotLabels& labels, const std::vector<PlotSeries>& series) {
+void add_loglog_plot(OutputBatch& batch, const std::string& path, const PlotLabels& labels,
+                     const std::vector<PlotSeries>& series) {
   namespace IBA = OIIO::ImageBufAlgo;
   if (!std::filesystem::exists(kFont))
     throw InputError(std::string(kFont) + ": font not found (install fonts-dejavu-core)");
@@ -81,15 +82,11 @@ void write_loglog_plot(const std::string& path, const PlotLabels& labels, const 
     IBA::render_box(img, kLeft + plot_w - 200, ly - 8, kLeft + plot_w - 188, ly + 4, c, true);
     IBA::render_text(img, kLeft + plot_w - 180, ly + 4, s.label, 14, kFont, ink);
   }
-  const std::filesystem::path target(path);
-  const std::filesystem::path temp =
-      target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()) + ".png");
-  if (!img.write(temp.string(), OIIO::TypeDesc::UINT8, "png")) {
-    std::error_code ec;
-    std::filesystem::remove(temp, ec);
-    throw InputError(path + ": cannot write the plot: " + img.geterror());
-  }
-  std::filesystem::rename(temp, target);
+  OIIO::Filesystem::IOVecOutput memory;  // encoded in memory, written by the batch (see image_io.cpp)
+  img.set_write_ioproxy(&memory);
+  if (!img.write(path, OIIO::TypeDesc::UINT8, "png"))
+    throw InputError(path + ": cannot encode the plot: " + img.geterror());
+  batch.add(path, std::string(memory.buffer().begin(), memory.buffer().end()));
 }
 
 }  // namespace tracer

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "io/output_batch.h"
+
 namespace tracer {
 
 struct PlotSeries {
@@ -15,7 +17,9 @@ struct PlotLabels {
   std::string title, x, y;
 };
 
-// InputError when the file cannot be written or the font is missing.
-void write_loglog_plot(const std::string& path, const PlotLabels& labels, const std::vector<PlotSeries>& series);
+// Adds the PNG to `batch` (written on its commit); InputError when it cannot be written or the
+// font is missing.
+void add_loglog_plot(OutputBatch& batch, const std::string& path, const PlotLabels& labels,
+                     const std::vector<PlotSeries>& series);
 
 }  // namespace tracer

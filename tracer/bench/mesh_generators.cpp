@@ -6,7 +6,7 @@
 #include <unordered_map>
 
 #include "io/input_error.h"
-#include "io/text_file.h"
+#include "io/output_batch.h"
 #include "kernel/base/detmath.h"
 
 namespace tracer {
@@ -187,7 +187,7 @@ void write_obj(const std::vector<MeshTriangle>& mesh, const std::string& path) {
     std::snprintf(line, sizeof line, "f %zu %zu %zu\n", a, b, c);
     faces += line;
   }
-  write_text_atomically(path, "# tracer generate: " + std::to_string(mesh.size()) + " triangles\n" + vertices + faces);
+  write_file_atomically(path, "# tracer generate: " + std::to_string(mesh.size()) + " triangles\n" + vertices + faces);
 }
 
 }  // namespace tracer

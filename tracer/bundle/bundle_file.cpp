@@ -1,5 +1,6 @@
 #include "bundle_file.h"
 
+#include "io/output_batch.h"
 #include "io/text_file.h"
 #include "sha1.h"
 
@@ -84,7 +85,7 @@ std::string encode_bundle(const BundleFile& bundle) {
 }
 
 void write_bundle(const std::string& path, const BundleFile& bundle) {
-  write_text_atomically(path, encode_bundle(bundle));
+  write_file_atomically(path, encode_bundle(bundle));
 }
 
 BundleFile read_bundle(const std::string& path, const std::string& expected_kind) {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 #include "bench/bench_common.h"
 #include "bench/loglog_plot.h"
@@ -68,7 +68,7 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
     base.sampler = SamplerKind::Stochastic;  // the center sampler takes one sample only
   std::printf("tracer bench converge %s: %ux%u, %s\n", cmd.scene.c_str(), probe.settings.width, probe.settings.height,
               cmd.nee == "both" ? "NEE+MIS and the plain estimator" : "the scene's estimator");
-  const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 8 * max_spp, cmd.threads,
+  const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 8ull * max_spp, cmd.threads,
                                     stem + "-converge-ref.exr");
 
   const bool nee = probe.settings.nee == Switch::On;
@@ -79,8 +79,7 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
     series_setups = {{probe.settings.integrator == IntegratorKind::Path ? (nee ? "NEE+MIS" : "plain") : "render",
                       probe.settings.nee}};
 
-  std::ofstream out(csv);
-  if (!out) throw InputError(csv + ": cannot write");
+  std::ostringstream out;  // the table, written with the plot once every render is done
   out << "series,spp,seconds,rmse,display_rmse,rel_mse\n";
   std::printf("%-10s %8s %10s %12s %13s %12s\n", "series", "spp", "seconds", "RMSE", "display RMSE", "relMSE");
   std::vector<std::vector<Point>> results;
@@ -104,9 +103,10 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
     }
     lines.push_back(line);
   }
-  out.close();
-  if (!out) throw InputError(csv + ": cannot write");
-  write_loglog_plot(plot, {"RMSE against render time: " + stem, "seconds", "RMSE"}, lines);
+  OutputBatch outputs;
+  outputs.add(csv, out.str());
+  add_loglog_plot(outputs, plot, {"RMSE against render time: " + stem, "seconds", "RMSE"}, lines);
+  outputs.commit();
   if (results.size() == 2) {
     const Point& plain = results[1].back();
     const struct {
@@ -138,7 +138,8 @@ const RegisterCommand kBenchConvergeCommand(
        app.add_option("--nee", cmd->nee,
                       "scene (default), on, off, or both: NEE+MIS and the plain estimator side by side");
        app.add_option("--ref", cmd->ref, "reference image (EXR); default: render one at --ref-spp");
-       app.add_option("--ref-spp", cmd->ref_spp, "reference samples per pixel (default 8 x the largest --spp)");
+       app.add_option("--ref-spp", cmd->ref_spp, "reference samples per pixel (default 8 x the largest --spp)")
+           ->check(count_in(1, UINT32_MAX));
        app.add_option("--csv", cmd->csv, "table output (default SCENE-converge.csv)");
        app.add_option("--plot", cmd->plot, "log-log plot of RMSE against seconds (default SCENE-converge.png)");
        add_bench_size_options(app, cmd->width, cmd->height, cmd->threads);

@@ -164,7 +164,8 @@ const RegisterCommand kBenchDeviceCommand(
     {"bench", "device", "Whitted frames/s and Mrays/s on a device: per effect, per resolution", [](CLI::App& app) {
        auto cmd = std::make_shared<BenchDeviceCommand>();
        app.add_option("--device", cmd->device, "cuda (default; the CPU is timed too, as the baseline) or cpu");
-       app.add_option("--frames", cmd->frames, "frames per measurement; the median is reported (default 5)");
+       app.add_option("--frames", cmd->frames, "frames per measurement; the median is reported (default 5)")
+           ->check(count_in(1, 1000));
        app.add_option("--scenes", cmd->scenes,
                       "scene directory: cornell-box.json and the mesh scenes (default scenes)");
        add_threads_option(app, cmd->threads);

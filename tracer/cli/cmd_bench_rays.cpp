@@ -186,9 +186,10 @@ const RegisterCommand kBenchRaysCommand(
        auto cmd = std::make_shared<BenchRaysCommand>();
        app.add_option("scene", cmd->scene, "scene file (JSON) or OBJ mesh")->required();
        app.add_option("--accel", cmd->accel, "comma-separated structures (default bvh,lbvh,kdtree,kdtree-median,grid)");
-       app.add_option("--rays", cmd->incoherent, "incoherent rays (default 2^22)");
+       app.add_option("--rays", cmd->incoherent, "incoherent rays (default 2^22)")->check(count_in(1, 1u << 25));
        app.add_option("--grid-resolution", cmd->grid_resolution,
-                      "grid cells along the longest axis (default: by density)");
+                      "grid cells along the longest axis (default: by density)")
+           ->check(count_in(1, 1024));
        add_threads_option(app, cmd->threads);
        return [cmd] { return run_bench_rays(*cmd); };
      }});

@@ -88,7 +88,7 @@ static int run_bench_trade(const BenchTradeCommand& cmd) {
     base.sampler = SamplerKind::Stochastic;
   std::printf("tracer bench trade %s: %ux%u, %u spp budget; seconds are the median of %d renders\n", cmd.scene.c_str(),
               probe.settings.width, probe.settings.height, cmd.spp, kRepeats);
-  const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 16 * cmd.spp, cmd.threads,
+  const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 16ull * cmd.spp, cmd.threads,
                                     std::filesystem::path(cmd.scene).stem().string() + "-trade-ref.exr");
 
   std::printf("%-12s %-15s | %6s %9s %11s %11s | %14s %9s %11s\n", "knob", "setting", "spp", "seconds", "RMSE",
@@ -118,9 +118,10 @@ const RegisterCommand kBenchTradeCommand(
     {"bench", "trade", "time and error of each knob, at a fixed sample budget and at equal time", [](CLI::App& app) {
        auto cmd = std::make_shared<BenchTradeCommand>();
        app.add_option("scene", cmd->scene, "scene file (JSON)")->required();
-       app.add_option("--spp", cmd->spp, "the fixed sample budget (default 64)");
+       app.add_option("--spp", cmd->spp, "the fixed sample budget (default 64)")->check(count_in(1, UINT32_MAX));
        app.add_option("--ref", cmd->ref, "reference image (EXR); default: render one at --ref-spp");
-       app.add_option("--ref-spp", cmd->ref_spp, "reference samples per pixel (default 16 x --spp)");
+       app.add_option("--ref-spp", cmd->ref_spp, "reference samples per pixel (default 16 x --spp)")
+           ->check(count_in(1, UINT32_MAX));
        add_bench_size_options(app, cmd->width, cmd->height, cmd->threads);
        return [cmd] { return run_bench_trade(*cmd); };
      }});

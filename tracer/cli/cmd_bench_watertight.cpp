@@ -61,7 +61,8 @@ const RegisterCommand kBenchWatertightCommand(
        auto cmd = std::make_shared<BenchWatertightCommand>();
        app.add_option("meshes", cmd->meshes,
                       "closed OBJ meshes (default: a generated icosphere and cube, and scenes/generated/bunny.obj)");
-       app.add_option("--edge-points", cmd->edge_points, "points aimed at along every edge (default 16)");
+       app.add_option("--edge-points", cmd->edge_points, "points aimed at along every edge (default 16)")
+           ->check(count_in(1, 4096));
        add_threads_option(app, cmd->threads);
        return [cmd] { return run_bench_watertight(*cmd); };
      }});

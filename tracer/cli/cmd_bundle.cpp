@@ -9,6 +9,7 @@
 #include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "io/input_error.h"
+#include "io/output_batch.h"
 #include "io/text_file.h"
 #include "render/partial_file.h"
 #include "scene/scene_loader.h"
@@ -28,7 +29,7 @@ static int run_bundle(const RenderCommand& cmd) {
   const SampleRange range = cmd.samples.empty() ? SampleRange{0, spp} : parse_sample_range(cmd.samples, spp);
   const SceneBundle bundle = make_scene_bundle(scene, scene.view(), range, cmd.scene);
   const std::string bytes = encode_bundle(encode_scene_bundle(bundle));
-  write_text_atomically(cmd.output, bytes);
+  write_file_atomically(cmd.output, bytes);
   std::printf("wrote %s (%zu bytes: %ux%u, samples [%u, %u), %zu primitives)\n", cmd.output.c_str(), bytes.size(),
               scene.settings.width, scene.settings.height, range.begin, range.end, scene.primitives.size());
   return 0;

@@ -30,10 +30,13 @@ const RegisterCommand kCompareCommand(
        auto cmd = std::make_shared<CompareCommand>();
        app.add_option("a", cmd->a, "first image")->required();
        app.add_option("b", cmd->b, "second image")->required();
-       app.add_option("--fail", cmd->options.fail, "per-channel failure threshold; 0 means bit-exact");
-       app.add_option("--failpercent", cmd->options.failpercent, "percentage of pixels allowed to fail");
-       app.add_option("--warn", cmd->options.warn, "per-channel warning threshold");
-       app.add_option("--warnpercent", cmd->options.warnpercent, "percentage of pixels allowed to warn");
+       app.add_option("--fail", cmd->options.fail, "per-channel failure threshold; 0 means bit-exact")
+           ->check(decimal_in(0, 1e30));
+       app.add_option("--failpercent", cmd->options.failpercent, "percentage of pixels allowed to fail")
+           ->check(decimal_in(0, 100));
+       app.add_option("--warn", cmd->options.warn, "per-channel warning threshold")->check(decimal_in(0, 1e30));
+       app.add_option("--warnpercent", cmd->options.warnpercent, "percentage of pixels allowed to warn")
+           ->check(decimal_in(0, 100));
        app.add_option("--diff", cmd->diff, "write |a - b| to this image");
        return [cmd] { return run_compare(*cmd); };
      }});

@@ -27,7 +27,8 @@ const RegisterCommand kGenerateCommand(
     {"", "generate", "write a deterministic procedural mesh as OBJ", [](CLI::App& app) {
        auto cmd = std::make_shared<GenerateCommand>();
        app.add_option("kind", cmd->kind, "terrain, sphere, boxes, cubes, mixed, icosphere or cube")->required();
-       app.add_option("--triangles", cmd->triangles, "target triangle count (default 100000)");
+       app.add_option("--triangles", cmd->triangles, "target triangle count (default 100000)")
+           ->check(count_in(1, 1u << 24));
        app.add_option("-o,--output", cmd->output, "OBJ file")->required();
        return [cmd] { return run_generate(*cmd); };
      }});

@@ -64,7 +64,9 @@ static int run_golden_check(const GoldenCheckCommand& cmd) {
   if (!cmd.report.empty()) write_report_row(cmd.report, manifest, entry, render ? &*render : nullptr, outcome);
   const char* verdicts[] = {"PASS", "FAIL", "ERROR", "SKIPPED"};
   const char* verdict = verdicts[static_cast<int>(outcome.status)];
-  std::printf("golden %s: %s: %s\n", cmd.name.c_str(), verdict, outcome.message.c_str());
+  // The verdict goes to stdout, except an error, which goes to stderr as every command's errors do.
+  std::fprintf(outcome.status == GoldenStatus::Error ? stderr : stdout, "golden %s: %s: %s\n", cmd.name.c_str(),
+               verdict, outcome.message.c_str());
   if (outcome.status == GoldenStatus::Skipped) return kExitSkipped;
   if (outcome.status != GoldenStatus::Pass) {
     if (!cmd.report.empty())

@@ -14,7 +14,7 @@
 #include "cli/commands.h"
 #include "golden/golden_manifest.h"
 #include "io/input_error.h"
-#include "io/text_file.h"
+#include "io/output_batch.h"
 #include "options/enum_names.h"
 #include "parity/parallel_for.h"
 #include "parity/parity_suite.h"
@@ -131,7 +131,7 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
   try {
     const std::vector<MeshTriangle> mesh = generate_mesh("sphere", 100000);
     write_obj(mesh, (temp / "sphere-100k.obj").string());
-    write_text_atomically((temp / "sphere-100k.json").string(), R"({
+    write_file_atomically((temp / "sphere-100k.json").string(), R"({
   "format": "tracer-scene/1",
   "camera": { "from": [0, 0.6, 4], "to": [0, 0, 0], "vfov": 40 },
   "film": { "width": 720, "height": 480 },
@@ -195,11 +195,11 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
   fs::copy_file(runner, out / "tracer-gpu");
   fs::permissions(out / "tracer-gpu", fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                                           fs::perms::others_read | fs::perms::others_exec);
-  write_text_atomically((out / "run.sh").string(), kRunScript);
+  write_file_atomically((out / "run.sh").string(), kRunScript);
   fs::permissions(out / "run.sh", fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec,
                   fs::perm_options::add);
-  write_text_atomically((out / "pack.tsv").string(), list);
-  write_text_atomically((out / "bench.tsv").string(), write_bench(cmd.root, out));
+  write_file_atomically((out / "pack.tsv").string(), list);
+  write_file_atomically((out / "bench.tsv").string(), write_bench(cmd.root, out));
 }
 
 }  // namespace

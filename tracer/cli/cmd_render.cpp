@@ -12,6 +12,7 @@
 #include "cli/commands.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
+#include "io/output_batch.h"
 #include "io/text_file.h"
 #include "options/render_options.h"
 #include "render/partial_file.h"
@@ -117,6 +118,8 @@ static int run_render(const RenderCommand& cmd) {
     bar.finish();
   }
   const double render_s = seconds_since(t_render);
+  // The image (or partial file) and the --stats file land together or not at all.
+  OutputBatch outputs;
   if (partial) {
     part.header = {render_identity(scene),
                    cmd.scene,
@@ -124,9 +127,9 @@ static int run_render(const RenderCommand& cmd) {
                    rs.spp,
                    stats.nonfinite_samples,
                    stats.overflow_samples};
-    write_partial(output, part);
+    outputs.add(output, encode_partial(part));
   } else {
-    write_image(resolve_film(part.film, rs.spp), output);
+    add_image(outputs, resolve_film(part.film, rs.spp), output);
   }
 
   const uint64_t rays = stats.rays.camera + stats.rays.secondary + stats.rays.shadow;
@@ -161,8 +164,9 @@ static int run_render(const RenderCommand& cmd) {
     if (rs.accel == AccelKind::Grid) j["accel"]["cells"] = accel.cells;
     j["features"] = feature_names(scene.features);
     j["options"] = resolved_options(rs).to_json();
-    write_text_atomically(cmd.stats, j.dump(2) + "\n");
+    outputs.add(cmd.stats, j.dump(2) + "\n");
   }
+  outputs.commit();
   if (!cmd.quiet && cmd.device == "cuda")
     std::fprintf(stderr, "%s: kernel %.6f s, upload %.3f s, download %.3f s\n", cuda.device.c_str(),
                  cuda.kernel_seconds, cuda.upload_seconds, cuda.download_seconds);

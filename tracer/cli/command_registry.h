@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/number_checks.h"
+
 namespace tracer {
 
 using CommandRun = std::function<int()>;
@@ -28,7 +30,7 @@ struct RegisterCommand {
 
 // The `--threads` option every CPU command takes: 0 (all) to 1024.
 inline void add_threads_option(CLI::App& app, int& threads) {
-  app.add_option("--threads", threads, "CPU threads, at most 1024 (default: all)")->check(CLI::Range(0, 1024));
+  app.add_option("--threads", threads, "CPU threads, at most 1024 (default: all)")->check(count_in(0, 1024));
 }
 
 }  // namespace tracer

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <new>
+#include <string>
 
 #include "cli/command_registry.h"
 
@@ -54,6 +56,11 @@ int main(int argc, char** argv) {
   try {
     for (const auto& [sub, run] : runs)
       if (*sub) return run();
+  } catch (const std::bad_alloc&) {  // the input asked for more memory than the machine has
+    std::string command = "tracer";
+    for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
+    std::fprintf(stderr, "error: out of memory: `%s` needs more memory than this machine gives\n",
+                 command.substr(0, 400).c_str());
   } catch (const std::exception& e) {  // InputError, DeviceUnavailable, CUDA errors, I/O
     std::fprintf(stderr, "error: %s\n", e.what());
   }

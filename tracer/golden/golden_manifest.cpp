@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "io/output_batch.h"
 #include "io/text_file.h"
 #include "scene/scene_types.h"
 
@@ -101,7 +102,7 @@ GoldenManifest read_manifest(const std::string& root) {
   return m;  // nlohmann's object keeps keys sorted, so entries are sorted by name
 }
 
-void write_manifest(const GoldenManifest& manifest) {
+void add_manifest(OutputBatch& outputs, const GoldenManifest& manifest) {
   nlohmann::ordered_json doc;
   doc["format"] = kFormat;
   doc["goldens"] = nlohmann::ordered_json::object();
@@ -117,7 +118,7 @@ void write_manifest(const GoldenManifest& manifest) {
       entry["compare"] = "exact";
     doc["goldens"][e.name] = entry;
   }
-  write_text_atomically(manifest.path, doc.dump(2) + "\n");
+  outputs.add(manifest.path, doc.dump(2) + "\n");
 }
 
 }  // namespace tracer

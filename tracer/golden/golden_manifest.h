@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/json_reader.h"
+#include "io/output_batch.h"
 #include "options/render_options.h"
 #include "scene/scene.h"
 
@@ -41,6 +42,6 @@ struct GoldenManifest {
 
 std::string manifest_path(const std::string& root);
 GoldenManifest read_manifest(const std::string& root);  // InputError naming file and key
-void write_manifest(const GoldenManifest& manifest);    // atomically, in a stable layout
+void add_manifest(OutputBatch& outputs, const GoldenManifest& manifest);  // in a stable layout, on commit
 
 }  // namespace tracer

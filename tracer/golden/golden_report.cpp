@@ -10,6 +10,7 @@
 #include "image/image_io.h"
 #include "io/input_error.h"
 #include "io/json_reader.h"
+#include "io/output_batch.h"
 #include "io/text_file.h"
 
 namespace fs = std::filesystem;
@@ -196,7 +197,7 @@ void write_report_row(const std::string& report_dir, const GoldenManifest& manif
       row["images"]["difference"] = entry.name + "/difference.png";
     }
   }
-  write_text_atomically((dir / "rows" / (entry.name + ".json")).string(), row.dump(2) + "\n");
+  write_file_atomically((dir / "rows" / (entry.name + ".json")).string(), row.dump(2) + "\n");
 }
 
 void reset_report(const std::string& report_dir) {
@@ -239,7 +240,7 @@ ReportCounts assemble_report(const std::string& report_dir) {
        << body << "</tbody></table>\n"
        << kScript << "\n</body></html>\n";
   fs::create_directories(dir);
-  write_text_atomically((dir / "index.html").string(), html.str());
+  write_file_atomically((dir / "index.html").string(), html.str());
   return counts;
 }
 

@@ -107,18 +107,21 @@ std::vector<GoldenChange> update_goldens(const UpdateRequest& request) {
   }
   if (pending.empty()) throw InputError(manifest.path + ": no golden name matches --filter \"" + request.filter + "\"");
 
+  // The new images and the manifest land together or not at all.
+  OutputBatch outputs;
   bool manifest_changed = false;
   std::vector<GoldenChange> changes;
   for (Pending& p : pending) {
     if (p.change.kind != GoldenChangeKind::Unchanged) {
-      write_image(p.render.image, manifest.image_path(*p.entry));
+      add_image(outputs, p.render.image, manifest.image_path(*p.entry));
       p.entry->hash = p.render.hash;
       p.entry->options = p.render.options;
       manifest_changed = true;
     }
     changes.push_back(p.change);
   }
-  if (manifest_changed) write_manifest(manifest);
+  if (manifest_changed) add_manifest(outputs, manifest);
+  outputs.commit();
   return changes;
 }
 

@@ -1,7 +1,6 @@
 #include "image/image_io.h"
 
-#include <unistd.h>
-
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
@@ -35,18 +34,24 @@ bool is_float_format(const std::string& path) {
   return ext == ".exr" || ext == ".hdr" || ext == ".tif" || ext == ".tiff" || ext == ".pfm";
 }
 
-void write_image(const Image& image, const std::string& path) {
-  const std::filesystem::path target(path);
-  if (target.extension().empty()) throw InputError(path + ": output needs a file extension (.exr, .png, ...)");
-  const std::filesystem::path temp = target.parent_path() / ("." + target.stem().string() + ".tmp" +
-                                                             std::to_string(getpid()) + target.extension().string());
-  auto out = OIIO::ImageOutput::create(temp.string());
+// OpenImageIO encodes into memory and our own writer puts the bytes on disk: its file writers
+// report success when a write fails as the file is closed (OpenEXR on a full disk), which would
+// rename an empty file over the old image.
+void add_image(OutputBatch& batch, const Image& image, const std::string& path) {
+  if (std::filesystem::path(path).extension().empty())
+    throw InputError(path + ": output needs a file extension (.exr, .png, ...)");
+  auto out = OIIO::ImageOutput::create(path);
   if (!out) throw InputError(path + ": no image writer for this extension: " + OIIO::geterror());
+  if (!out->supports("ioproxy"))
+    throw InputError(path + ": this image format cannot be written safely; use .exr or .png");
   const bool linear = is_float_format(path);
   OIIO::ImageSpec spec(static_cast<int>(image.width), static_cast<int>(image.height), 3,
                        linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
   if (lower_extension(path) == ".exr") spec.attribute("compression", "zip");
-  bool ok = out->open(temp.string(), spec);
+  OIIO::Filesystem::IOVecOutput memory;
+  void* proxy = &memory;
+  spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+  bool ok = out->open(path, spec);
   if (ok && linear) {
     ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgb.data());
   } else if (ok) {
@@ -55,17 +60,16 @@ void write_image(const Image& image, const std::string& path) {
       bytes[i] = static_cast<unsigned char>(linear_to_srgb(image.rgb[i]) * 255.0f + 0.5f);
     ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
   }
-  const std::string error = out->geterror();
   ok = out->close() && ok;
-  std::error_code ec;
-  if (ok) std::filesystem::rename(temp, target, ec);
-  if (!ok || ec) {
-    std::filesystem::remove(temp, ec);
-    throw InputError(path + ": cannot write image: " +
-                     (!error.empty() ? error
-                      : ec           ? ec.message()
-                                     : "the image writer failed (is the disk full?)"));
-  }
+  if (!ok) throw InputError(path + ": cannot encode image: " + out->geterror());
+  const std::vector<unsigned char>& encoded = memory.buffer();
+  batch.add(path, std::string(encoded.begin(), encoded.end()));
+}
+
+void write_image(const Image& image, const std::string& path) {
+  OutputBatch batch;
+  add_image(batch, image, path);
+  batch.commit();
 }
 
 Image read_image(const std::string& path) {

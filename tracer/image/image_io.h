@@ -1,15 +1,17 @@
 // Image files through OpenImageIO. .exr, .hdr, .tif, .tiff and .pfm keep linear float32
 // (EXR losslessly, zip-compressed); other formats (.png, .jpg, ...) get 8-bit sRGB,
-// clamped to [0, 1]. Writes go to a temporary file in the same directory, renamed into
-// place, so an interrupted write never leaves a partial image or clobbers the old one.
+// clamped to [0, 1]. Writes go through an OutputBatch (io/output_batch.h): a failed or
+// interrupted write never leaves a partial image or clobbers the old one.
 #pragma once
 #include <string>
 
 #include "image/image.h"
+#include "io/output_batch.h"
 
 namespace tracer {
 
-void write_image(const Image& image, const std::string& path);
+void add_image(OutputBatch& batch, const Image& image, const std::string& path);  // written on commit
+void write_image(const Image& image, const std::string& path);                    // a batch of one
 Image read_image(const std::string& path);  // RGB float; InputError when unreadable
 bool is_float_format(const std::string& path);
 

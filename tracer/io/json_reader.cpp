@@ -68,8 +68,8 @@ Vec3 read_vec3(const Json& v, const std::string& path, const std::string& file) 
           read_number(v[2], path + "[2]", file)};
 }
 
-JsonObject::JsonObject(const Json& value, std::string path, const std::string& file)
-    : value_(value), path_(std::move(path)), file_(file) {
+JsonObject::JsonObject(const Json& value, std::string path, std::string file)
+    : value_(value), path_(std::move(path)), file_(std::move(file)) {
   if (!value_.is_object())
     fail_at(file_, path_.empty() ? "(top level)" : path_, "expected an object, got " + describe(value_));
 }

@@ -19,7 +19,7 @@ Json parse_json_text(const std::string& text, const std::string& file);
 
 class JsonObject {
  public:
-  JsonObject(const Json& value, std::string path, const std::string& file);
+  JsonObject(const Json& value, std::string path, std::string file);
   const Json* find(const std::string& key);         // nullptr when absent; marks the key as read
   const Json& get(const std::string& key);          // error when absent
   std::string child(const std::string& key) const;  // "path.key"
@@ -42,7 +42,7 @@ class JsonObject {
  private:
   const Json& value_;
   std::string path_;
-  const std::string& file_;
+  std::string file_;  // a copy: callers pass temporaries
   std::set<std::string> read_;
 };
 

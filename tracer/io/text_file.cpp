@@ -46,26 +46,4 @@ std::string read_text_file(const std::string& path, const std::string& what, uin
   return text;
 }
 
-void write_text_atomically(const std::string& path, const std::string& text) {
-  const std::string temp = path + ".tmp." + std::to_string(::getpid());
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw InputError(path + ": cannot write: " + errno_text());
-  std::string failure;
-  for (size_t done = 0; failure.empty() && done < text.size();) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0)
-      failure = n < 0 ? errno_text() : "no space written";
-    else
-      done += static_cast<size_t>(n);
-  }
-  if (failure.empty() && ::fsync(fd) != 0) failure = errno_text();
-  if (::close(fd) != 0 && failure.empty()) failure = errno_text();
-  if (failure.empty() && std::rename(temp.c_str(), path.c_str()) != 0) failure = errno_text();
-  if (!failure.empty()) {
-    ::unlink(temp.c_str());
-    throw InputError(path + ": cannot write: " + failure);
-  }
-}
-
 }  // namespace tracer

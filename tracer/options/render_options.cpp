@@ -5,11 +5,10 @@
 
 #include "options/effects.h"
 #include "options/enum_names.h"
+#include "options/number_text.h"
 
 namespace tracer {
 namespace {
-
-std::string number_range(uint64_t max) { return "a whole number from 0 to " + std::to_string(max); }
 
 // An option's value from its JSON form (scene file, manifest, partial file): numbers for
 // counts and seeds, true/false for switches, names for enums and effects.
@@ -19,7 +18,7 @@ T value_from_json(const Json& v, const std::string& path, const std::string& fil
   if constexpr (std::is_same_v<T, uint32_t> || std::is_same_v<T, uint64_t>) {
     if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<int64_t>() < 0) ||
         v.get<uint64_t>() > std::numeric_limits<T>::max())
-      fail_at(file, path, "expected " + number_range(std::numeric_limits<T>::max()) + ", got " + describe(v));
+      fail_at(file, path, "expected " + count_range(0, std::numeric_limits<T>::max()) + ", got " + describe(v));
     return static_cast<T>(v.get<uint64_t>());
   } else if constexpr (std::is_same_v<T, Switch>) {
     if (!v.is_boolean()) fail_at(file, path, "expected true or false, got " + describe(v));
@@ -49,18 +48,9 @@ nlohmann::ordered_json value_to_json(T value) {
 template <class T>
 T value_from_text(const std::string& text, const std::string& flag) {
   if constexpr (std::is_same_v<T, uint32_t> || std::is_same_v<T, uint64_t>) {
-    const uint64_t max = std::numeric_limits<T>::max();
-    uint64_t value = 0;
-    bool ok = !text.empty() && text.size() <= 20;
-    for (const char c : text) {
-      if (!ok || c < '0' || c > '9' || value > (max - static_cast<uint64_t>(c - '0')) / 10) {
-        ok = false;
-        break;
-      }
-      value = value * 10 + static_cast<uint64_t>(c - '0');
-    }
-    if (!ok) throw InputError(flag + " \"" + text + "\": expected " + number_range(max));
-    return static_cast<T>(value);
+    const std::optional<uint64_t> value = parse_count(text, std::numeric_limits<T>::max());
+    if (!value) throw InputError(flag + " \"" + text + "\": expected " + count_range(0, std::numeric_limits<T>::max()));
+    return static_cast<T>(*value);
   } else if constexpr (std::is_same_v<T, Effects>) {
     return parse_effects(text, flag);
   } else {

@@ -5,6 +5,7 @@
 #include "bundle/sha1.h"
 #include "io/input_error.h"
 #include "io/text_file.h"
+#include "options/number_text.h"
 
 namespace tracer {
 namespace {
@@ -27,7 +28,7 @@ uint32_t read_u32(JsonObject& obj, const std::string& key) {
 
 }  // namespace
 
-void write_partial(const std::string& path, const Partial& partial) {
+std::string encode_partial(const Partial& partial) {
   const PartialHeader& h = partial.header;
   const size_t count = partial.film.pixels.size();
   const Json header = {{"scene", h.scene},
@@ -44,7 +45,7 @@ void write_partial(const std::string& path, const Partial& partial) {
   const size_t start = bytes.size();
   bytes.resize(start + count * sizeof(FilmSum));
   std::memcpy(bytes.data() + start, partial.film.pixels.data(), count * sizeof(FilmSum));
-  write_text_atomically(path, bytes);
+  return bytes;
 }
 
 Partial read_partial(const std::string& path) {
@@ -98,18 +99,11 @@ SampleRange parse_sample_range(const std::string& text, uint32_t spp) {
   const size_t colon = text.find(':');
   const auto bad = [&](const std::string& why) { return InputError("--samples " + text + ": " + why); };
   if (colon == std::string::npos) throw bad("expected A:B, the samples [A, B) of every pixel");
-  uint64_t a = 0, b = 0;
-  try {
-    size_t used_a = 0, used_b = 0;
-    a = std::stoull(text.substr(0, colon), &used_a);
-    b = std::stoull(text.substr(colon + 1), &used_b);
-    if (used_a != colon || used_b != text.size() - colon - 1 || text[0] == '-' || text[colon + 1] == '-')
-      throw std::invalid_argument("");
-  } catch (const std::exception&) {
-    throw bad("expected A:B with non-negative integers");
-  }
-  if (!(a < b && b <= spp)) throw bad("expected 0 <= A < B <= spp (" + std::to_string(spp) + ")");
-  return {static_cast<uint32_t>(a), static_cast<uint32_t>(b)};
+  const std::optional<uint64_t> a = parse_count(std::string_view(text).substr(0, colon), UINT32_MAX);
+  const std::optional<uint64_t> b = parse_count(std::string_view(text).substr(colon + 1), UINT32_MAX);
+  if (!a || !b) throw bad("expected A:B, each " + count_range(0, UINT32_MAX));
+  if (!(*a < *b && *b <= spp)) throw bad("expected 0 <= A < B <= spp (" + std::to_string(spp) + ")");
+  return {static_cast<uint32_t>(*a), static_cast<uint32_t>(*b)};
 }
 
 }  // namespace tracer

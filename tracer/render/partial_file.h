@@ -27,7 +27,7 @@ struct Partial {
   FilmBuffer film;  // film.range: the part's samples
 };
 
-void write_partial(const std::string& path, const Partial& partial);  // atomically
+std::string encode_partial(const Partial& partial);                   // the file's bytes
 Partial read_partial(const std::string& path);                        // InputError naming the file
 
 // "A:B" with 0 <= A < B <= spp.

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Runs one libFuzzer target for a bounded time (docs/fuzzing.md): the checked-in corpus is
+# copied into a work corpus under the build tree, mutated for SECONDS with the target's
+# dictionary, each input limited to 10 s and 2 GiB; any crash, hang, leak or sanitizer report
+# exits non-zero and leaves its input under WORK/artifacts/. Prints how many inputs ran.
+# Usage: run_fuzzer.sh FUZZER SOURCE_DIR NAME SECONDS WORK
+set -euo pipefail
+fuzzer=$1 source=$2 name=$3 seconds=$4 work=$5
+rm -rf "$work"
+mkdir -p "$work/corpus" "$work/artifacts"
+cp "$source/corpus/$name"/* "$work/corpus/"
+dict=()
+[ -f "$source/dict/$name.dict" ] && dict=("-dict=$source/dict/$name.dict")
+set +e
+"$fuzzer" "$work/corpus" "${dict[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  -max_len=65536 -print_final_stats=1 -artifact_prefix="$work/artifacts/" 2>"$work/log"
+status=$?
+set -e
+grep -E '^stat::number_of_executed_units|^#[0-9]+ *DONE' "$work/log" || true
+if [ $status -ne 0 ]; then
+  tail -60 "$work/log"
+  echo "fuzz.$name: the fuzzer failed (exit $status); the input is in $work/artifacts/"
+  ls -l "$work/artifacts/"
+  exit 1
+fi
+echo "fuzz.$name: no finding in $seconds s; corpus now $(ls "$work/corpus" | wc -l) inputs"

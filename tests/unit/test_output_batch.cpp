@@ -1,0 +1,86 @@
+// OutputBatch (io/output_batch.h): the files of a batch land together on commit, and a batch
+// that fails, is abandoned or is interrupted by SIGTERM leaves the earlier files as they were
+// and no temporary behind. The full-disk cases of every command: test_full_disk.cpp.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <fstream>
+
+#include "io/input_error.h"
+#include "io/output_batch.h"
+#include "test_util.h"
+
+namespace tracer {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+size_t entries(const fs::path& dir) { return std::distance(fs::directory_iterator(dir), fs::directory_iterator()); }
+
+class OutputBatchTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = test::temp_dir("output-batch");
+    std::ofstream(dir_ / "a.txt") << "earlier a";
+    std::ofstream(dir_ / "b.txt") << "earlier b";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const char* name) const { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+TEST_F(OutputBatchTest, CommitReplacesEveryFileAndLeavesNoTemporary) {
+  OutputBatch batch;
+  batch.add(path("a.txt"), "new a");
+  batch.add(path("b.txt"), "new b");
+  EXPECT_EQ(read(dir_ / "a.txt"), "earlier a");  // nothing lands before the commit
+  batch.commit();
+  EXPECT_EQ(read(dir_ / "a.txt"), "new a");
+  EXPECT_EQ(read(dir_ / "b.txt"), "new b");
+  EXPECT_EQ(entries(dir_), 2u);
+}
+
+TEST_F(OutputBatchTest, AFailedFileLeavesEveryEarlierFile) {
+  {
+    OutputBatch batch;
+    batch.add(path("a.txt"), "new a");
+    EXPECT_THROW(batch.add(path("missing-dir/b.txt"), "new b"), InputError);
+  }
+  EXPECT_EQ(read(dir_ / "a.txt"), "earlier a");
+  EXPECT_EQ(read(dir_ / "b.txt"), "earlier b");
+  EXPECT_EQ(entries(dir_), 2u);
+}
+
+TEST_F(OutputBatchTest, ATargetNamedTwiceIsRefused) {
+  OutputBatch batch;
+  batch.add(path("a.txt"), "one");
+  EXPECT_THROW(batch.add(path("a.txt"), "two"), InputError);
+}
+
+// A child process adds a file and is killed by SIGTERM before committing: the handler removes
+// the temporary, and the process still ends by the signal.
+TEST_F(OutputBatchTest, SigtermBeforeCommitRemovesTheTemporaries) {
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    OutputBatch batch;
+    batch.add(path("a.txt"), "new a");
+    std::raise(SIGTERM);
+    ::_exit(0);  // not reached
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status;
+  EXPECT_EQ(read(dir_ / "a.txt"), "earlier a");
+  EXPECT_EQ(entries(dir_), 2u);
+}
+
+}  // namespace
+}  // namespace tracer
