@@ -136,6 +136,12 @@ TEST_F(HostileInput, OutputsNeverOverwriteInputs) {
   expect_refused(
       "render " + scene + " --quiet --stats " + (dir_ / "out.png").string() + " -o " + (dir_ / "out.png").string(),
       "--stats names the output image");
+  fs::create_directories(dir_ / "stats-dir");
+  write(dir_ / "out.png", "earlier image");
+  expect_refused(
+      "render " + scene + " --quiet --stats " + (dir_ / "stats-dir").string() + " -o " + (dir_ / "out.png").string(),
+      "names a directory");
+  EXPECT_EQ(read(dir_ / "out.png"), "earlier image");
   EXPECT_EQ(read(scene), before);
   write_image(test::image_from(2, 2, [](uint32_t, uint32_t) { return Vec3{1, 1, 1}; }), (dir_ / "tex.png").string());
   const std::string tex_before = read(dir_ / "tex.png");

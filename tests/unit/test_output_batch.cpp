@@ -58,6 +58,14 @@ TEST_F(OutputBatchTest, AFailedFileLeavesEveryEarlierFile) {
   EXPECT_EQ(entries(dir_), 2u);
 }
 
+TEST_F(OutputBatchTest, ADirectoryIsRefusedBeforeAnythingLands) {
+  fs::create_directories(dir_ / "d");
+  OutputBatch batch;
+  batch.add(path("a.txt"), "new a");
+  EXPECT_THROW(batch.add(path("d"), "new d"), InputError);
+  EXPECT_EQ(read(dir_ / "a.txt"), "earlier a");
+}
+
 TEST_F(OutputBatchTest, ATargetNamedTwiceIsRefused) {
   OutputBatch batch;
   batch.add(path("a.txt"), "one");

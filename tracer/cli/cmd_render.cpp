@@ -93,6 +93,8 @@ static int run_render(const RenderCommand& cmd) {
   if (!cmd.stats.empty() && std::filesystem::path(cmd.stats).has_parent_path() &&
       !std::filesystem::is_directory(std::filesystem::path(cmd.stats).parent_path()))
     throw InputError(cmd.stats + ": stats directory does not exist");
+  if (!cmd.stats.empty() && std::filesystem::is_directory(cmd.stats))
+    throw InputError(cmd.stats + ": --stats names a directory; name a file");
 
   if (cmd.device == "cuda") cuda_device_description();  // fail before loading when there is no GPU
   const auto t_load = Clock::now();

@@ -79,6 +79,8 @@ OutputBatch::~OutputBatch() {
 void OutputBatch::add(const std::string& target, const std::string& bytes) {
   for (const auto& [temp, earlier] : files_)
     if (earlier == target) throw InputError(target + ": named twice as an output");
+  std::error_code ec;  // a directory would fail only at the rename, after other outputs landed
+  if (std::filesystem::is_directory(target, ec)) throw InputError(target + ": cannot write: it is a directory");
   const std::string temp = temporary_for(target);
   track(temp);
   files_.emplace_back(temp, target);  // from here the destructor removes it
