@@ -11,7 +11,7 @@ namespace {
 const char kObj[] = "mtllib fuzz.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl fuzz\nf 1/1 2/2 3/3\n";
 const char kScene[] = R"({"format": "tracer-scene/1",
   "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40}, "film": {"width": 4, "height": 4},
-  "lights": [{"type": "point", "position": [0, 2, 2], "intensity": [5, 5, 5]}],
+  "materials": {}, "lights": [{"type": "point", "position": [0, 2, 2], "intensity": [5, 5, 5]}],
   "shapes": [{"type": "mesh", "file": "models/mtl-fuzz.obj"}]})";
 
 const std::string& scene_path() {
