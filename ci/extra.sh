@@ -2,15 +2,34 @@
 # CI's extra jobs after the README's test command (ci/test.sh): the second compiler (clang)
 # rendering every golden bit for bit; the sanitizer build running the unit, analytic, extremes
 # and determinism labels under ASan + UBSan with no recovery; the libFuzzer targets, 60 s each
-# (docs/fuzzing.md). All build the CPU renderer only; the dependencies are those of
-# ci/install-deps.sh. Arguments pick presets (default: clang asan fuzz).
+# (docs/fuzzing.md); the `slurm` label against a one-node cluster started by ci/slurm-up.sh and
+# stopped by ci/slurm-down.sh (docs/distributed.md), using the default build of ci/test.sh.
+# The presets build the CPU renderer only; the dependencies are those of ci/install-deps.sh.
+# Arguments pick jobs (default: clang asan fuzz slurm).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-presets=("$@")
-[ ${#presets[@]} -gt 0 ] || presets=(clang asan fuzz)
-for preset in "${presets[@]}"; do
-  echo "== $preset: configure, build, test"
-  cmake --preset "$preset" >/dev/null
-  cmake --build --preset "$preset" -j "$(nproc)"
-  ctest --preset "$preset"
+jobs=("$@")
+[ ${#jobs[@]} -gt 0 ] || jobs=(clang asan fuzz slurm)
+for job in "${jobs[@]}"; do
+  started=$SECONDS
+  if [ "$job" = slurm ]; then
+    echo "== slurm: one-node cluster, ctest -L slurm"
+    trap 'bash ci/slurm-down.sh' EXIT
+    if bash ci/slurm-up.sh; then
+      # shellcheck disable=SC1091
+      . "${TRACER_SLURM_DIR:-/tmp/tracer-slurm}/env"
+    else
+      echo "slurm: the cluster did not start; the slurm tests report themselves skipped"
+    fi
+    ctest --test-dir build -L slurm --output-on-failure
+    bash ci/slurm-down.sh
+    trap - EXIT
+    echo "== slurm: done in $((SECONDS - started)) s"
+    continue
+  fi
+  echo "== $job: configure, build, test"
+  cmake --preset "$job" >/dev/null
+  cmake --build --preset "$job" -j "$(nproc)"
+  ctest --preset "$job"
+  echo "== $job: done in $((SECONDS - started)) s"
 done

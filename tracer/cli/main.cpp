@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   const std::map<std::string, std::string> group_help = {
       {"golden", "golden-image regression checks (docs/golden.md)"},
-      {"bench", "benchmarks: speed against a baseline measured in the same run"}};
+      {"bench", "benchmarks: speed against a baseline measured in the same run"},
+      {"slurm", "renders split over a Slurm cluster (docs/distributed.md)"}};
   std::map<std::string, CLI::App*> groups;
   std::vector<CommandSpec> commands = command_registry();
   std::sort(commands.begin(), commands.end(), [](const CommandSpec& a, const CommandSpec& b) {

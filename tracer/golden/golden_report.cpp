@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "golden/shell.h"
+#include "io/shell.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
 #include "io/json_reader.h"

@@ -5,7 +5,7 @@
 
 #include "golden/golden_check.h"
 #include "golden/golden_manifest.h"
-#include "golden/shell.h"
+#include "io/shell.h"
 #include "image/image_io.h"
 #include "image/pixel_hash.h"
 #include "io/input_error.h"

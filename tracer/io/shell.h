@@ -1,4 +1,4 @@
-// Running a shell command from the CLI (git, for the golden update's safety check) and
+// Running a shell command from the CLI (git for the golden update's safety check, sbatch) and
 // quoting arguments for commands it prints for the user to run.
 #pragma once
 #include <string>

@@ -1,4 +1,4 @@
-#include "golden/shell.h"
+#include "io/shell.h"
 
 #include <sys/wait.h>
 

@@ -1,0 +1,70 @@
+// The parts of `tracer slurm` that need no cluster: balanced sample ranges, the job
+// directory's scripts and record (tracer/cluster/slurm_job.h). The cluster runs: tests/slurm/.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "cluster/slurm_job.h"
+#include "io/input_error.h"
+#include "test_util.h"
+
+namespace tracer {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(SlurmJob, RangesCoverEverySampleOnceAndDifferByAtMostOne) {
+  for (const uint32_t spp : {1u, 7u, 64u, 1000u, 4294967295u})
+    for (const uint32_t parts : {1u, 2u, 3u, 7u, 8u, 1000u}) {
+      if (parts > spp) {
+        EXPECT_THROW(balanced_ranges(spp, parts), InputError);
+        continue;
+      }
+      const std::vector<SampleRange> ranges = balanced_ranges(spp, parts);
+      ASSERT_EQ(ranges.size(), parts);
+      uint32_t next = 0, smallest = UINT32_MAX, largest = 0;
+      for (const SampleRange& r : ranges) {
+        EXPECT_EQ(r.begin, next);
+        EXPECT_LT(r.begin, r.end);
+        smallest = std::min(smallest, r.end - r.begin);
+        largest = std::max(largest, r.end - r.begin);
+        next = r.end;
+      }
+      EXPECT_EQ(next, spp);
+      EXPECT_LE(largest - smallest, 1u) << spp << " spp in " << parts;
+    }
+  EXPECT_THROW(balanced_ranges(8, 0), InputError);
+}
+
+TEST(SlurmJob, ScriptsAndRecordRoundTrip) {
+  const fs::path dir = test::temp_dir("slurm-job");
+  SlurmJob job;
+  job.dir = (dir / "job").string();
+  job.scene = "/shared/scene's.json";
+  job.output = "/shared/out.exr";
+  job.spp = 10;
+  job.ranges = balanced_ranges(10, 3);
+  job.sbatch_args = {"--partition=render", "--time=10"};
+  job.array_jobs = {"41", "57"};
+  job.merge_job = "58";
+  write_job_scripts(job, "/opt/tracer/bin/tracer", {"--spp", "10"});
+  write_job_record(job);
+  std::stringstream render;
+  render << std::ifstream(dir / "job/render.sh").rdbuf();
+  EXPECT_NE(render.str().find("ranges=(0:3 3:6 6:10)"), std::string::npos) << render.str();
+  EXPECT_NE(render.str().find("'/shared/scene'\\''s.json' '--spp' '10'"), std::string::npos) << render.str();
+  EXPECT_TRUE(fs::exists(dir / "job/merge.sh"));
+  EXPECT_TRUE(fs::is_directory(dir / "job/logs"));
+  const SlurmJob back = read_job_record(job.dir);
+  EXPECT_EQ(back.scene, job.scene);
+  EXPECT_EQ(back.ranges.size(), 3u);
+  EXPECT_EQ(back.sbatch_args, job.sbatch_args);
+  EXPECT_EQ(back.array_jobs, job.array_jobs);
+  EXPECT_EQ(back.merge_job, "58");
+  EXPECT_EQ(missing_parts(back), (std::vector<size_t>{0, 1, 2}));
+  EXPECT_THROW(write_job_scripts(job, "/opt/tracer/bin/tracer", {}), InputError);  // not empty any more
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tracer
