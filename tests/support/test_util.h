@@ -125,12 +125,14 @@ std::string write_cube_faces(const std::filesystem::path& dir, int size, TexelCo
 inline std::string source_path(const std::string& rel) { return std::string(TRACER_SOURCE_DIR) + "/" + rel; }
 
 // The scene files every test may use: each .json under scenes/ except scenes/large/, whose
-// meshes ci/generate-meshes.sh writes at set-up (test_scene_loader.cpp checks those).
+// meshes ci/generate-meshes.sh writes at set-up (test_scene_loader.cpp checks those), and
+// except scenes/generated/, git-ignored output of `tracer generate` and benchmarks.
 inline std::vector<std::filesystem::path> shipped_scenes() {
   std::vector<std::filesystem::path> out;
-  const std::filesystem::path large = std::filesystem::path(source_path("scenes")) / "large";
-  for (const auto& e : std::filesystem::recursive_directory_iterator(source_path("scenes")))
-    if (e.path().extension() == ".json" && e.path().parent_path() != large) out.push_back(e.path());
+  const std::filesystem::path root(source_path("scenes")), large = root / "large", generated = root / "generated";
+  for (const auto& e : std::filesystem::recursive_directory_iterator(root))
+    if (e.path().extension() == ".json" && e.path().parent_path() != large && e.path().parent_path() != generated)
+      out.push_back(e.path());
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -34,6 +34,7 @@ Acceleration build_acceleration(AccelKind kind, std::span<const Primitive> primi
     case AccelKind::None: break;
   }
   for (const BuildItem& it : items) a.bounded.push_back(it.id);
+  if (kind == AccelKind::Bvh) a.wide = collapse_to_wide_bvh(a.bvh_nodes, a.bounded, primitives);
   return a;
 }
 
@@ -47,6 +48,7 @@ AccelSummary acceleration_summary(AccelKind kind, const Acceleration& a) {
 
 size_t acceleration_bytes(const Acceleration& a) {
   return a.bvh_nodes.size() * sizeof(BvhNode) + a.bounded.size() * sizeof(uint32_t) +
+         a.wide.nodes.size() * sizeof(WideBvhNode) + a.wide.blocks.size() * sizeof(TriangleBlock) +
          a.kd.nodes.size() * sizeof(KdNode) +
          (a.kd.prims.size() + a.grid.cell_start.size() + a.grid.prims.size()) * sizeof(uint32_t);
 }

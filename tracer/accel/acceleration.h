@@ -10,6 +10,7 @@
 #include "accel/accel_summary.h"
 #include "accel/grid_builder.h"
 #include "accel/kdtree_builder.h"
+#include "accel/wide_bvh_builder.h"
 #include "kernel/accel/bvh_node.h"
 #include "kernel/scene/render_settings.h"
 
@@ -18,6 +19,7 @@ namespace tracer {
 struct Acceleration {
   std::vector<uint32_t> bounded, unbounded;
   std::vector<BvhNode> bvh_nodes;  // bvh and lbvh
+  WideBvh wide;                    // bvh: the CPU's 8-wide collapse of bvh_nodes
   KdTree kd;                       // kdtree and kdtree-median
   UniformGrid grid;                // grid
 };

@@ -1,6 +1,7 @@
 // Binned SAH BVH (Wald, "On fast Construction of SAH-based Bounding Volume Hierarchies",
 // 2007) into the flat node array of kernel/accel/bvh_node.h. Reorders `items` into leaf order.
-// The build is sequential and deterministic.
+// Halves of large ranges are built as OpenMP tasks; the nodes and their order do not
+// depend on the thread count.
 #pragma once
 #include "accel/bounds.h"
 #include "kernel/accel/bvh_node.h"

@@ -79,8 +79,8 @@ Image reference_image(const std::string& scene_path, RenderOverrides overrides, 
   const TimedRender r = timed_render(load_scene(scene_path, overrides), threads);
   const std::string path = (std::filesystem::path(bench_reference_dir()) / save_as).string();
   write_image(r.image, path);
-  std::printf("reference: %u spp, %.2f s, saved as %s (give --ref %s to reuse it)\n", ref_spp, r.seconds, path.c_str(),
-              path.c_str());
+  std::printf("reference: %llu spp, %.2f s, saved as %s (give --ref %s to reuse it)\n",
+              static_cast<unsigned long long>(ref_spp), r.seconds, path.c_str(), path.c_str());
   return r.image;
 }
 

@@ -24,6 +24,7 @@
 #include "kernel/shading/sampling.h"
 #include "kernel/shading/surface.h"
 #include "options/enum_names.h"
+#include "render/cpu_kernel.h"
 #include "scene/camera_setup.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_types.h"
@@ -90,11 +91,15 @@ RaySets make_rays(const Scene& scene, uint32_t incoherent) {
   return r;
 }
 
-// Runs `query` over [0, n) on all threads; returns Mrays/s.
-double throughput(size_t n, int threads, const std::function<void(size_t)>& query) {
+// Runs `query(begin, count)` over [0, n) in chunks of 1024 on all threads; returns Mrays/s.
+double throughput(size_t n, int threads, const std::function<void(size_t, size_t)>& query) {
+  constexpr size_t kChunk = 1024;
   const auto start = std::chrono::steady_clock::now();
-#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
-  for (int64_t i = 0; i < static_cast<int64_t>(n); ++i) query(static_cast<size_t>(i));
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int64_t c = 0; c < static_cast<int64_t>((n + kChunk - 1) / kChunk); ++c) {
+    const size_t begin = static_cast<size_t>(c) * kChunk;
+    query(begin, std::min(kChunk, n - begin));
+  }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return static_cast<double>(n) / s / 1e6;
 }
@@ -114,24 +119,24 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
   }
   std::printf("tracer bench rays %s: %d threads; primary: %ux%u pinhole, incoherent: %u rays, shadow: any-hit\n",
               cmd.scene.c_str(), threads, kCamera, kCamera, cmd.incoherent);
-  std::printf("%-14s %10s %10s %10s | %10s %10s %10s | %s\n", "accel", "build s", "MB", "nodes", "primary",
-              "incoherent", "shadow", "hits (checksum)");
+  std::printf("%-14s %10s %10s %10s %10s | %10s %10s %10s | %s\n", "accel", "build s", "MB", "B/prim", "nodes",
+              "primary", "incoherent", "shadow", "hits (checksum)");
   RaySets rays;
   uint64_t reference = 0;
   std::vector<Hit> reference_primary, reference_incoherent;
-  double bvh_rates[3] = {0, 0, 0};
-  for (const AccelKind accel : accels) {
-    const Scene scene = load_bench_scene(cmd.scene, accel, cmd.grid_resolution);
-    if (rays.primary.empty()) {
-      rays = make_rays(scene, cmd.incoherent);
-      std::printf("(%zu primitives)\n", scene.primitives.size());
-    }
-    const SceneView view = scene.view();
+  double bvh_rates[3] = {0, 0, 0}, bvh_build = 0;
+  std::string kernel_name;
+  // Traces every ray set through `view` with `kernel`; prints the row and checks the checksum.
+  const auto measure = [&](const std::string& label, const Scene& scene, const SceneView& view,
+                           const CpuKernelVariant& kernel, double rates[3], bool built) {
     std::vector<Hit> primary(rays.primary.size()), incoherent(rays.incoherent.size());
-    const double mp = throughput(primary.size(), threads,
-                                 [&](size_t i) { primary[i] = trace_closest(view, rays.primary[i], kInfinity); });
-    const double mi = throughput(incoherent.size(), threads,
-                                 [&](size_t i) { incoherent[i] = trace_closest(view, rays.incoherent[i], kInfinity); });
+    const std::vector<float> no_limit(std::max(primary.size(), incoherent.size()), kInfinity);
+    rates[0] = throughput(primary.size(), threads, [&](size_t i, size_t n) {
+      kernel.trace_closest(view, &rays.primary[i], no_limit.data(), n, &primary[i]);
+    });
+    rates[1] = throughput(incoherent.size(), threads, [&](size_t i, size_t n) {
+      kernel.trace_closest(view, &rays.incoherent[i], no_limit.data(), n, &incoherent[i]);
+    });
     if (rays.shadow.empty()) {  // from each primary hit toward a point above the scene, once for all structures
       const Vec3 light =
           scene.camera.origin + Vec3{0.0f, length(scene.camera.origin - scene.camera.focal_top_left), 0.0f};
@@ -147,33 +152,58 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
       reference_incoherent = incoherent;
     }
     std::vector<uint8_t> occluded(rays.shadow.size(), 0);
-    const double ms = throughput(rays.shadow.size(), threads, [&](size_t i) {
-      occluded[i] = trace_any(view, rays.shadow[i], rays.shadow_tmax[i]) ? 1 : 0;
+    rates[2] = throughput(rays.shadow.size(), threads, [&](size_t i, size_t n) {
+      kernel.trace_any(view, &rays.shadow[i], &rays.shadow_tmax[i], n, &occluded[i]);
     });
-    if (accel == AccelKind::Bvh) bvh_rates[0] = mp, bvh_rates[1] = mi, bvh_rates[2] = ms;
     uint64_t sum = 0;
     for (const auto* hits : {&primary, &incoherent})
       for (const Hit& h : *hits) sum = mix(mix(sum, h.prim), bits_of(h.t));
     for (uint8_t o : occluded) sum = mix(sum, o);
     if (reference == 0) reference = sum;
-    std::printf("%-14s %10.3f %10.1f %10zu | %10.2f %10.2f %10.2f | %016llx %s\n", enum_name(accel),
-                scene.report.build_seconds, scene.report.accel_bytes / 1048576.0,
-                scene.report.accel.nodes + scene.report.accel.cells, mp, mi, ms, static_cast<unsigned long long>(sum),
-                sum == reference ? "same" : "DIFFERENT");
+    if (built)
+      std::printf("%-14s %10.3f %10.1f %10.1f %10zu | ", label.c_str(), scene.report.build_seconds,
+                  scene.report.accel_bytes / 1048576.0,
+                  static_cast<double>(scene.report.accel_bytes) / static_cast<double>(scene.primitives.size()),
+                  scene.report.accel.nodes + scene.report.accel.cells);
+    else
+      std::printf("%-14s %10s %10s %10s %10s | ", label.c_str(), "", "", "", "");
+    std::printf("%10.2f %10.2f %10.2f | %016llx %s\n", rates[0], rates[1], rates[2],
+                static_cast<unsigned long long>(sum), sum == reference ? "same" : "DIFFERENT");
     if (sum != reference)
-      throw std::runtime_error(std::string(enum_name(accel)) + ": hits differ from " + enum_name(accels[0]) +
-                               "'s (DESIGN.md rule 4)");
+      throw std::runtime_error(label + ": hits differ from " + enum_name(accels[0]) + "'s (DESIGN.md rule 4)");
+  };
+  for (const AccelKind accel : accels) {
+    const Scene scene = load_bench_scene(cmd.scene, accel, cmd.grid_resolution);
+    if (rays.primary.empty()) {
+      rays = make_rays(scene, cmd.incoherent);
+      std::printf("(%zu primitives)\n", scene.primitives.size());
+    }
+    double rates[3];
+    const SceneView view = scene.view();
+    const CpuKernelVariant& kernel = cpu_kernel_for(view.features);
+    kernel_name = cpu_kernel_name(kernel);
+    measure(enum_name(accel), scene, view, kernel, accel == AccelKind::Bvh ? bvh_rates : rates, true);
+    if (accel != AccelKind::Bvh) continue;
+    bvh_build = scene.report.build_seconds;
+    for (const CpuKernelVariant* other : cpu_kernels_per_isa(view.features))  // the instruction sets compared
+      if (other != &kernel) measure(std::string("bvh ") + other->isa, scene, view, *other, rates, false);
+    SceneView binary = view;  // the same tree walked two children at a time, as the GPU walks it
+    binary.wide_node_count = 0;
+    measure("bvh (binary)", scene, binary, kernel, rates, false);
   }
+  std::printf("(CPU kernel %s; a row \"bvh ISA\" runs the same tree with that instruction set's kernel)\n",
+              kernel_name.c_str());
   if (embree_available()) {
     const Scene scene = load_bench_scene(cmd.scene, AccelKind::None, 0);
     const EmbreeRow e = embree_bench(scene, rays.primary, rays.incoherent, rays.shadow, rays.shadow_tmax,
                                      reference_primary, reference_incoherent, threads);
-    std::printf("%-14s %10.3f %10.1f %10s | %10.2f %10.2f %10.2f | %.4f%% of closest hits on the same primitive\n",
-                "embree 3", e.build_seconds, e.megabytes, "-", e.primary, e.incoherent, e.shadow,
-                100.0 * e.same_primitive);
+    std::printf("%-14s %10.3f %10.1f %10.1f %10s | %10.2f %10.2f %10.2f | %.4f%% of closest hits on the same primitive\n",
+                "embree 3", e.build_seconds, e.megabytes,
+                e.megabytes * 1048576.0 / static_cast<double>(scene.primitives.size()), "-", e.primary, e.incoherent,
+                e.shadow, 100.0 * e.same_primitive);
     if (bvh_rates[0] > 0)
-      std::printf("%-14s %10s %10s %10s | %10.2f %10.2f %10.2f |\n", "bvh / embree", "", "", "",
-                  bvh_rates[0] / e.primary, bvh_rates[1] / e.incoherent, bvh_rates[2] / e.shadow);
+      std::printf("%-14s %10.2f %10s %10s %10s | %10.2f %10.2f %10.2f |\n", "bvh / embree", bvh_build / e.build_seconds,
+                  "", "", "", bvh_rates[0] / e.primary, bvh_rates[1] / e.incoherent, bvh_rates[2] / e.shadow);
   } else {
     std::printf("(no Embree row: this build has no Embree adapter; install libembree-dev and reconfigure)\n");
   }

@@ -151,6 +151,7 @@ static int run_render(const RenderCommand& cmd) {
           {"upload", cuda.upload_seconds}, {"kernel", cuda.kernel_seconds}, {"download", cuda.download_seconds}};
     } else {
       j["threads"] = cmd.threads > 0 ? cmd.threads : omp_get_max_threads();
+      j["cpu_kernel"] = stats.cpu_kernel;
     }
     j["seconds"] = {{"load", load_build_s - build_s}, {"build", build_s}, {"render", render_s}};
     j["rays"] = {{"camera", stats.rays.camera},

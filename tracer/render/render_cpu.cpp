@@ -4,14 +4,15 @@
 
 #include <atomic>
 
-#include "kernel/integrator/render_pixel.h"
+#include "render/cpu_kernel.h"
 
 namespace tracer {
 
 FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, RenderStats& stats,
-                           const ProgressCallback& progress) {
+                           const ProgressCallback& progress, const CpuKernelVariant* kernel) {
   constexpr uint32_t kTile = 16;
   const SceneView view = scene.view();
+  const CpuKernelVariant& variant = kernel ? *kernel : cpu_kernel_for(view.features);
   const uint32_t w = view.settings.width, h = view.settings.height;
   FilmBuffer film;
   film.width = w;
@@ -29,10 +30,11 @@ FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, R
     const uint32_t x0 = static_cast<uint32_t>(tile % tiles_x) * kTile,
                    y0 = static_cast<uint32_t>(tile / tiles_x) * kTile;
     RayCounts counts{};
-    for (uint32_t y = y0; y < std::min(y0 + kTile, h); ++y) {
-      for (uint32_t x = x0; x < std::min(x0 + kTile, w); ++x) {
-        const FilmSum sum = render_pixel(view, x, y, range.begin, range.end, counts);
-        film.pixels[static_cast<size_t>(y) * w + x] = sum;
+    const uint32_t x1 = std::min(x0 + kTile, w), y1 = std::min(y0 + kTile, h);
+    variant.render_tile(view, x0, y0, x1, y1, range.begin, range.end, film.pixels.data(), counts);
+    for (uint32_t y = y0; y < y1; ++y) {
+      for (uint32_t x = x0; x < x1; ++x) {
+        const FilmSum& sum = film.pixels[static_cast<size_t>(y) * w + x];
         nonfinite += sum.nonfinite;
         overflow += sum.overflow;
       }
@@ -46,6 +48,7 @@ FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, R
   stats.rays = {camera, secondary, shadow};
   stats.nonfinite_samples = nonfinite;
   stats.overflow_samples = overflow;
+  stats.cpu_kernel = cpu_kernel_name(variant);
   return film;
 }
 

@@ -7,6 +7,7 @@
 
 #include "image/image.h"
 #include "kernel/integrator/ray_counts.h"
+#include "render/cpu_kernel.h"
 #include "render/film_buffer.h"
 #include "scene/scene.h"
 
@@ -16,14 +17,16 @@ struct RenderStats {
   RayCounts rays{};
   uint64_t nonfinite_samples = 0;  // rejected by the film: a NaN or inf component
   uint64_t overflow_samples = 0;   // rejected by the film: a component, or the pixel's sum, of 2^30 or more
+  std::string cpu_kernel;          // the CPU kernel variant that rendered (render/cpu_kernel.h)
 };
 
 using ProgressCallback = std::function<void(uint64_t done, uint64_t total)>;
 
 // Samples `range` of every pixel. `threads` 0 uses OpenMP's default; `progress` (optional)
-// is called from one thread with the number of finished tiles and the total.
+// is called from one thread with the number of finished tiles and the total. `kernel`
+// (optional) overrides the variant chosen for the scene's features.
 FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, RenderStats& stats,
-                           const ProgressCallback& progress = {});
+                           const ProgressCallback& progress = {}, const CpuKernelVariant* kernel = nullptr);
 
 // All samples, resolved to an image.
 Image render_cpu(const Scene& scene, int threads, RenderStats& stats, const ProgressCallback& progress = {});

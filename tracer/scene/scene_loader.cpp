@@ -54,6 +54,8 @@ void install_acceleration(Acceleration a, Scene& scene) {
   scene.bounded = std::move(a.bounded);
   scene.unbounded = std::move(a.unbounded);
   scene.bvh_nodes = std::move(a.bvh_nodes);
+  scene.wide_nodes = std::move(a.wide.nodes);
+  scene.triangle_blocks = std::move(a.wide.blocks);
   scene.kd_nodes = std::move(a.kd.nodes);
   scene.kd_prims = std::move(a.kd.prims);
   scene.kd_lo = a.kd.lo, scene.kd_hi = a.kd.hi, scene.kd_pad = a.kd.pad;

@@ -1,6 +1,8 @@
 // The scene's feature mask (Cycles' KERNEL_FEATURE_* idea): the loader sets a bit for each
 // kind of shape, material, light and lens the scene uses, and kernel code skips the paths
-// whose bit is clear, so a scene pays only for what it uses.
+// whose bit is clear, so a scene pays only for what it uses. A CPU kernel variant compiled
+// for a feature set (tracer/render/cpu_kernel.h) defines TRACER_KERNEL_FEATURES to it, and
+// the code of every feature outside the set is compiled out.
 #pragma once
 #include "kernel/base/platform.h"
 
@@ -21,5 +23,18 @@ enum FeatureBit : uint32_t {
   kFeatureShadingNormals = 1u << 11,
   kFeatureTextures = 1u << 12,
 };
+
+#ifndef TRACER_KERNEL_FEATURES
+#define TRACER_KERNEL_FEATURES 0xffffffffu
+#endif
+
+// Whether this compilation of the kernel has code for `feature`.
+TRACER_HD constexpr bool compiled_in(uint32_t feature) { return (TRACER_KERNEL_FEATURES & feature) != 0; }
+
+// Whether the scene uses `feature` and this compilation has code for it: a variant is only
+// chosen for scenes whose features it holds, so this is the scene's bit wherever it runs.
+TRACER_HD bool uses_feature(uint32_t scene_features, uint32_t feature) {
+  return compiled_in(feature) && (scene_features & feature) != 0;
+}
 
 }  // namespace tracer

@@ -61,7 +61,7 @@ TRACER_HD WhittedResponse whitted_response(const Material& m) {
 TRACER_HD Vec3 whitted_local(const SceneView& scene, const WhittedResponse& w, const Surface& s, Vec3 n, Vec3 view_dir,
                              RayCounts& counts) {
   Vec3 result = w.ka * scene.ambient;
-  if (!(scene.features & kFeaturePointLight)) return result;
+  if (!uses_feature(scene.features, kFeaturePointLight)) return result;
   for (uint32_t i = 0; i < scene.light_count; ++i) {
     const PointLight& light = scene.lights[i];
     const Vec3 to_light = light.position - s.p;

@@ -6,6 +6,7 @@
 #include "kernel/accel/bvh_node.h"
 #include "kernel/accel/grid.h"
 #include "kernel/accel/kd_node.h"
+#include "kernel/accel/wide_bvh_node.h"
 #include "kernel/base/features.h"
 #include "kernel/camera/camera.h"
 #include "kernel/camera/sampler.h"
@@ -55,6 +56,7 @@ struct SceneView {
   uint32_t bounded_count;
   uint32_t unbounded_count;
   uint32_t bvh_node_count;
+  uint32_t wide_node_count;
   uint32_t kd_node_count;
   uint32_t light_count;
   uint32_t light_entry_count;

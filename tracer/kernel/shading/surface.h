@@ -119,7 +119,7 @@ TRACER_HD Vec3 surface_tangent(const SceneView& scene, const Surface& s) {
 // (0.5, 0.5, 1), a flat height field) leave it unchanged bit for bit.
 TRACER_HD Material material_at(const SceneView& scene, Surface& s) {
   Material m = scene.materials[s.material];
-  if (!(scene.features & kFeatureTextures)) return m;
+  if (!uses_feature(scene.features, kFeatureTextures)) return m;
   Vec3* colour[kColourSlots] = {&m.albedo, &m.ambient, &m.specular, &m.tint, &m.radiance};
   for (uint32_t k = 0; k < kColourSlots; ++k)
     if (m.texture[k] != kNoTexture) *colour[k] = sample_texture(scene.textures, scene.texels, m.texture[k], s.u, s.v);

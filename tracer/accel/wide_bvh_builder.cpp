@@ -1,0 +1,110 @@
+#include "accel/wide_bvh_builder.h"
+
+#include "accel/bounds.h"
+#include "kernel/scene/scene_view.h"  // kNoHit
+
+namespace tracer {
+namespace {
+
+class WideBvhCollapser {
+ public:
+  WideBvhCollapser(std::span<const BvhNode> binary, std::span<const uint32_t> leaf_order,
+                   std::span<const Primitive> primitives)
+      : binary_(binary), leaf_order_(leaf_order), primitives_(primitives) {}
+
+  WideBvh collapse() {
+    const BvhNode& root = binary_[0];
+    if (root.count > 0) {  // a single leaf: one node with one child
+      wide_.nodes.push_back(empty_node());
+      set_child(0, 0, root);
+    } else {
+      collapse_node(0);
+    }
+    return std::move(wide_);
+  }
+
+ private:
+  static float area(const BvhNode& n) {
+    Bounds b;
+    b.lo = n.lo;
+    b.hi = n.hi;
+    return b.surface_area();
+  }
+
+  static WideBvhNode empty_node() {
+    WideBvhNode n{};
+    for (int a = 0; a < 3; ++a)
+      for (int i = 0; i < kWideBvhWidth; ++i) n.lo[a][i] = kInfinity, n.hi[a][i] = -kInfinity;
+    return n;
+  }
+
+  // Makes the wide node for binary interior node `b`; returns its index.
+  uint32_t collapse_node(uint32_t b) {
+    uint32_t children[kWideBvhWidth] = {binary_[b].first, binary_[b].first + 1};
+    int count = 2;
+    while (count < kWideBvhWidth) {
+      int widest = -1;
+      for (int i = 0; i < count; ++i)
+        if (binary_[children[i]].count == 0 && (widest < 0 || area(binary_[children[i]]) > area(binary_[children[widest]])))
+          widest = i;
+      if (widest < 0) break;
+      const uint32_t first = binary_[children[widest]].first;
+      children[widest] = first;
+      children[count++] = first + 1;
+    }
+    const uint32_t index = static_cast<uint32_t>(wide_.nodes.size());
+    wide_.nodes.push_back(empty_node());
+    for (int i = 0; i < count; ++i) set_child(index, i, binary_[children[i]]);
+    for (int i = 0; i < count; ++i) {
+      if (binary_[children[i]].count != 0) continue;
+      const uint32_t subtree = collapse_node(children[i]);  // grows wide_.nodes
+      wide_.nodes[index].child[i] = subtree;
+    }
+    return index;
+  }
+
+  void set_child(uint32_t node, int slot, const BvhNode& child) {
+    WideBvhNode& n = wide_.nodes[node];
+    for (int a = 0; a < 3; ++a) n.lo[a][slot] = child.lo[a], n.hi[a][slot] = child.hi[a];
+    if (child.count == 0) return;  // interior: child[slot] is set once the subtree exists
+    n.child[slot] = static_cast<uint32_t>(wide_.blocks.size());
+    n.leaf_blocks[slot] = (child.count + kBlockLanes - 1) / kBlockLanes;
+    for (uint32_t k = 0; k < child.count; ++k) add_to_blocks(k, leaf_order_[child.first + k]);
+  }
+
+  // The k-th primitive of the current leaf goes to lane k % 4 of the leaf's (k / 4)-th block.
+  void add_to_blocks(uint32_t k, uint32_t id) {
+    const int lane = static_cast<int>(k % kBlockLanes);
+    if (lane == 0) {
+      TriangleBlock empty{};
+      for (uint32_t& i : empty.id) i = kNoHit;
+      wide_.blocks.push_back(empty);
+    }
+    TriangleBlock& block = wide_.blocks.back();
+    block.id[lane] = id;
+    const Primitive& p = primitives_[id];
+    if (p.kind != ShapeKind::Triangle) {
+      block.other_lanes |= 1u << lane;
+      return;
+    }
+    block.triangle_lanes |= 1u << lane;
+    const Vec3 corners[3] = {p.a, p.b, p.c};
+    for (int v = 0; v < 3; ++v)
+      for (int a = 0; a < 3; ++a) block.v[v][a][lane] = corners[v][a];
+  }
+
+  std::span<const BvhNode> binary_;
+  std::span<const uint32_t> leaf_order_;
+  std::span<const Primitive> primitives_;
+  WideBvh wide_;
+};
+
+}  // namespace
+
+WideBvh collapse_to_wide_bvh(std::span<const BvhNode> binary, std::span<const uint32_t> leaf_order,
+                             std::span<const Primitive> primitives) {
+  if (binary.empty()) return {};
+  return WideBvhCollapser(binary, leaf_order, primitives).collapse();
+}
+
+}  // namespace tracer
