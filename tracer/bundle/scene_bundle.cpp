@@ -16,7 +16,13 @@ SceneView without_pointers(SceneView view) {
 
 SceneBundle make_scene_bundle(const SceneArrays& arrays, const SceneView& view, SampleRange range,
                               const std::string& source) {
-  return {arrays, without_pointers(view), range, source};
+  // The 8-wide BVH is the host's layout of bvh_nodes; a bundle's reader walks the binary
+  // tree (the same hits), so the bundle leaves it out and stays about half the size.
+  SceneBundle bundle{arrays, without_pointers(view), range, source};
+  bundle.arrays.wide_nodes.clear();
+  bundle.arrays.triangle_blocks.clear();
+  bundle.scalars.wide_node_count = 0;
+  return bundle;
 }
 
 BundleFile encode_scene_bundle(const SceneBundle& bundle) {
