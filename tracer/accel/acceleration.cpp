@@ -2,6 +2,7 @@
 
 #include "accel/bvh_builder.h"
 #include "accel/grid_builder.h"
+#include "accel/huge_pages.h"
 #include "accel/kdtree_builder.h"
 #include "accel/lbvh_builder.h"
 #include "options/enum_names.h"
@@ -16,6 +17,7 @@ float structure_pad(Vec3 lo, Vec3 hi) {
 Acceleration build_acceleration(AccelKind kind, std::span<const Primitive> primitives, uint32_t grid_resolution) {
   Acceleration a;
   std::vector<BuildItem> items;
+  reserve_on_huge_pages(items, primitives.size());
   for (uint32_t id = 0; id < primitives.size(); ++id) {
     const Primitive& p = primitives[id];
     if (p.kind == ShapeKind::Plane) {
@@ -33,6 +35,7 @@ Acceleration build_acceleration(AccelKind kind, std::span<const Primitive> primi
     case AccelKind::Grid: a.grid = build_grid(items, grid_resolution); break;
     case AccelKind::None: break;
   }
+  reserve_on_huge_pages(a.bounded, items.size());
   for (const BuildItem& it : items) a.bounded.push_back(it.id);
   if (kind == AccelKind::Bvh) a.wide = collapse_to_wide_bvh(a.bvh_nodes, a.bounded, primitives);
   return a;

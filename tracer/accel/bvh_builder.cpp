@@ -1,19 +1,67 @@
 #include "accel/bvh_builder.h"
 
+#include <emmintrin.h>
+
 #include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <new>
+
+#include "accel/huge_pages.h"
 
 namespace tracer {
 namespace {
 
 constexpr int kBins = 16;
 constexpr uint32_t kMaxLeafSize = 4;
-constexpr int kMaxBuildDepth = 60;       // traversal stacks hold 64 entries
+constexpr int kMaxBuildDepth = 60;         // traversal stacks hold 64 entries
 constexpr uint32_t kTaskItems = 1u << 15;  // ranges at least this large build their halves as OpenMP tasks
 
-int bin_of(float c, float lo, float extent) {
-  const int b = static_cast<int>(static_cast<float>(kBins) * ((c - lo) / extent));
-  return std::clamp(b, 0, kBins - 1);
-}
+// One item in 32 bytes, as Embree's PrimRef: its box in SSE lanes x, y, z; lane 3 of `lo`
+// holds the item's index in `items` (bits), lane 3 of `hi` is 0, so lo + hi masked to
+// x, y, z is twice the centroid.
+struct alignas(16) Ref {
+  __m128 lo, hi;
+};
+
+const __m128 kXyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
+
+__m128 twice_centroid(const Ref& r) { return _mm_add_ps(_mm_and_ps(r.lo, kXyz), r.hi); }
+
+struct Box {
+  __m128 lo = _mm_set1_ps(kInfinity), hi = _mm_set1_ps(-kInfinity);  // empty
+  void grow(__m128 l, __m128 h) { lo = _mm_min_ps(lo, l), hi = _mm_max_ps(hi, h); }
+  void grow(__m128 p) { grow(p, p); }
+  void grow(const Box& b) { grow(b.lo, b.hi); }
+  // Half the surface area: the SAH compares areas, so the factor 2 cancels. 0 when empty.
+  float half_area() const {
+    float d[4];
+    _mm_storeu_ps(d, _mm_max_ps(_mm_sub_ps(hi, lo), _mm_setzero_ps()));
+    return d[0] * d[1] + d[1] * d[2] + d[2] * d[0];
+  }
+};
+
+// Maps twice-centroids to `count` bins: bin = floor((c - lo) * scale) per axis, clamped to
+// the bins (a NaN lane goes to bin 0). An axis whose centroids coincide has scale 0: all in
+// bin 0. A range of n < 16 items uses n bins: a node near the leaves costs what it holds.
+struct Binner {
+  int count;
+  __m128 lo, scale;
+  Binner(const Box& centroids, uint32_t items) : count(static_cast<int>(std::min<uint32_t>(items, kBins))) {
+    lo = centroids.lo;
+    float l[4], h[4], s[4] = {0, 0, 0, 0};
+    _mm_storeu_ps(l, centroids.lo);
+    _mm_storeu_ps(h, centroids.hi);
+    for (int a = 0; a < 3; ++a)
+      if (h[a] - l[a] > 0.0f) s[a] = static_cast<float>(count) * 0.99999f / (h[a] - l[a]);
+    scale = _mm_loadu_ps(s);
+  }
+  __m128i bins(__m128 c) const {
+    const __m128 f = _mm_mul_ps(_mm_sub_ps(c, lo), scale);
+    return _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), _mm_set1_ps(static_cast<float>(count - 1))));
+  }
+};
 
 struct Split {
   int axis = -1;  // -1: no axis separates the centroids
@@ -21,151 +69,206 @@ struct Split {
   float cost = kInfinity;
 };
 
+// A range of refs with its box and its centroids' box (both known before it is visited).
+struct Range {
+  uint32_t begin, end;
+  Box bounds, centroids;
+};
+
+// Nodes are first written to slots fixed by item ranges, so that threads never share a
+// counter: the subtree over m items has at most 2m - 1 nodes, its root in the slot its parent
+// chose and its other nodes in the 2m - 2 slots from `below`, its children's pair first. One
+// pass then numbers the used slots in depth-first order, both children of a node before the
+// first's subtree, so the nodes and their order do not depend on which thread built what.
 class BvhBuilder {
  public:
-  explicit BvhBuilder(std::vector<BuildItem>& items) : items_(items) {}
+  BvhBuilder(std::vector<Ref>& refs, BvhNode* slots) : refs_(refs), slots_(slots) {}
 
-  // The subtree over items [begin, end) with its root at index 0 and its interior nodes'
-  // `first` relative to it: the node order of a depth-first build that appends both
-  // children before descending into the first, whichever thread built which part.
-  std::vector<BvhNode> build(uint32_t begin, uint32_t end, int depth) {
-    std::vector<BvhNode> nodes(1);
-    if (end - begin < kTaskItems) {
-      build_node(nodes, 0, begin, end, depth);
-      return nodes;
-    }
-    uint32_t mid;
-    if (!split_or_leaf(nodes[0], begin, end, depth, mid)) return nodes;
-    std::vector<BvhNode> left;
-#pragma omp task shared(left) firstprivate(begin, mid, depth)
-    left = build(begin, mid, depth + 1);
-    std::vector<BvhNode> right = build(mid, end, depth + 1);
+  void build(uint32_t slot, const Range& range, uint32_t below, int depth) {
+    Range left, right;
+    BvhNode& node = slots_[slot];
+    if (!split_or_leaf(node, range, depth, left, right)) return;
+    node.first = below;
+    node.count = 0;
+    const uint32_t left_below = below + 2, right_below = left_below + 2 * (left.end - left.begin) - 2;
+    if (range.end - range.begin >= kTaskItems) {
+#pragma omp task firstprivate(below, left, left_below, depth)
+      build(below, left, left_below, depth + 1);
+      build(below + 1, right, right_below, depth + 1);
 #pragma omp taskwait
-    return splice(nodes[0], left, right);
+    } else {
+      build(below, left, left_below, depth + 1);
+      build(below + 1, right, right_below, depth + 1);
+    }
+  }
+
+  // The used slots, numbered depth-first.
+  std::vector<BvhNode> numbered() const {
+    std::vector<BvhNode> nodes;
+    reserve_on_huge_pages(nodes, count(0));
+    nodes.push_back(slots_[0]);
+    number(nodes, 0);
+    return nodes;
   }
 
  private:
-  void build_node(std::vector<BvhNode>& nodes, uint32_t node, uint32_t begin, uint32_t end, int depth) {
-    uint32_t mid;
-    if (!split_or_leaf(nodes[node], begin, end, depth, mid)) return;
-    const uint32_t left = static_cast<uint32_t>(nodes.size());
-    nodes.push_back({});
-    nodes.push_back({});
-    nodes[node].first = left;
-    nodes[node].count = 0;
-    build_node(nodes, left, begin, mid, depth + 1);
-    build_node(nodes, left + 1, mid, end, depth + 1);
+  uint32_t count(uint32_t slot) const {
+    const BvhNode& n = slots_[slot];
+    return n.count != 0 ? 1 : 1 + count(n.first) + count(n.first + 1);
   }
 
-  // Sets the node's box; makes it a leaf (returns false) or partitions its items at `mid`.
-  bool split_or_leaf(BvhNode& node, uint32_t begin, uint32_t end, int depth, uint32_t& mid) {
-    Bounds bounds, centroids;
-    for (uint32_t i = begin; i < end; ++i) {
-      bounds.grow(items_[i].bounds);
-      centroids.grow(items_[i].centroid);
-    }
-    node.lo = bounds.lo;
-    node.hi = bounds.hi;
-    node.first = begin;
-    node.count = end - begin;
-    const uint32_t count = end - begin;
+  void number(std::vector<BvhNode>& nodes, uint32_t index) const {
+    if (nodes[index].count != 0) return;
+    const uint32_t slot = nodes[index].first, first = static_cast<uint32_t>(nodes.size());
+    nodes.push_back(slots_[slot]);
+    nodes.push_back(slots_[slot + 1]);
+    nodes[index].first = first;
+    number(nodes, first);
+    number(nodes, first + 1);
+  }
+
+  // Sets the node's box; makes it a leaf (returns false) or partitions its refs in two.
+  bool split_or_leaf(BvhNode& node, const Range& range, int depth, Range& left, Range& right) {
+    float lo[4], hi[4];
+    _mm_storeu_ps(lo, range.bounds.lo);
+    _mm_storeu_ps(hi, range.bounds.hi);
+    node.lo = {lo[0], lo[1], lo[2]};
+    node.hi = {hi[0], hi[1], hi[2]};
+    node.first = range.begin;
+    node.count = range.end - range.begin;
+    const uint32_t count = range.end - range.begin;
     if (count <= kMaxLeafSize || depth >= kMaxBuildDepth) return false;
-    const Split split = best_split(begin, end, centroids);
-    if (split.axis < 0) {
-      // All centroids coincide: split the list in half so the build always progresses.
-      mid = begin + count / 2;
-      return true;
+    const Binner binner(range.centroids, count);
+    const Split split = best_split(range, binner);
+    if (split.axis >= 0) {
+      // Traversal step costs about as much as one primitive test (a cost of 1 per node).
+      const float leaf_cost = range.bounds.half_area() * count;
+      if (count <= 2 * kMaxLeafSize && split.cost + range.bounds.half_area() >= leaf_cost) return false;
+      partition(range, binner, split, left, right);
+    } else {  // all centroids coincide: split the list in half so the build always progresses
+      halve(range, left, right);
     }
-    const float leaf_cost = bounds.surface_area() * count;
-    // Traversal step costs about as much as one primitive test (a cost of 1 per node).
-    if (count <= 2 * kMaxLeafSize && split.cost + bounds.surface_area() >= leaf_cost) return false;
-    const float lo = centroids.lo[split.axis], extent = centroids.hi[split.axis] - lo;
-    const auto it = std::partition(items_.begin() + begin, items_.begin() + end, [&](const BuildItem& item) {
-      return bin_of(item.centroid[split.axis], lo, extent) < split.bin;
-    });
-    mid = static_cast<uint32_t>(it - items_.begin());
     return true;
   }
 
   // The SAH cost of splitting at every bin boundary on every axis, binned in one pass.
-  Split best_split(uint32_t begin, uint32_t end, const Bounds& centroids) const {
-    Bounds bin_bounds[3][kBins];
-    uint32_t bin_count[3][kBins] = {};
-    float lo[3], extent[3];
-    bool usable[3];
-    for (int axis = 0; axis < 3; ++axis) {
-      lo[axis] = centroids.lo[axis];
-      extent[axis] = centroids.hi[axis] - lo[axis];
-      usable[axis] = extent[axis] > 0.0f;
-    }
-    for (uint32_t i = begin; i < end; ++i) {
-      const BuildItem& item = items_[i];
+  Split best_split(const Range& range, const Binner& binner) const {
+    const int bins = binner.count;
+    __m128 bin_lo[3][kBins], bin_hi[3][kBins];  // only the first `bins` are used
+    uint32_t bin_count[3][kBins];
+    for (int axis = 0; axis < 3; ++axis)
+      for (int b = 0; b < bins; ++b) bin_lo[axis][b] = Box{}.lo, bin_hi[axis][b] = Box{}.hi, bin_count[axis][b] = 0;
+    alignas(16) int32_t bin[4];
+    for (uint32_t i = range.begin; i < range.end; ++i) {
+      const Ref& r = refs_[i];
+      _mm_store_si128(reinterpret_cast<__m128i*>(bin), binner.bins(twice_centroid(r)));
       for (int axis = 0; axis < 3; ++axis) {
-        if (!usable[axis]) continue;
-        const int b = bin_of(item.centroid[axis], lo[axis], extent[axis]);
-        bin_bounds[axis][b].grow(item.bounds);
+        const int b = bin[axis];
+        bin_lo[axis][b] = _mm_min_ps(bin_lo[axis][b], r.lo);
+        bin_hi[axis][b] = _mm_max_ps(bin_hi[axis][b], r.hi);
         ++bin_count[axis][b];
       }
     }
     Split best;
     for (int axis = 0; axis < 3; ++axis) {
-      if (!usable[axis]) continue;
       float right_area[kBins];
       uint32_t right_count[kBins];
-      Bounds acc;
+      Box acc;
       uint32_t n = 0;
-      for (int b = kBins - 1; b > 0; --b) {
-        acc.grow(bin_bounds[axis][b]);
+      for (int b = bins - 1; b > 0; --b) {
+        acc.grow(bin_lo[axis][b], bin_hi[axis][b]);
         n += bin_count[axis][b];
-        right_area[b] = acc.surface_area();
+        right_area[b] = acc.half_area();
         right_count[b] = n;
       }
-      acc = Bounds{};
+      acc = Box{};
       n = 0;
-      for (int split = 1; split < kBins; ++split) {
-        acc.grow(bin_bounds[axis][split - 1]);
+      for (int split = 1; split < bins; ++split) {
+        acc.grow(bin_lo[axis][split - 1], bin_hi[axis][split - 1]);
         n += bin_count[axis][split - 1];
         if (n == 0 || right_count[split] == 0) continue;
-        const float cost = acc.surface_area() * n + right_area[split] * right_count[split];
+        const float cost = acc.half_area() * n + right_area[split] * right_count[split];
         if (cost < best.cost) best = {axis, split, cost};
       }
     }
     return best;
   }
 
-  // [root, left root, right root, left's other nodes, right's other nodes], indices shifted.
-  static std::vector<BvhNode> splice(BvhNode root, const std::vector<BvhNode>& left,
-                                     const std::vector<BvhNode>& right) {
-    const uint32_t left_shift = 2, right_shift = static_cast<uint32_t>(left.size()) + 1;
-    const auto shifted = [](BvhNode n, uint32_t shift) {
-      if (n.count == 0) n.first += shift;
-      return n;
-    };
-    std::vector<BvhNode> nodes;
-    nodes.reserve(1 + left.size() + right.size());
-    root.first = 1;
-    root.count = 0;
-    nodes.push_back(root);
-    nodes.push_back(shifted(left[0], left_shift));
-    nodes.push_back(shifted(right[0], right_shift));
-    for (size_t i = 1; i < left.size(); ++i) nodes.push_back(shifted(left[i], left_shift));
-    for (size_t i = 1; i < right.size(); ++i) nodes.push_back(shifted(right[i], right_shift));
-    return nodes;
+  // Refs in bins below split.bin first, the others after; each side's boxes grown on the way.
+  void partition(const Range& range, const Binner& binner, const Split& split, Range& left, Range& right) {
+    alignas(16) int32_t bin[4];
+    uint32_t i = range.begin, j = range.end;
+    left = right = Range{};
+    while (i < j) {
+      const Ref r = refs_[i];
+      const __m128 c = twice_centroid(r);
+      _mm_store_si128(reinterpret_cast<__m128i*>(bin), binner.bins(c));
+      Range& side = bin[split.axis] < split.bin ? left : right;
+      side.bounds.grow(r.lo, r.hi);
+      side.centroids.grow(c);
+      if (&side == &left) {
+        ++i;
+      } else {
+        refs_[i] = refs_[--j];
+        refs_[j] = r;
+      }
+    }
+    left.begin = range.begin, left.end = i;
+    right.begin = i, right.end = range.end;
   }
 
-  std::vector<BuildItem>& items_;
+  void halve(const Range& range, Range& left, Range& right) const {
+    const uint32_t mid = range.begin + (range.end - range.begin) / 2;
+    left = right = Range{};
+    left.begin = range.begin, left.end = mid;
+    right.begin = mid, right.end = range.end;
+    for (Range* side : {&left, &right})
+      for (uint32_t i = side->begin; i < side->end; ++i) {
+        side->bounds.grow(refs_[i].lo, refs_[i].hi);
+        side->centroids.grow(twice_centroid(refs_[i]));
+      }
+  }
+
+  std::vector<Ref>& refs_;
+  BvhNode* slots_;
 };
 
 }  // namespace
 
 std::vector<BvhNode> build_sah_bvh(std::vector<BuildItem>& items) {
   if (items.empty()) return {};
-  std::vector<BvhNode> nodes;
-  BvhBuilder builder(items);
   const uint32_t n = static_cast<uint32_t>(items.size());
+  std::vector<Ref> refs;
+  reserve_on_huge_pages(refs, n);
+  Range root{0, n, {}, {}};
+  for (uint32_t i = 0; i < n; ++i) {
+    const Bounds& b = items[i].bounds;
+    float index;
+    std::memcpy(&index, &i, sizeof index);
+    const Ref r = {_mm_setr_ps(b.lo.x, b.lo.y, b.lo.z, index), _mm_setr_ps(b.hi.x, b.hi.y, b.hi.z, 0.0f)};
+    refs.push_back(r);
+    root.bounds.grow(r.lo, r.hi);
+    root.centroids.grow(twice_centroid(r));
+  }
+  const size_t slot_count = 2 * size_t{n} - 1;  // BvhNode is an aggregate: malloc'd storage holds nodes
+  std::unique_ptr<BvhNode, decltype(&std::free)> slots(static_cast<BvhNode*>(std::malloc(slot_count * sizeof(BvhNode))),
+                                                       &std::free);
+  if (!slots) throw std::bad_alloc();
+  advise_huge_pages(slots.get(), slot_count * sizeof(BvhNode));
+  BvhBuilder builder(refs, slots.get());
 #pragma omp parallel if (n >= kTaskItems)
 #pragma omp single
-  nodes = builder.build(0, n, 0);
+  builder.build(0, root, 1, 0);
+  std::vector<BvhNode> nodes = builder.numbered();
+  std::vector<BuildItem> leaf_order;
+  reserve_on_huge_pages(leaf_order, n);
+  for (const Ref& r : refs) {
+    uint32_t index;
+    const float lane = _mm_cvtss_f32(_mm_shuffle_ps(r.lo, r.lo, _MM_SHUFFLE(3, 3, 3, 3)));
+    std::memcpy(&index, &lane, sizeof index);
+    leaf_order.push_back(items[index]);
+  }
+  items = std::move(leaf_order);
   return nodes;
 }
 

@@ -1,6 +1,7 @@
 #include "accel/wide_bvh_builder.h"
 
 #include "accel/bounds.h"
+#include "accel/huge_pages.h"
 #include "kernel/scene/scene_view.h"  // kNoHit
 
 namespace tracer {
@@ -13,6 +14,12 @@ class WideBvhCollapser {
       : binary_(binary), leaf_order_(leaf_order), primitives_(primitives) {}
 
   WideBvh collapse() {
+    // Sized once: a wide node per collapsed interior binary node at most, and each leaf's blocks.
+    size_t interior = 0, blocks = 0;
+    for (const BvhNode& n : binary_)
+      n.count == 0 ? ++interior : blocks += (n.count + kBlockLanes - 1) / kBlockLanes;
+    reserve_on_huge_pages(wide_.nodes, interior + 1);
+    reserve_on_huge_pages(wide_.blocks, blocks);
     const BvhNode& root = binary_[0];
     if (root.count > 0) {  // a single leaf: one node with one child
       wide_.nodes.push_back(empty_node());
