@@ -28,15 +28,17 @@ Acceleration build_acceleration(AccelKind kind, std::span<const Primitive> primi
     items.push_back({b, (b.lo + b.hi) * 0.5f, id});
   }
   switch (kind) {
-    case AccelKind::Bvh: a.bvh_nodes = build_sah_bvh(items); break;
+    case AccelKind::Bvh: a.bvh_nodes = build_sah_bvh(items, a.bounded); break;
     case AccelKind::Lbvh: a.bvh_nodes = build_lbvh(items); break;
     case AccelKind::Kdtree: a.kd = build_kdtree(items, KdSplit::Sah); break;
     case AccelKind::KdtreeMedian: a.kd = build_kdtree(items, KdSplit::Median); break;
     case AccelKind::Grid: a.grid = build_grid(items, grid_resolution); break;
     case AccelKind::None: break;
   }
-  reserve_on_huge_pages(a.bounded, items.size());
-  for (const BuildItem& it : items) a.bounded.push_back(it.id);
+  if (kind != AccelKind::Bvh) {  // the other builders reorder `items` into the order their leaves index
+    reserve_on_huge_pages(a.bounded, items.size());
+    for (const BuildItem& it : items) a.bounded.push_back(it.id);
+  }
   if (kind == AccelKind::Bvh) a.wide = collapse_to_wide_bvh(a.bvh_nodes, a.bounded, primitives);
   return a;
 }

@@ -235,7 +235,7 @@ class BvhBuilder {
 
 }  // namespace
 
-std::vector<BvhNode> build_sah_bvh(std::vector<BuildItem>& items) {
+std::vector<BvhNode> build_sah_bvh(std::span<const BuildItem> items, std::vector<uint32_t>& leaf_ids) {
   if (items.empty()) return {};
   const uint32_t n = static_cast<uint32_t>(items.size());
   std::vector<Ref> refs;
@@ -260,15 +260,14 @@ std::vector<BvhNode> build_sah_bvh(std::vector<BuildItem>& items) {
 #pragma omp single
   builder.build(0, root, 1, 0);
   std::vector<BvhNode> nodes = builder.numbered();
-  std::vector<BuildItem> leaf_order;
-  reserve_on_huge_pages(leaf_order, n);
+  leaf_ids.clear();
+  reserve_on_huge_pages(leaf_ids, n);
   for (const Ref& r : refs) {
     uint32_t index;
     const float lane = _mm_cvtss_f32(_mm_shuffle_ps(r.lo, r.lo, _MM_SHUFFLE(3, 3, 3, 3)));
     std::memcpy(&index, &lane, sizeof index);
-    leaf_order.push_back(items[index]);
+    leaf_ids.push_back(items[index].id);
   }
-  items = std::move(leaf_order);
   return nodes;
 }
 

@@ -8,6 +8,10 @@ namespace tracer {
 namespace {
 
 class WideBvhCollapser {
+  struct Leaf {
+    uint32_t block, first, count;  // its first block; its primitives leaf_order_[first .. first + count)
+  };
+
  public:
   WideBvhCollapser(std::span<const BvhNode> binary, std::span<const uint32_t> leaf_order,
                    std::span<const Primitive> primitives)
@@ -20,6 +24,7 @@ class WideBvhCollapser {
       n.count == 0 ? ++interior : blocks += (n.count + kBlockLanes - 1) / kBlockLanes;
     reserve_on_huge_pages(wide_.nodes, interior + 1);
     reserve_on_huge_pages(wide_.blocks, blocks);
+    leaves_.reserve(binary_.size() - interior);
     const BvhNode& root = binary_[0];
     if (root.count > 0) {  // a single leaf: one node with one child
       wide_.nodes.push_back(empty_node());
@@ -27,6 +32,7 @@ class WideBvhCollapser {
     } else {
       collapse_node(0);
     }
+    fill_blocks();
     return std::move(wide_);
   }
 
@@ -74,20 +80,30 @@ class WideBvhCollapser {
     WideBvhNode& n = wide_.nodes[node];
     for (int a = 0; a < 3; ++a) n.lo[a][slot] = child.lo[a], n.hi[a][slot] = child.hi[a];
     if (child.count == 0) return;  // interior: child[slot] is set once the subtree exists
-    n.child[slot] = static_cast<uint32_t>(wide_.blocks.size());
+    n.child[slot] = block_count_;
     n.leaf_blocks[slot] = (child.count + kBlockLanes - 1) / kBlockLanes;
-    for (uint32_t k = 0; k < child.count; ++k) add_to_blocks(k, leaf_order_[child.first + k]);
+    leaves_.push_back({block_count_, child.first, child.count});
+    block_count_ += n.leaf_blocks[slot];
   }
 
-  // The k-th primitive of the current leaf goes to lane k % 4 of the leaf's (k / 4)-th block.
-  void add_to_blocks(uint32_t k, uint32_t id) {
-    const int lane = static_cast<int>(k % kBlockLanes);
-    if (lane == 0) {
-      TriangleBlock empty{};
-      for (uint32_t& i : empty.id) i = kNoHit;
-      wide_.blocks.push_back(empty);
+  // Every leaf's blocks, in parallel: each leaf owns its blocks.
+  void fill_blocks() {
+    wide_.blocks.resize(block_count_);
+#pragma omp parallel for schedule(static, 4096) if (leaves_.size() >= 4096)
+    for (int64_t i = 0; i < static_cast<int64_t>(leaves_.size()); ++i) {
+      const Leaf& leaf = leaves_[static_cast<size_t>(i)];
+      for (uint32_t k = 0; k < leaf.count; ++k) add_to_block(leaf, k, leaf_order_[leaf.first + k]);
     }
-    TriangleBlock& block = wide_.blocks.back();
+  }
+
+  // The k-th primitive of a leaf goes to lane k % 4 of the leaf's (k / 4)-th block.
+  void add_to_block(const Leaf& leaf, uint32_t k, uint32_t id) {
+    const int lane = static_cast<int>(k % kBlockLanes);
+    TriangleBlock& block = wide_.blocks[leaf.block + k / kBlockLanes];
+    if (lane == 0) {
+      block = TriangleBlock{};
+      for (uint32_t& i : block.id) i = kNoHit;
+    }
     block.id[lane] = id;
     const Primitive& p = primitives_[id];
     if (p.kind != ShapeKind::Triangle) {
@@ -103,6 +119,8 @@ class WideBvhCollapser {
   std::span<const BvhNode> binary_;
   std::span<const uint32_t> leaf_order_;
   std::span<const Primitive> primitives_;
+  std::vector<Leaf> leaves_;
+  uint32_t block_count_ = 0;
   WideBvh wide_;
 };
 
