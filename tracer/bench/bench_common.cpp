@@ -18,16 +18,11 @@ constexpr uint64_t kReferenceSeedOffset = 0x9E3779B97F4A7C15ull;  // keeps the r
 
 TimedRender timed_render(const Scene& scene, int threads, int repeats) {
   TimedRender r;
-  std::vector<double> times;
-  for (int i = 0; i < repeats; ++i) {
+  r.seconds = median_seconds(static_cast<uint32_t>(repeats), [&] {
     RenderStats stats;
-    const auto start = std::chrono::steady_clock::now();
     r.image = render_cpu(scene, threads, stats);
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     r.rays = stats.rays.camera + stats.rays.secondary + stats.rays.shadow;
-  }
-  std::sort(times.begin(), times.end());
-  r.seconds = times[times.size() / 2];
+  });
   return r;
 }
 

@@ -5,7 +5,11 @@
 // is the mean of (x - r)^2 / (r^2 + 0.01) (Rousselle et al. 2011), which weighs dark and
 // bright regions alike.
 #pragma once
+#include <algorithm>
+#include <chrono>
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "image/image.h"
 #include "scene/scene.h"
@@ -21,6 +25,23 @@ struct TimedRender {
 struct ImageError {
   double rmse = 0, display_rmse = 0, rel_mse = 0;
 };
+
+// The median of `repeats` (at least 1) values of `measure()`.
+inline double median_of(uint32_t repeats, const std::function<double()>& measure) {
+  std::vector<double> values;
+  for (uint32_t r = 0; r < std::max(repeats, 1u); ++r) values.push_back(measure());
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+// Wall seconds of `run()`, the median of `repeats` runs.
+inline double median_seconds(uint32_t repeats, const std::function<void()>& run) {
+  return median_of(repeats, [&] {
+    const auto start = std::chrono::steady_clock::now();
+    run();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  });
+}
 
 // Renders `repeats` times (the image is the same each time) and keeps the median time.
 TimedRender timed_render(const Scene& scene, int threads, int repeats = 1);

@@ -1,7 +1,7 @@
 // A benchmark-only adapter to Embree 3 (Intel's kernels, Debian's libembree-dev), built when
 // CMake finds it: the scene's triangles in one Embree scene, the same rays traced one at a
 // time with rtcIntersect1 and rtcOccluded1 on the same threads, for `bench rays`' Embree
-// row. Never used to render.
+// row; build time and rates are medians of `repeats` runs. Never used to render.
 #pragma once
 #include <vector>
 
@@ -22,6 +22,7 @@ bool embree_available();
 // Only scenes made of triangles; InputError otherwise.
 EmbreeRow embree_bench(const Scene& scene, const std::vector<Ray>& primary, const std::vector<Ray>& incoherent,
                        const std::vector<Ray>& shadow, const std::vector<float>& shadow_tmax,
-                       const std::vector<Hit>& our_primary, const std::vector<Hit>& our_incoherent, int threads);
+                       const std::vector<Hit>& our_primary, const std::vector<Hit>& our_incoherent, int threads,
+                       uint32_t repeats);
 
 }  // namespace tracer

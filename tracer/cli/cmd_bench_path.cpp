@@ -32,17 +32,6 @@ struct BenchPathCommand {
 };
 namespace {
 
-double median_seconds(uint32_t repeats, const std::function<void()>& run) {
-  std::vector<double> times;
-  for (uint32_t r = 0; r < repeats; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    run();
-    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
-}
-
 struct Replay {
   std::vector<Ray> rays;
   std::vector<float> tmax;

@@ -3,6 +3,7 @@
 // for 2^22 incoherent rays (origins uniform in the scene's box, directions uniform on the
 // sphere), and any-hit throughput for shadow rays from the primary hits to a point above
 // the scene; on all cores. A checksum of the hits shows every structure found the same.
+// Every build time and rate is the median of --repeats runs (Embree's too).
 #include <omp.h>
 
 #include <chrono>
@@ -13,6 +14,7 @@
 
 #include "accel/acceleration.h"
 #include "accel/bounds.h"
+#include "bench/bench_common.h"
 #include "bench/embree_bench.h"
 #include "bench/mesh_generators.h"
 #include "cli/command_registry.h"
@@ -33,7 +35,7 @@ namespace tracer {
 
 struct BenchRaysCommand {
   std::string scene, accel;
-  uint32_t incoherent = 1u << 22, grid_resolution = 0;
+  uint32_t incoherent = 1u << 22, grid_resolution = 0, repeats = 3;
   int threads = 0;
 };
 namespace {
@@ -91,17 +93,27 @@ RaySets make_rays(const Scene& scene, uint32_t incoherent) {
   return r;
 }
 
-// Runs `query(begin, count)` over [0, n) in chunks of 1024 on all threads; returns Mrays/s.
-double throughput(size_t n, int threads, const std::function<void(size_t, size_t)>& query) {
+// Runs `query(begin, count)` over [0, n) in chunks of 1024 on all threads, `repeats` times;
+// returns the median Mrays/s.
+double throughput(size_t n, int threads, uint32_t repeats, const std::function<void(size_t, size_t)>& query) {
   constexpr size_t kChunk = 1024;
-  const auto start = std::chrono::steady_clock::now();
+  return median_of(repeats, [&] {
+    const auto start = std::chrono::steady_clock::now();
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (int64_t c = 0; c < static_cast<int64_t>((n + kChunk - 1) / kChunk); ++c) {
-    const size_t begin = static_cast<size_t>(c) * kChunk;
-    query(begin, std::min(kChunk, n - begin));
-  }
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return static_cast<double>(n) / s / 1e6;
+    for (int64_t c = 0; c < static_cast<int64_t>((n + kChunk - 1) / kChunk); ++c) {
+      const size_t begin = static_cast<size_t>(c) * kChunk;
+      query(begin, std::min(kChunk, n - begin));
+    }
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return static_cast<double>(n) / s / 1e6;
+  });
+}
+
+// The median of `repeats` builds of the scene's structure, in seconds.
+double build_seconds(const Scene& scene, uint32_t repeats) {
+  return median_seconds(repeats, [&] {
+    const Acceleration a = build_acceleration(scene.settings.accel, scene.primitives, scene.settings.grid_resolution);
+  });
 }
 
 uint64_t mix(uint64_t h, uint64_t v) { return (h ^ v) * 0x100000001B3ull; }
@@ -117,8 +129,10 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     std::stringstream list(cmd.accel);
     for (std::string a; std::getline(list, a, ',');) accels.push_back(parse_enum<AccelKind>(a, "--accel " + cmd.accel));
   }
-  std::printf("tracer bench rays %s: %d threads; primary: %ux%u pinhole, incoherent: %u rays, shadow: any-hit\n",
-              cmd.scene.c_str(), threads, kCamera, kCamera, cmd.incoherent);
+  std::printf(
+      "tracer bench rays %s: %d threads; primary: %ux%u pinhole, incoherent: %u rays, shadow: any-hit; "
+      "medians of %u runs\n",
+      cmd.scene.c_str(), threads, kCamera, kCamera, cmd.incoherent, cmd.repeats);
   std::printf("%-14s %10s %10s %10s %10s | %10s %10s %10s | %s\n", "accel", "build s", "MB", "B/prim", "nodes",
               "primary", "incoherent", "shadow", "hits (checksum)");
   RaySets rays;
@@ -128,13 +142,13 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
   std::string kernel_name;
   // Traces every ray set through `view` with `kernel`; prints the row and checks the checksum.
   const auto measure = [&](const std::string& label, const Scene& scene, const SceneView& view,
-                           const CpuKernelVariant& kernel, double rates[3], bool built) {
+                           const CpuKernelVariant& kernel, double rates[3], double build) {
     std::vector<Hit> primary(rays.primary.size()), incoherent(rays.incoherent.size());
     const std::vector<float> no_limit(std::max(primary.size(), incoherent.size()), kInfinity);
-    rates[0] = throughput(primary.size(), threads, [&](size_t i, size_t n) {
+    rates[0] = throughput(primary.size(), threads, cmd.repeats, [&](size_t i, size_t n) {
       kernel.trace_closest(view, &rays.primary[i], no_limit.data(), n, &primary[i]);
     });
-    rates[1] = throughput(incoherent.size(), threads, [&](size_t i, size_t n) {
+    rates[1] = throughput(incoherent.size(), threads, cmd.repeats, [&](size_t i, size_t n) {
       kernel.trace_closest(view, &rays.incoherent[i], no_limit.data(), n, &incoherent[i]);
     });
     if (rays.shadow.empty()) {  // from each primary hit toward a point above the scene, once for all structures
@@ -152,7 +166,7 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
       reference_incoherent = incoherent;
     }
     std::vector<uint8_t> occluded(rays.shadow.size(), 0);
-    rates[2] = throughput(rays.shadow.size(), threads, [&](size_t i, size_t n) {
+    rates[2] = throughput(rays.shadow.size(), threads, cmd.repeats, [&](size_t i, size_t n) {
       kernel.trace_any(view, &rays.shadow[i], &rays.shadow_tmax[i], n, &occluded[i]);
     });
     uint64_t sum = 0;
@@ -160,8 +174,8 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
       for (const Hit& h : *hits) sum = mix(mix(sum, h.prim), bits_of(h.t));
     for (uint8_t o : occluded) sum = mix(sum, o);
     if (reference == 0) reference = sum;
-    if (built)
-      std::printf("%-14s %10.3f %10.1f %10.1f %10zu | ", label.c_str(), scene.report.build_seconds,
+    if (build > 0)
+      std::printf("%-14s %10.3f %10.1f %10.1f %10zu | ", label.c_str(), build,
                   scene.report.accel_bytes / 1048576.0,
                   static_cast<double>(scene.report.accel_bytes) / static_cast<double>(scene.primitives.size()),
                   scene.report.accel.nodes + scene.report.accel.cells);
@@ -182,21 +196,22 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     const SceneView view = scene.view();
     const CpuKernelVariant& kernel = cpu_kernel_for(view.features);
     kernel_name = cpu_kernel_name(kernel);
-    measure(enum_name(accel), scene, view, kernel, accel == AccelKind::Bvh ? bvh_rates : rates, true);
+    const double build = build_seconds(scene, cmd.repeats);
+    measure(enum_name(accel), scene, view, kernel, accel == AccelKind::Bvh ? bvh_rates : rates, build);
     if (accel != AccelKind::Bvh) continue;
-    bvh_build = scene.report.build_seconds;
+    bvh_build = build;
     for (const CpuKernelVariant* other : cpu_kernels_per_isa(view.features))  // the instruction sets compared
-      if (other != &kernel) measure(std::string("bvh ") + other->isa, scene, view, *other, rates, false);
+      if (other != &kernel) measure(std::string("bvh ") + other->isa, scene, view, *other, rates, 0);
     SceneView binary = view;  // the same tree walked two children at a time, as the GPU walks it
     binary.wide_node_count = 0;
-    measure("bvh (binary)", scene, binary, kernel, rates, false);
+    measure("bvh (binary)", scene, binary, kernel, rates, 0);
   }
   std::printf("(CPU kernel %s; a row \"bvh ISA\" runs the same tree with that instruction set's kernel)\n",
               kernel_name.c_str());
   if (embree_available()) {
     const Scene scene = load_bench_scene(cmd.scene, AccelKind::None, 0);
     const EmbreeRow e = embree_bench(scene, rays.primary, rays.incoherent, rays.shadow, rays.shadow_tmax,
-                                     reference_primary, reference_incoherent, threads);
+                                     reference_primary, reference_incoherent, threads, cmd.repeats);
     std::printf("%-14s %10.3f %10.1f %10.1f %10s | %10.2f %10.2f %10.2f | %.4f%% of closest hits on the same primitive\n",
                 "embree 3", e.build_seconds, e.megabytes,
                 e.megabytes * 1048576.0 / static_cast<double>(scene.primitives.size()), "-", e.primary, e.incoherent,
@@ -220,6 +235,8 @@ const RegisterCommand kBenchRaysCommand(
        app.add_option("--grid-resolution", cmd->grid_resolution,
                       "grid cells along the longest axis (default: by density)")
            ->check(count_in(1, 1024));
+       app.add_option("--repeats", cmd->repeats, "builds and runs per measurement; the median is kept (default 3)")
+           ->check(count_in(1, 100));
        add_threads_option(app, cmd->threads);
        return [cmd] { return run_bench_rays(*cmd); };
      }});

@@ -20,28 +20,44 @@ TRACER_HD void traverse_wide_bvh(const SceneView& scene, const Ray& ray, const R
   const WideRayQuery q = make_wide_ray_query(ray, shear);
   Entry stack[kWideStackSize];
   int top = 0;
-  stack[top++] = {0u, 0u, 0.0f};
-  while (top > 0) {
-    const Entry e = stack[--top];
-    if (e.t_enter > best.t) continue;
+  Entry e = {0u, 0u, 0.0f};
+  for (;;) {
     if (e.leaf_blocks != 0) {
       for (uint32_t b = e.child; b < e.child + e.leaf_blocks; ++b) {
         test_triangle_block(scene, scene.triangle_blocks[b], q, ray, shear, best);
         if (any && best.prim != kNoHit) return;
       }
-      continue;
+    } else {
+      const WideBvhNode& n = scene.wide_nodes[e.child];
+      float t_enter[kWideBvhWidth];
+      uint32_t hits = wide_box_hits(n, q, best.t, t_enter);
+      if (hits != 0) {
+        int i = lowest_set_bit(hits);
+        Entry nearest = {n.child[i], n.leaf_blocks[i], t_enter[i]};
+        const int first = top;
+        // The nearest child (any-hit: the first) is visited next; the others go on the stack,
+        // sorted far to near so that the nearer pop first.
+        for (hits &= hits - 1; hits != 0; hits &= hits - 1) {
+          i = lowest_set_bit(hits);
+          Entry pushed = {n.child[i], n.leaf_blocks[i], t_enter[i]};
+          if (!any && pushed.t_enter < nearest.t_enter) {
+            const Entry swap = nearest;
+            nearest = pushed;
+            pushed = swap;
+          }
+          int j = top++;
+          if (!any)
+            for (; j > first && stack[j - 1].t_enter < pushed.t_enter; --j) stack[j] = stack[j - 1];
+          stack[j] = pushed;
+        }
+        e = nearest;
+        continue;
+      }
     }
-    const WideBvhNode& n = scene.wide_nodes[e.child];
-    float t_enter[kWideBvhWidth];
-    const int first = top;
-    for (uint32_t hits = wide_box_hits(n, q, best.t, t_enter); hits != 0; hits &= hits - 1) {
-      const int i = lowest_set_bit(hits);
-      Entry pushed = {n.child[i], n.leaf_blocks[i], t_enter[i]};
-      int j = top++;
-      if (!any)  // insertion: the stack segment stays sorted far to near, so the nearest pops first
-        for (; j > first && stack[j - 1].t_enter < pushed.t_enter; --j) stack[j] = stack[j - 1];
-      stack[j] = pushed;
-    }
+    do {  // the next entry that starts no farther than the best hit
+      if (top == 0) return;
+      e = stack[--top];
+    } while (e.t_enter > best.t);
   }
 }
 
