@@ -61,7 +61,9 @@ TEST(AccelIdentity, EveryStructureGivesTheSameHitsInEveryShippedScene) {
       built.push_back(load_scene(path, ov));
     }
     ASSERT_EQ(structures()[0], "bvh");
-    if (!built[0].bounded.empty()) ASSERT_GT(built[0].wide_nodes.size(), 0u) << path << ": bvh has no wide tree";
+    if (!built[0].bounded.empty()) {
+      ASSERT_GT(built[0].wide_nodes.size(), 0u) << path << ": bvh has no wide tree";
+    }
     SceneView binary = built[0].view();
     binary.wide_node_count = 0;
     const std::vector<Ray> rays = probe_rays(built[0]);

@@ -20,8 +20,7 @@ class WideBvhCollapser {
   WideBvh collapse() {
     // Sized once: a wide node per collapsed interior binary node at most, and each leaf's blocks.
     size_t interior = 0, blocks = 0;
-    for (const BvhNode& n : binary_)
-      n.count == 0 ? ++interior : blocks += (n.count + kBlockLanes - 1) / kBlockLanes;
+    for (const BvhNode& n : binary_) n.count == 0 ? ++interior : blocks += (n.count + kBlockLanes - 1) / kBlockLanes;
     reserve_on_huge_pages(wide_.nodes, interior + 1);
     reserve_on_huge_pages(wide_.blocks, blocks);
     leaves_.reserve(binary_.size() - interior);
@@ -58,7 +57,8 @@ class WideBvhCollapser {
     while (count < kWideBvhWidth) {
       int widest = -1;
       for (int i = 0; i < count; ++i)
-        if (binary_[children[i]].count == 0 && (widest < 0 || area(binary_[children[i]]) > area(binary_[children[widest]])))
+        if (binary_[children[i]].count == 0 &&
+            (widest < 0 || area(binary_[children[i]]) > area(binary_[children[widest]])))
           widest = i;
       if (widest < 0) break;
       const uint32_t first = binary_[children[widest]].first;

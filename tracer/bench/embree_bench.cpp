@@ -47,7 +47,8 @@ EmbreeRow embree_bench(const Scene& scene, const std::vector<Ray>& primary, cons
                        const std::vector<Hit>& our_primary, const std::vector<Hit>& our_incoherent, int threads,
                        uint32_t repeats) {
   for (const Primitive& p : scene.primitives)
-    if (p.kind != ShapeKind::Triangle) throw InputError(scene.file + ": the Embree row needs a scene of triangles only");
+    if (p.kind != ShapeKind::Triangle)
+      throw InputError(scene.file + ": the Embree row needs a scene of triangles only");
   EmbreeRow row;
   const std::string config = "threads=" + std::to_string(threads);
   RTCDevice device = rtcNewDevice(config.c_str());
@@ -60,7 +61,8 @@ EmbreeRow embree_bench(const Scene& scene, const std::vector<Ray>& primary, cons
     RTCScene rtc = rtcNewScene(device);
     RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     const size_t n = scene.primitives.size();
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, 3 * n));
+    auto* v =
+        static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, 3 * n));
     auto* index =
         static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, n));
     for (size_t t = 0; t < n; ++t) {

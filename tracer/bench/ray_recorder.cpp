@@ -18,11 +18,10 @@ static void record_traced_ray(const float* origin_dir, float tmax, bool any) {
   out.push_back(tmax);
 }
 
-#define TRACER_TRACE_HOOK(ray, tmax, any)                                                      \
-  do {                                                                                         \
-    const float origin_dir[6] = {ray.origin.x, ray.origin.y, ray.origin.z, ray.dir.x, ray.dir.y, \
-                                 ray.dir.z};                                                   \
-    ::record_traced_ray(origin_dir, tmax, any);                                                \
+#define TRACER_TRACE_HOOK(ray, tmax, any)                                                                    \
+  do {                                                                                                       \
+    const float origin_dir[6] = {ray.origin.x, ray.origin.y, ray.origin.z, ray.dir.x, ray.dir.y, ray.dir.z}; \
+    ::record_traced_ray(origin_dir, tmax, any);                                                              \
   } while (0)
 
 namespace tracer_ray_recorder {

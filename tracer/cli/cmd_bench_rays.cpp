@@ -175,8 +175,7 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     for (uint8_t o : occluded) sum = mix(sum, o);
     if (reference == 0) reference = sum;
     if (build > 0)
-      std::printf("%-14s %10.3f %10.1f %10.1f %10zu | ", label.c_str(), build,
-                  scene.report.accel_bytes / 1048576.0,
+      std::printf("%-14s %10.3f %10.1f %10.1f %10zu | ", label.c_str(), build, scene.report.accel_bytes / 1048576.0,
                   static_cast<double>(scene.report.accel_bytes) / static_cast<double>(scene.primitives.size()),
                   scene.report.accel.nodes + scene.report.accel.cells);
     else
@@ -212,10 +211,11 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     const Scene scene = load_bench_scene(cmd.scene, AccelKind::None, 0);
     const EmbreeRow e = embree_bench(scene, rays.primary, rays.incoherent, rays.shadow, rays.shadow_tmax,
                                      reference_primary, reference_incoherent, threads, cmd.repeats);
-    std::printf("%-14s %10.3f %10.1f %10.1f %10s | %10.2f %10.2f %10.2f | %.4f%% of closest hits on the same primitive\n",
-                "embree 3", e.build_seconds, e.megabytes,
-                e.megabytes * 1048576.0 / static_cast<double>(scene.primitives.size()), "-", e.primary, e.incoherent,
-                e.shadow, 100.0 * e.same_primitive);
+    std::printf(
+        "%-14s %10.3f %10.1f %10.1f %10s | %10.2f %10.2f %10.2f | %.4f%% of closest hits on the same primitive\n",
+        "embree 3", e.build_seconds, e.megabytes,
+        e.megabytes * 1048576.0 / static_cast<double>(scene.primitives.size()), "-", e.primary, e.incoherent, e.shadow,
+        100.0 * e.same_primitive);
     if (bvh_rates[0] > 0)
       std::printf("%-14s %10.2f %10s %10s %10s | %10.2f %10.2f %10.2f |\n", "bvh / embree", bvh_build / e.build_seconds,
                   "", "", "", bvh_rates[0] / e.primary, bvh_rates[1] / e.incoherent, bvh_rates[2] / e.shadow);

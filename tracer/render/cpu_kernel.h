@@ -24,9 +24,9 @@ struct FilmSum;
 struct RayCounts;
 
 struct CpuKernelVariant {
-  const char* isa;            // "x86-64", "avx2", "avx512" or "native"
-  const char* feature_set;    // "generic" or a set of TRACER_CPU_FEATURE_SETS
-  uint32_t features;          // the FeatureBit mask compiled in
+  const char* isa;          // "x86-64", "avx2", "avx512" or "native"
+  const char* feature_set;  // "generic" or a set of TRACER_CPU_FEATURE_SETS
+  uint32_t features;        // the FeatureBit mask compiled in
   size_t view_bytes, ray_bytes, hit_bytes, film_sum_bytes;
   // Pixels [x0, x1) x [y0, y1), samples [begin, end), into film (row-major, `width` wide).
   void (*render_tile)(const SceneView& view, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1, uint32_t begin,

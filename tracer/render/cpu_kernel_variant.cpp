@@ -69,9 +69,10 @@ namespace tracer {
 
 const CpuKernelVariant& TRACER_VARIANT() {
   using namespace k;  // the FeatureBit names in TRACER_KERNEL_FEATURES
-  static const CpuKernelVariant variant = {TRACER_VARIANT_ISA, TRACER_VARIANT_SET, TRACER_KERNEL_FEATURES,
-                                           sizeof(k::SceneView), sizeof(k::Ray), sizeof(k::Hit), sizeof(k::FilmSum),
-                                           render_tile, trace_closest, trace_any};
+  static const CpuKernelVariant variant = {
+      TRACER_VARIANT_ISA, TRACER_VARIANT_SET, TRACER_KERNEL_FEATURES, sizeof(k::SceneView),
+      sizeof(k::Ray),     sizeof(k::Hit),     sizeof(k::FilmSum),     render_tile,
+      trace_closest,      trace_any};
   return variant;
 }
 

@@ -35,10 +35,8 @@ TRACER_HD uint32_t watertight_candidates(const TriangleBlock& b, const WideRayQu
   const __m128 w = _mm_sub_ps(_mm_mul_ps(x[1], y[0]), _mm_mul_ps(y[1], x[0]));
   const __m128 zero = _mm_setzero_ps();
   const __m128 any_zero = _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(u, zero), _mm_cmpeq_ps(v, zero)), _mm_cmpeq_ps(w, zero));
-  const __m128 any_negative =
-      _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(u, zero), _mm_cmplt_ps(v, zero)), _mm_cmplt_ps(w, zero));
-  const __m128 any_positive =
-      _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_cmpgt_ps(v, zero)), _mm_cmpgt_ps(w, zero));
+  const __m128 any_negative = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(u, zero), _mm_cmplt_ps(v, zero)), _mm_cmplt_ps(w, zero));
+  const __m128 any_positive = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_cmpgt_ps(v, zero)), _mm_cmpgt_ps(w, zero));
   const uint32_t rejected = static_cast<uint32_t>(_mm_movemask_ps(_mm_and_ps(any_negative, any_positive)));
   const uint32_t recompute = static_cast<uint32_t>(_mm_movemask_ps(any_zero));
   return b.triangle_lanes & (recompute | (~rejected & 0xfu));
