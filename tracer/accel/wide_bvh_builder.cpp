@@ -24,10 +24,14 @@ class WideBvhCollapser {
     reserve_on_huge_pages(wide_.nodes, interior + 1);
     reserve_on_huge_pages(wide_.blocks, blocks);
     leaves_.reserve(binary_.size() - interior);
+    subtree_items_.resize(binary_.size());
+    for (size_t i = binary_.size(); i-- > 0;)  // children follow their parent in the array
+      subtree_items_[i] = binary_[i].count != 0 ? binary_[i].count
+                                                : subtree_items_[binary_[i].first] + subtree_items_[binary_[i].first + 1];
     const BvhNode& root = binary_[0];
     if (root.count > 0) {  // a single leaf: one node with one child
       wide_.nodes.push_back(empty_node());
-      set_child(0, 0, root);
+      set_child(0, 0, 0);
     } else {
       collapse_node(0);
     }
@@ -67,22 +71,34 @@ class WideBvhCollapser {
     }
     const uint32_t index = static_cast<uint32_t>(wide_.nodes.size());
     wide_.nodes.push_back(empty_node());
-    for (int i = 0; i < count; ++i) set_child(index, i, binary_[children[i]]);
+    for (int i = 0; i < count; ++i) set_child(index, i, children[i]);
     for (int i = 0; i < count; ++i) {
-      if (binary_[children[i]].count != 0) continue;
+      if (is_leaf(children[i])) continue;
       const uint32_t subtree = collapse_node(children[i]);  // grows wide_.nodes
       wide_.nodes[index].child[i] = subtree;
     }
     return index;
   }
 
-  void set_child(uint32_t node, int slot, const BvhNode& child) {
+  // A subtree of at most two blocks' worth of items becomes one leaf of its items (contiguous
+  // in leaf order) rather than a wide node with two or three children: one box test fewer.
+  bool is_leaf(uint32_t b) const { return binary_[b].count != 0 || subtree_items_[b] <= 2 * kBlockLanes; }
+
+  // The first item, in leaf order, of binary node `b`'s subtree.
+  uint32_t first_item(uint32_t b) const {
+    while (binary_[b].count == 0) b = binary_[b].first;
+    return binary_[b].first;
+  }
+
+  void set_child(uint32_t node, int slot, uint32_t b) {
     WideBvhNode& n = wide_.nodes[node];
+    const BvhNode& child = binary_[b];
     for (int a = 0; a < 3; ++a) n.lo[a][slot] = child.lo[a], n.hi[a][slot] = child.hi[a];
-    if (child.count == 0) return;  // interior: child[slot] is set once the subtree exists
+    if (!is_leaf(b)) return;  // interior: child[slot] is set once the subtree exists
+    const uint32_t items = subtree_items_[b];
     n.child[slot] = block_count_;
-    n.leaf_blocks[slot] = (child.count + kBlockLanes - 1) / kBlockLanes;
-    leaves_.push_back({block_count_, child.first, child.count});
+    n.leaf_blocks[slot] = (items + kBlockLanes - 1) / kBlockLanes;
+    leaves_.push_back({block_count_, first_item(b), items});
     block_count_ += n.leaf_blocks[slot];
   }
 
@@ -119,6 +135,7 @@ class WideBvhCollapser {
   std::span<const BvhNode> binary_;
   std::span<const uint32_t> leaf_order_;
   std::span<const Primitive> primitives_;
+  std::vector<uint32_t> subtree_items_;  // per binary node: the items below it
   std::vector<Leaf> leaves_;
   uint32_t block_count_ = 0;
   WideBvh wide_;

@@ -2,7 +2,9 @@
 // node, the interior child with the largest surface area is replaced by its two children
 // until the node has 8 (Wald et al., "Getting Rid of Packets", 2008, as in Embree's BVH
 // collapse). Each binary leaf becomes a run of TriangleBlocks holding its primitives in
-// leaf order. Deterministic: the result depends only on the binary tree.
+// leaf order, and so does a whole subtree of at most 8 primitives left over after the
+// expansion (2 blocks under one box instead of a nearly empty wide node). Deterministic:
+// the result depends only on the binary tree.
 #pragma once
 #include <span>
 #include <vector>
