@@ -27,7 +27,8 @@ int main(int argc, char** argv) {
   const std::map<std::string, std::string> group_help = {
       {"golden", "golden-image regression checks (docs/golden.md)"},
       {"bench", "benchmarks: speed against a baseline measured in the same run"},
-      {"slurm", "renders split over a Slurm cluster (docs/distributed.md)"}};
+      {"slurm", "renders split over a Slurm cluster (docs/distributed.md)"},
+      {"audit", "checks of the compiled CUDA kernels and of the source (docs/cuda.md)"}};
   std::map<std::string, CLI::App*> groups;
   std::vector<CommandSpec> commands = command_registry();
   std::sort(commands.begin(), commands.end(), [](const CommandSpec& a, const CommandSpec& b) {

@@ -31,8 +31,8 @@ TRACER_HD bool ray_box(Vec3 lo, Vec3 hi, Vec3 origin, Vec3 inv_dir, float tmin, 
       t1 = s;
     }
     t1 = t1 * kSlabWiden;
-    tmin = t0 > tmin ? t0 : tmin;
-    tmax = t1 < tmax ? t1 : tmax;
+    tmin = max_of(t0, tmin);  // a NaN t0 or t1 (0 * inf) leaves the bound as it was
+    tmax = min_of(t1, tmax);
     if (tmin > tmax) return false;
   }
   t_enter = tmin;
@@ -58,8 +58,8 @@ TRACER_HD bool ray_box(const BvhNode& box, const RayBoxQuery& q, float tmin, flo
   for (int axis = 0; axis < 3; ++axis) {
     const float t0 = ((*bounds[q.negative[axis]])[axis] - q.origin[axis]) * q.inv_dir[axis];
     const float t1 = ((*bounds[1 - q.negative[axis]])[axis] - q.origin[axis]) * q.inv_dir[axis] * kSlabWiden;
-    tmin = t0 > tmin ? t0 : tmin;
-    tmax = t1 < tmax ? t1 : tmax;
+    tmin = max_of(t0, tmin);  // a NaN t0 or t1 (0 * inf) leaves the bound as it was
+    tmax = min_of(t1, tmax);
   }
   t_enter = tmin;
   return tmin <= tmax;

@@ -6,6 +6,7 @@
 // boxes (the second child to arrive at a node merges them) and the layout into BvhNodes.
 #pragma once
 #include "kernel/accel/bvh_node.h"
+#include "kernel/base/float_to_int.h"
 
 namespace tracer {
 
@@ -30,9 +31,9 @@ TRACER_HD uint32_t spread_bits(uint32_t v) {  // 10 bits to every third bit
 
 // 10 bits per axis interleaved, x highest, from coordinates in [0, 1].
 TRACER_HD uint32_t morton_code(Vec3 unit) {
-  const uint32_t x = static_cast<uint32_t>(clamp_of(unit.x * 1024.0f, 0.0f, 1023.0f));
-  const uint32_t y = static_cast<uint32_t>(clamp_of(unit.y * 1024.0f, 0.0f, 1023.0f));
-  const uint32_t z = static_cast<uint32_t>(clamp_of(unit.z * 1024.0f, 0.0f, 1023.0f));
+  const uint32_t x = trunc_to_uint32(clamp_of(unit.x * 1024.0f, 0.0f, 1023.0f));
+  const uint32_t y = trunc_to_uint32(clamp_of(unit.y * 1024.0f, 0.0f, 1023.0f));
+  const uint32_t z = trunc_to_uint32(clamp_of(unit.z * 1024.0f, 0.0f, 1023.0f));
   return spread_bits(x) << 2 | spread_bits(y) << 1 | spread_bits(z);
 }
 

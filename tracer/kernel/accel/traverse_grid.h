@@ -5,6 +5,7 @@
 // best hit lies before the cell's exit minus the pad (DESIGN.md rule 4).
 #pragma once
 #include "kernel/accel/primitive_hit.h"
+#include "kernel/base/float_to_int.h"
 
 namespace tracer {
 
@@ -17,7 +18,7 @@ TRACER_HD void traverse_grid(const SceneView& scene, const Ray& ray, const RaySh
   int cell[3], step[3];
   for (int a = 0; a < 3; ++a) {
     const float p = ray.origin[a] + ray.dir[a] * t_enter;
-    const int c = static_cast<int>((p - g.lo[a]) / g.cell[a]);
+    const int c = trunc_to_int32((p - g.lo[a]) / g.cell[a]);
     cell[a] = c < 0 ? 0 : (c >= static_cast<int>(g.n[a]) ? static_cast<int>(g.n[a]) - 1 : c);
     step[a] = ray.dir[a] > 0.0f ? 1 : (ray.dir[a] < 0.0f ? -1 : 0);
   }

@@ -3,6 +3,7 @@
 // bits. Each float function evaluates in double and rounds once; tests/extremes/test_detmath.cpp
 // measures the error against libm's double precision (bound: < 1 ulp, faithful rounding).
 #pragma once
+#include "kernel/base/float_to_int.h"
 #include "kernel/base/platform.h"
 
 namespace tracer {
@@ -111,7 +112,7 @@ TRACER_HD double exp_d(double x) {
   if (is_nan(x)) return x;
   if (x > 709.8) return kInfinity;
   if (x < -745.2) return 0.0;
-  const double k = static_cast<double>(static_cast<int64_t>(x * kInvLn2 + (x < 0 ? -0.5 : 0.5)));
+  const double k = static_cast<double>(trunc_to_int64(x * kInvLn2 + (x < 0 ? -0.5 : 0.5)));
   const double r = (x - k * kLn2Hi) - k * kLn2Lo;
   double p = 1.6059043836821613e-10;
   p = p * r + 2.08767569878681e-09;
@@ -128,7 +129,7 @@ TRACER_HD double exp_d(double x) {
   p = p * r + 1.0;
   p = p * r + 1.0;
   // Scale by 2^k in two exact steps so that neither factor leaves the normal range.
-  const int ki = static_cast<int>(k);
+  const int ki = trunc_to_int32(k);
   const int k1 = ki / 2, k2 = ki - k1;
   const double s1 = double_of_bits(static_cast<uint64_t>(1023 + k1) << 52);
   const double s2 = double_of_bits(static_cast<uint64_t>(1023 + k2) << 52);
@@ -161,10 +162,8 @@ TRACER_HD double log_d(double x) {
   return ed * kLn2Hi + (ed * kLn2Lo + 2.0 * s * p);
 }
 
-TRACER_HD bool is_integer(float y) { return abs_of(y) >= 0x1p23f || static_cast<float>(static_cast<int32_t>(y)) == y; }
-TRACER_HD bool is_odd_integer(float y) {
-  return abs_of(y) < 0x1p24f && is_integer(y) && (static_cast<int32_t>(y) & 1) != 0;
-}
+TRACER_HD bool is_integer(float y) { return abs_of(y) >= 0x1p23f || static_cast<float>(trunc_to_int32(y)) == y; }
+TRACER_HD bool is_odd_integer(float y) { return abs_of(y) < 0x1p24f && is_integer(y) && (trunc_to_int32(y) & 1) != 0; }
 
 }  // namespace detmath_detail
 

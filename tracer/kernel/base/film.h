@@ -5,6 +5,7 @@
 // bit for bit. A sample that is NaN or infinite, or one of 2^30 or more (or that would
 // overflow the sum), is rejected and counted as non-finite or as overflow, never added.
 #pragma once
+#include "kernel/base/float_to_int.h"
 #include "kernel/base/vec3.h"
 
 namespace tracer {
@@ -22,7 +23,7 @@ struct FilmSum {
 // Rounds to the nearest film unit, halves away from zero (only + - * and conversions).
 TRACER_HD int64_t to_film_units(float v) {
   const double x = static_cast<double>(v) * kFilmUnits;
-  return static_cast<int64_t>(x >= 0.0 ? x + 0.5 : x - 0.5);
+  return trunc_to_int64(x >= 0.0 ? x + 0.5 : x - 0.5);
 }
 
 // Adds one sample; false (and counted) when it is rejected.

@@ -85,6 +85,31 @@ template <class T>
 TRACER_HD T max_of(T a, T b) {
   return a > b ? a : b;
 }
+#if defined(TRACER_DEVICE_SEMANTICS)
+// The host build that emulates the GPU (preset device-semantics, docs/cuda.md): float
+// min/max follow PTX min.f32/max.f32 (PTX ISA, "Floating Point Instructions: min, max"):
+// a NaN operand yields the other one, and -0 orders below +0. Where nvcc emits min/max for
+// min_of/max_of, this is what the GPU computes; rendering every golden with it shows that
+// no image depends on which of the two forms a site was compiled to.
+template <class T>
+TRACER_HD T ptx_min(T a, T b) {
+  if (a != a) return b;
+  if (b != b) return a;
+  if (a == b) return bits_of(a) > bits_of(b) ? a : b;  // equal: only +-0 differ, the sign bit set wins
+  return a < b ? a : b;
+}
+template <class T>
+TRACER_HD T ptx_max(T a, T b) {
+  if (a != a) return b;
+  if (b != b) return a;
+  if (a == b) return bits_of(a) < bits_of(b) ? a : b;
+  return a > b ? a : b;
+}
+TRACER_HD float min_of(float a, float b) { return ptx_min(a, b); }
+TRACER_HD float max_of(float a, float b) { return ptx_max(a, b); }
+TRACER_HD double min_of(double a, double b) { return ptx_min(a, b); }
+TRACER_HD double max_of(double a, double b) { return ptx_max(a, b); }
+#endif
 TRACER_HD float abs_of(float x) { return float_of_bits(bits_of(x) & 0x7fffffffu); }
 TRACER_HD double abs_of(double x) { return double_of_bits(bits_of(x) & 0x7fffffffffffffffull); }
 TRACER_HD float clamp_of(float x, float lo, float hi) { return min_of(max_of(x, lo), hi); }

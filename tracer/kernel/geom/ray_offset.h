@@ -9,6 +9,7 @@
 // re-derived from the primitive to a few ulps (surface.h), so 8 ulps suffice, and 256 ulps
 // at 1e5 from the origin would be 2 units (found by the translated-scene test).
 #pragma once
+#include "kernel/base/float_to_int.h"
 #include "kernel/base/vec3.h"
 
 namespace tracer {
@@ -16,7 +17,7 @@ namespace tracer {
 TRACER_HD float offset_component(float p, float n, float scale) {
   constexpr float kOrigin = 1.0f / 32.0f, kFloatScale = 1.0f / 65536.0f, kIntScale = 8.0f;
   if (abs_of(p) < kOrigin * scale) return p + kFloatScale * scale * n;
-  const int32_t of_i = static_cast<int32_t>(kIntScale * n);
+  const int32_t of_i = trunc_to_int32(kIntScale * n);
   const int32_t delta = p < 0.0f ? -of_i : of_i;
   return float_of_bits(static_cast<uint32_t>(static_cast<int32_t>(bits_of(p)) + delta));
 }

@@ -109,7 +109,11 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
         if (!(width > 0.0f)) return s;
         s.wi = frame_around(axis).to_world(sample_cone(width, u1, u2));
         float t = 0.0f;
-        if (!intersect_sphere(p.a, p.radius, {from, s.wi}, 0.0f, kInfinity, t)) return s;  // grazing: no sample
+        // A direction on the cone's rim grazes the sphere, and rounding can make the ray miss
+        // it (a discriminant just below 0): the point of closest approach is then the tangent
+        // point, within rounding of the surface. (u1, u2) = (0.99999923, 0.83403116) from
+        // (0.4, 1.2, 2) towards a sphere of radius 0.5 at the origin is such a direction.
+        if (!intersect_sphere(p.a, p.radius, {from, s.wi}, 0.0f, kInfinity, t)) t = dot(to_center, s.wi);
         point = from + s.wi * t;
       } else {
         point = p.a + direction_from(1.0f - 2.0f * u1, u2) * p.radius;  // uniform on the sphere

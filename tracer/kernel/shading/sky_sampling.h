@@ -6,6 +6,7 @@
 // uniform in its cell on the face (coordinates a, b in [-1, 1] at distance 1), whose solid-angle density is pmf / (4 /
 // n^2) * (1 + a^2 + b^2)^(3/2) (dA cos / r^2 = dA / r^3).
 #pragma once
+#include "kernel/base/float_to_int.h"
 #include "kernel/shading/light_sources.h"
 #include "kernel/shading/sampling.h"
 
@@ -31,8 +32,8 @@ TRACER_HD float sky_direction_pdf(const SceneView& scene, Vec3 dir) {
   if (n == 0) return 0.0f;
   float u, v;
   const uint32_t face = cube_face(dir, u, v);
-  const uint32_t cx = min_of(static_cast<uint32_t>(u * static_cast<float>(n)), n - 1u);
-  const uint32_t cy = min_of(static_cast<uint32_t>(v * static_cast<float>(n)), n - 1u);
+  const uint32_t cx = min_of(trunc_to_uint32(u * static_cast<float>(n)), n - 1u);
+  const uint32_t cy = min_of(trunc_to_uint32(v * static_cast<float>(n)), n - 1u);
   const uint32_t cell = (face * n + cy) * n + cx;
   const float pmf = scene.sky_cells[cell].pmf;
   const float a = 2.0f * u - 1.0f, b = 2.0f * v - 1.0f;

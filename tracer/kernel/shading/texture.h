@@ -3,6 +3,7 @@
 // CPU and CUDA read the same values. Texture space: u to the right, v up; texel (x, y) has
 // its centre at u = (x + 0.5) / width, v = 1 - (y + 0.5) / height (row 0 is the image's top).
 #pragma once
+#include "kernel/base/float_to_int.h"
 #include "kernel/base/platform.h"
 #include "kernel/base/vec3.h"
 
@@ -60,7 +61,7 @@ TRACER_HD Vec3 sample_texture(const Texture* textures, const float* texels, uint
   const float x = u * static_cast<float>(t.width) - 0.5f, y = (1.0f - v) * static_cast<float>(t.height) - 0.5f;
   const float x0 = floorf(x), y0 = floorf(y);
   const float fx = x - x0, fy = y - y0;
-  const int ix = static_cast<int>(x0), iy = static_cast<int>(y0);
+  const int ix = trunc_to_int32(x0), iy = trunc_to_int32(y0);
   const Vec3 t00 = texel_at(texels, t, ix, iy), t10 = texel_at(texels, t, ix + 1, iy);
   const Vec3 t01 = texel_at(texels, t, ix, iy + 1), t11 = texel_at(texels, t, ix + 1, iy + 1);
   const Vec3 top = t00 + (t10 - t00) * fx, bottom = t01 + (t11 - t01) * fx;

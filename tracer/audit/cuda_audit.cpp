@@ -1,0 +1,77 @@
+#include "audit/cuda_audit.h"
+
+#include <algorithm>
+#include <atomic>
+#include <filesystem>
+#include <set>
+#include <thread>
+
+#include "io/shell.h"
+#include "io/text_file.h"
+
+namespace fs = std::filesystem;
+
+namespace tracer {
+
+std::vector<std::string> find_cuda_sources(const std::string& root) {
+  std::vector<std::string> found;
+  const fs::path base(root);
+  for (auto it = fs::recursive_directory_iterator(base); it != fs::recursive_directory_iterator(); ++it) {
+    const fs::path& p = it->path();
+    if (it->is_directory()) {
+      if (p.filename().string().front() == '.' || fs::exists(p / "CMakeCache.txt")) it.disable_recursion_pending();
+      continue;
+    }
+    if (it->is_regular_file() && p.extension() == ".cu") found.push_back(fs::relative(p, base).string());
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+std::vector<std::string> source_coverage_problems(const std::vector<std::string>& found,
+                                                  const std::vector<std::string>& built) {
+  const std::set<std::string> f(found.begin(), found.end()), b(built.begin(), built.end());
+  std::vector<std::string> problems;
+  for (const std::string& s : b)
+    if (!f.count(s)) problems.push_back(s + ": the build compiles it but the audit's search did not find it");
+  for (const std::string& s : f)
+    if (!b.count(s)) problems.push_back(s + ": found in the tree but no CUDA target of the build compiles it");
+  return problems;
+}
+
+std::vector<CudaAuditModule> run_cuda_audit(const CudaAuditConfig& config, const std::vector<std::string>& sources) {
+  std::vector<CudaAuditModule> modules;
+  for (const std::string& source : sources)
+    for (const std::string& arch : config.architectures) {
+      CudaAuditModule m;
+      m.source = source;
+      m.architecture = arch;
+      std::string stem = source;
+      std::replace(stem.begin(), stem.end(), '/', '_');
+      m.ptx_path = (fs::path(config.ptx_dir) / (stem + ".compute_" + arch + ".ptx")).string();
+      modules.push_back(m);
+    }
+  std::atomic<size_t> next{0};
+  const auto work = [&] {
+    for (size_t i = next++; i < modules.size(); i = next++) {
+      CudaAuditModule& m = modules[i];
+      const fs::path root = fs::weakly_canonical(config.root);
+      const std::string command = shell_quote(config.nvcc) + " -ptx -lineinfo -arch=compute_" + m.architecture + " " +
+                                  config.flags + " -I" + shell_quote((root / "tracer").string()) + " -I" +
+                                  shell_quote((root / "cuda").string()) + " " +
+                                  shell_quote((root / m.source).string()) + " -o " + shell_quote(m.ptx_path) + " 2>&1";
+      std::string output;
+      if (run_capture(command, output) != 0) {
+        m.compile_error = command + "\n" + output;
+        continue;
+      }
+      m.audit = audit_ptx(read_text_file(m.ptx_path, "PTX"), root.string());
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int t = 0; t < std::max(1, config.jobs); ++t) threads.emplace_back(work);
+  for (std::thread& t : threads) t.join();
+  return modules;
+}
+
+}  // namespace tracer
