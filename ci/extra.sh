@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
 # CI's extra jobs after the README's test command (ci/test.sh): the second compiler (clang)
-# rendering every golden bit for bit; the sanitizer build running the unit, analytic, extremes
-# and determinism labels under ASan + UBSan with no recovery; the libFuzzer targets, 60 s each
-# (docs/fuzzing.md); the `slurm` label against a one-node cluster started by ci/slurm-up.sh and
-# stopped by ci/slurm-down.sh (docs/distributed.md), using the default build of ci/test.sh.
+# running the unit, analytic, extremes, determinism and golden labels (every golden bit for
+# bit); the sanitizer build running the unit, analytic, extremes and determinism labels under
+# ASan + UBSan with no recovery; the device-semantics build (the GPU's min/max rules in host
+# kernel code, docs/cuda.md) rendering every golden and running the GPU pack that the default
+# build writes; the libFuzzer targets, 60 s each (docs/fuzzing.md); the `slurm` label against
+# a one-node cluster started by ci/slurm-up.sh and stopped by ci/slurm-down.sh
+# (docs/distributed.md). device-semantics and slurm use the default build of ci/test.sh.
 # The presets build the CPU renderer only; the dependencies are those of ci/install-deps.sh.
-# Arguments pick jobs (default: clang asan fuzz slurm).
+# Arguments pick jobs (default: clang asan device-semantics fuzz slurm).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=("$@")
-[ ${#jobs[@]} -gt 0 ] || jobs=(clang asan fuzz slurm)
+[ ${#jobs[@]} -gt 0 ] || jobs=(clang asan device-semantics fuzz slurm)
 for job in "${jobs[@]}"; do
   started=$SECONDS
   if [ "$job" = slurm ]; then

@@ -273,6 +273,7 @@ PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
             audit.failures.push_back(site);
           }
           if (line.back() == ';') continue;  // a declaration on one line
+          audit.by_function[function];         // listed even when it holds no floating-point instruction
           state = line.back() == '{' ? State::Body : State::Header;
           depth = 1;
           continue;

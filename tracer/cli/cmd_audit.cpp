@@ -42,9 +42,13 @@ std::string demangled(const std::string& name) {
   std::unique_ptr<char, void (*)(void*)> d(abi::__cxa_demangle(name.c_str(), nullptr, nullptr, &status), std::free);
   if (status != 0 || !d) return name;
   std::string s = d.get();
-  for (const std::string noise : {"tracer::", "(anonymous namespace)::"})
+  for (const std::string noise : {"tracer::", "(anonymous namespace)::", "void "})
     for (size_t at; (at = s.find(noise)) != std::string::npos;) s.erase(at, noise.size());
-  return s.substr(0, s.find('('));
+  s = s.substr(0, s.find_first_of("(<"));
+  // A library's kernel (thrust's sort is CUB's): the library and the kernel's own name.
+  const size_t last = s.rfind("::");
+  if (s.rfind("cub::", 0) == 0 || s.rfind("thrust::", 0) == 0) s = s.substr(0, s.find("::")) + " " + s.substr(last + 2);
+  return s;
 }
 
 const char* class_name(PtxClass c) {
