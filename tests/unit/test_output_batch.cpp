@@ -90,5 +90,40 @@ TEST_F(OutputBatchTest, SigtermBeforeCommitRemovesTheTemporaries) {
   EXPECT_EQ(entries(dir_), 2u);
 }
 
+// The temporary's name was .STEM.tmpPID.EXT, opened with O_TRUNC: anyone who could write to
+// the directory could plant a symlink there and have the next render overwrite its target.
+TEST_F(OutputBatchTest, ASymlinkPlantedAtTheOldTemporaryNameIsNeverFollowed) {
+  const fs::path victim = dir_ / "victim.txt";
+  std::ofstream(victim) << "precious";
+  fs::create_symlink(victim, dir_ / (".out.tmp" + std::to_string(::getpid()) + ".txt"));
+  write_file_atomically(path("out.txt"), "new out");
+  EXPECT_EQ(read(victim), "precious");
+  EXPECT_EQ(read(dir_ / "out.txt"), "new out");
+  EXPECT_EQ(entries(dir_), 5u);  // a, b, victim, the planted link, out
+}
+
+// A 255-byte name is legal; the old temporary's name (the stem plus ".tmpPID") was not.
+TEST_F(OutputBatchTest, AnOutputNameOfTheLongestLegalLengthIsWritten) {
+  const std::string name = std::string(251, 'n') + ".txt";
+  write_file_atomically((dir_ / name).string(), "long");
+  EXPECT_EQ(read(dir_ / name), "long");
+  EXPECT_EQ(entries(dir_), 3u);
+}
+
+TEST_F(OutputBatchTest, TemporariesHaveUnpredictableNamesAndAreNewFiles) {
+  OutputBatch first, second;
+  first.add(path("a.txt"), "first");
+  second.add(path("a.txt"), "second");  // two batches on one target: two distinct temporaries
+  std::vector<std::string> temporaries;
+  for (const auto& e : fs::directory_iterator(dir_))
+    if (e.path().filename().string().rfind(".tracer-", 0) == 0) temporaries.push_back(e.path().filename().string());
+  ASSERT_EQ(temporaries.size(), 2u);
+  EXPECT_NE(temporaries[0], temporaries[1]);
+  second.commit();
+  first.commit();
+  EXPECT_EQ(read(dir_ / "a.txt"), "first");
+  EXPECT_EQ(entries(dir_), 2u);
+}
+
 }  // namespace
 }  // namespace tracer

@@ -14,6 +14,7 @@
 #include "cli/commands.h"
 #include "golden/golden_manifest.h"
 #include "io/input_error.h"
+#include "io/new_directory.h"
 #include "io/output_batch.h"
 #include "options/enum_names.h"
 #include "parity/parallel_for.h"
@@ -126,8 +127,7 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
       add("resolution", std::to_string(size[0]) + "x" + std::to_string(size[1]) + "-" + s.label, cornell, size[0],
           size[1], s, kEffectAll);
 
-  const fs::path temp = fs::temp_directory_path() / ("tracer-gpu-pack-mesh-" + std::to_string(::getpid()));
-  fs::create_directories(temp);
+  const fs::path temp = make_new_directory(fs::temp_directory_path(), "tracer-gpu-pack-mesh-");
   try {
     const std::vector<MeshTriangle> mesh = generate_mesh("sphere", 100000);
     write_obj(mesh, (temp / "sphere-100k.obj").string());
@@ -214,8 +214,8 @@ static int run_gpu_pack(const GpuPackCommand& cmd) {
   if (!fs::is_regular_file(runner))
     throw InputError(runner + ": no tracer-gpu runner there (build it: cmake --build build --target tracer-gpu)");
 
-  const fs::path temp = parent / (dir.filename().string() + ".partial-" + std::to_string(::getpid()));
-  fs::remove_all(temp);
+  // The pack is staged in a directory of its own making, renamed into place when complete.
+  const fs::path temp = make_new_directory(parent, dir.filename().string() + ".partial-");
   try {
     write_pack(cmd, runner, temp);
     fs::rename(temp, dir);

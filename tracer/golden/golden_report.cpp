@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <sstream>
 
-#include "io/shell.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
 #include "io/json_reader.h"
 #include "io/output_batch.h"
+#include "io/shell.h"
 #include "io/text_file.h"
 
 namespace fs = std::filesystem;
@@ -154,9 +154,24 @@ std::string update_command(const GoldenManifest& manifest, const std::string& na
          shell_quote(ec ? "tracer" : binary.string()) + " golden update --filter " + shell_quote("^" + name + "$");
 }
 
+namespace {
+
+// The file that marks a directory as a golden report this tracer made: --reset removes only a
+// directory holding it, so a mistyped --report can never delete the user's files.
+constexpr const char* kReportMarker = ".tracer-golden-report";
+
+void make_report_dir(const fs::path& dir) {
+  fs::create_directories(dir / "rows");
+  write_file_atomically((dir / kReportMarker).string(), "a golden report written by tracer (docs/golden.md)\n");
+}
+
+}  // namespace
+
 void write_report_row(const std::string& report_dir, const GoldenManifest& manifest, const GoldenEntry& entry,
                       const GoldenRender* render, const GoldenOutcome& outcome) {
   const fs::path dir(report_dir);
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(dir, ec))) make_report_dir(dir);
   fs::create_directories(dir / "rows");
   Json row;
   row["name"] = entry.name;
@@ -201,10 +216,20 @@ void write_report_row(const std::string& report_dir, const GoldenManifest& manif
 }
 
 void reset_report(const std::string& report_dir) {
+  const fs::path dir(report_dir);
   std::error_code ec;
-  fs::remove_all(report_dir, ec);
+  const fs::file_status status = fs::symlink_status(dir, ec);
+  if (!fs::exists(status)) return make_report_dir(dir);
+  const std::string refusal = report_dir + ": not removed: ";
+  if (fs::is_symlink(status)) throw InputError(refusal + "a symbolic link, not a report directory this tracer made");
+  if (!fs::is_directory(status)) throw InputError(refusal + "not a directory");
+  if (fs::is_empty(dir, ec)) return make_report_dir(dir);
+  if (!fs::is_regular_file(fs::symlink_status(dir / kReportMarker, ec)))
+    throw InputError(refusal + "it holds files but no " + kReportMarker +
+                     ", so it is not a golden report this tracer made (remove it yourself or name another --report)");
+  fs::remove_all(dir, ec);
   if (ec) throw InputError(report_dir + ": cannot clear the golden report: " + ec.message());
-  fs::create_directories(fs::path(report_dir) / "rows");
+  make_report_dir(dir);
 }
 
 ReportCounts assemble_report(const std::string& report_dir) {

@@ -19,7 +19,9 @@ struct ReportCounts {
 void write_report_row(const std::string& report_dir, const GoldenManifest& manifest, const GoldenEntry& entry,
                       const GoldenRender* render, const GoldenOutcome& outcome);
 
-// Removes every row and image, so a run's report shows only that run's goldens.
+// Removes every row and image, so a run's report shows only that run's goldens: only from a
+// directory this tracer made (it holds the marker file); a missing or empty one is made one.
+// InputError, touching nothing, for any other directory, a symbolic link or a file.
 void reset_report(const std::string& report_dir);
 
 // Writes REPORT/index.html from the rows present and returns their counts.

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <mutex>
+#include <random>
 
 #include "io/input_error.h"
 
@@ -60,11 +61,26 @@ void untrack(const std::string& temp) {
     if (pending_used[i].load() && temp == pending_paths[i]) pending_used[i].store(false);
 }
 
-std::string temporary_for(const std::string& target) {
-  const std::filesystem::path path(target);
-  return (path.parent_path() /
-          ("." + path.stem().string() + ".tmp" + std::to_string(::getpid()) + path.extension().string()))
-      .string();
+// A new temporary beside target, created exclusively (O_CREAT | O_EXCL, which also refuses a
+// symlink planted at the name) under a random name of fixed length, so that nobody can guess
+// it in advance and a target name of the longest legal length still has one. Returns the fd.
+int create_temporary_for(const std::string& target, std::string& temp) {
+  static const char kAlphabet[] = "abcdefghijklmnopqrstuvwxyz0123456789";
+  static std::mutex lock;
+  static std::random_device device;
+  const std::filesystem::path parent = std::filesystem::path(target).parent_path();
+  for (int attempt = 0; attempt < 64; ++attempt) {
+    std::string name = ".tracer-";
+    {
+      const std::lock_guard<std::mutex> hold(lock);
+      for (int i = 0; i < 16; ++i) name += kAlphabet[device() % (sizeof kAlphabet - 1)];
+    }
+    temp = (parent / (name + ".tmp")).string();
+    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (fd >= 0 || errno != EEXIST) return fd;
+  }
+  errno = EEXIST;
+  return -1;
 }
 
 }  // namespace
@@ -81,11 +97,11 @@ void OutputBatch::add(const std::string& target, const std::string& bytes) {
     if (earlier == target) throw InputError(target + ": named twice as an output");
   std::error_code ec;  // a directory would fail only at the rename, after other outputs landed
   if (std::filesystem::is_directory(target, ec)) throw InputError(target + ": cannot write: it is a directory");
-  const std::string temp = temporary_for(target);
+  std::string temp;
+  const int fd = create_temporary_for(target, temp);
+  if (fd < 0) throw InputError(target + ": cannot write: " + errno_text());
   track(temp);
   files_.emplace_back(temp, target);  // from here the destructor removes it
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw InputError(target + ": cannot write: " + errno_text());
   std::string failure;
   for (size_t done = 0; failure.empty() && done < bytes.size();) {
     const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);

@@ -1,5 +1,6 @@
 // The outputs of one command, written all or nothing. Each file is written to a temporary
-// beside its target (same directory and extension), flushed to disk and closed; only when
+// beside its target (same directory, a random name created exclusively, never through a
+// symlink), flushed to disk and closed; only when
 // every file of the batch got that far are they renamed over their targets. An error, or
 // SIGINT, SIGTERM or SIGHUP while a batch is open, removes the temporaries, so a failed or
 // interrupted command leaves every earlier file exactly as it was and no temporary behind.
