@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -231,6 +232,48 @@ TEST_F(HostileInput, PartialFilesAreNotTrusted) {
   const size_t sha_at = huge.find("\"pixels_sha1\":\"") + 15;
   huge.replace(sha_at, 40, h.hex_digest());
   merge_refuses(huge, "beyond 2^62");
+}
+
+// An EXR whose header declares 100000 x 100000 pixels (a real 2 x 2 render with its data and
+// display windows and line-offset table rewritten): every command that reads images allocated
+// its pixels first (120 GB) and stopped with OpenImageIO's raw allocation error, or was killed
+// where the allocation succeeded. The header is now checked against the film's limit first.
+TEST_F(HostileInput, AnImageHeaderIsCheckedBeforeItsPixelsAreAllocated) {
+  write(dir_ / "s.json", scene_text(R"("spp": 1)"));
+  std::string output;
+  ASSERT_EQ(test::run_tracer("render " + (dir_ / "s.json").string() + " --quiet --width 2 --height 2 -o " +
+                                 (dir_ / "small.exr").string(),
+                             &output),
+            0)
+      << output;
+  std::string exr = read(dir_ / "small.exr");
+  constexpr int32_t kSide = 100000;
+  for (const std::string name : {std::string("dataWindow\0box2i\0", 17), std::string("displayWindow\0box2i\0", 20)}) {
+    const size_t at = exr.find(name);
+    ASSERT_NE(at, std::string::npos);
+    const int32_t box[4] = {0, 0, kSide - 1, kSide - 1};
+    exr.replace(at + name.size() + 4, 16, reinterpret_cast<const char*>(box), 16);
+  }
+  size_t end = 8;  // attributes: name\0 type\0 size value, up to an empty name
+  while (exr[end] != '\0') {
+    const size_t type_end = exr.find('\0', exr.find('\0', end) + 1);
+    int32_t size;
+    std::memcpy(&size, exr.data() + type_end + 1, 4);
+    end = type_end + 5 + size;
+  }
+  ++end;
+  const uint64_t chunks = (kSide + 15) / 16, first = end + 8 * chunks;  // 16 lines a chunk (zip)
+  std::string table;
+  for (uint64_t i = 0; i < chunks; ++i) table.append(reinterpret_cast<const char*>(&first), 8);
+  exr = exr.substr(0, end) + table + exr.substr(end + 8);
+  write(dir_ / "huge.exr", exr);
+  for (const std::string& args : {"compare " + (dir_ / "huge.exr").string() + " " + (dir_ / "small.exr").string(),
+                                  "compare " + (dir_ / "small.exr").string() + " " + (dir_ / "huge.exr").string()}) {
+    EXPECT_EQ(run_limited(args, output), 2) << output;
+    EXPECT_NE(output.find("huge.exr: cannot read image: its header declares 100000x100000 pixels"), std::string::npos)
+        << output;
+    EXPECT_EQ(output.find("OIIO"), std::string::npos) << "a library message reached the user raw: " << output;
+  }
 }
 
 }  // namespace

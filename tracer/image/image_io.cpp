@@ -72,16 +72,27 @@ void write_image(const Image& image, const std::string& path) {
   batch.commit();
 }
 
+constexpr int kMaxImageSide = 16384;   // the film's limit (docs/scene-format.md)
+constexpr int kMaxImageChannels = 64;  // RGB, alpha and a few AOVs; a header asking for more is refused
+
 Image read_image(const std::string& path) {
   // A FIFO or a device would block OpenImageIO or never end.
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": cannot read image: no such file");
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": cannot read image: not a regular file");
   OIIO::ImageBuf buf(path);
+  // The header is input too: its size is checked before any pixel is allocated.
+  if (!buf.init_spec(path, 0, 0)) throw InputError(path + ": cannot read image: " + buf.geterror());
+  const OIIO::ImageSpec& header = buf.spec();
+  if (header.width < 1 || header.height < 1 || header.width > kMaxImageSide || header.height > kMaxImageSide)
+    throw InputError(path + ": cannot read image: its header declares " + std::to_string(header.width) + "x" +
+                     std::to_string(header.height) + " pixels; images are 1 to " + std::to_string(kMaxImageSide) +
+                     " pixels on a side, as the film");
+  if (header.nchannels < 3 || header.nchannels > kMaxImageChannels)
+    throw InputError(path + ": cannot read image: expected 3 to " + std::to_string(kMaxImageChannels) +
+                     " channels, got " + std::to_string(header.nchannels));
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) throw InputError(path + ": cannot read image: " + buf.geterror());
   const OIIO::ImageSpec& spec = buf.spec();
-  if (spec.nchannels < 3)
-    throw InputError(path + ": expected at least 3 channels, got " + std::to_string(spec.nchannels));
   Image image;
   image.width = static_cast<uint32_t>(spec.width);
   image.height = static_cast<uint32_t>(spec.height);
