@@ -234,6 +234,17 @@ TEST_F(HostileInput, PartialFilesAreNotTrusted) {
   merge_refuses(huge, "beyond 2^62");
 }
 
+// nlohmann's parser keeps the last of two equal keys, so `"width": 2, ..., "width": 4` rendered
+// at 4 without a word. Any JSON the tracer reads goes through the one reader, which refuses it.
+TEST_F(HostileInput, ADuplicateKeyIsRefusedNamingIt) {
+  std::string text = scene_text(R"("spp": 1)");
+  text.replace(text.find(R"("height": 6)"), 11, R"("height": 6, "width": 4)");
+  expect_refused("render " + scene_file(text) + out(), "s.json: key film.width appears twice in one object");
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+  text = scene_text(R"("spp": 1, "seed": 3, "spp": 2)");
+  expect_refused("render " + scene_file(text) + out(), "key render.spp appears twice");
+}
+
 // An EXR whose header declares 100000 x 100000 pixels (a real 2 x 2 render with its data and
 // display windows and line-offset table rewritten): every command that reads images allocated
 // its pixels first (120 GB) and stopped with OpenImageIO's raw allocation error, or was killed

@@ -1,6 +1,8 @@
 #include "io/json_reader.h"
 
 #include <cmath>
+#include <set>
+#include <vector>
 
 namespace tracer {
 
@@ -16,13 +18,30 @@ std::string shown_key(const std::string& key) { return key.size() > 60 ? key.sub
 }  // namespace
 
 Json parse_json_text(const std::string& text, const std::string& file) {
-  const Json::parser_callback_t limit_depth = [&file](int depth, Json::parse_event_t, Json&) {
+  // Per open object, the keys seen so far and the last one (for the path in a message).
+  struct OpenObject {
+    std::set<std::string> keys;
+    std::string last;
+  };
+  std::vector<OpenObject> objects;
+  const Json::parser_callback_t check = [&](int depth, Json::parse_event_t event, Json& parsed) {
     if (depth > kMaxJsonDepth)
       throw InputError(file + ": JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    if (event == Json::parse_event_t::object_start) objects.emplace_back();
+    if (event == Json::parse_event_t::object_end && !objects.empty()) objects.pop_back();
+    if (event == Json::parse_event_t::key && !objects.empty()) {
+      const std::string key = parsed.get<std::string>();
+      if (!objects.back().keys.insert(key).second) {
+        std::string path;
+        for (size_t i = 0; i + 1 < objects.size(); ++i) path += objects[i].last + ".";
+        throw InputError(file + ": key " + shown_key(path + key) + " appears twice in one object");
+      }
+      objects.back().last = key;
+    }
     return true;
   };
   try {
-    return Json::parse(text, limit_depth);
+    return Json::parse(text, check);
   } catch (const Json::parse_error& e) {
     // nlohmann reports a byte offset; turn it into line:column.
     size_t line = 1, column = 1;
