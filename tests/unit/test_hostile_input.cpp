@@ -259,7 +259,7 @@ TEST_F(HostileInput, AnImageHeaderIsCheckedBeforeItsPixelsAreAllocated) {
       << output;
   std::string exr = read(dir_ / "small.exr");
   constexpr int32_t kSide = 100000;
-  for (const std::string name : {std::string("dataWindow\0box2i\0", 17), std::string("displayWindow\0box2i\0", 20)}) {
+  for (const std::string& name : {std::string("dataWindow\0box2i\0", 17), std::string("displayWindow\0box2i\0", 20)}) {
     const size_t at = exr.find(name);
     ASSERT_NE(at, std::string::npos);
     const int32_t box[4] = {0, 0, kSide - 1, kSide - 1};
