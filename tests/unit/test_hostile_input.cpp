@@ -245,6 +245,18 @@ TEST_F(HostileInput, ADuplicateKeyIsRefusedNamingIt) {
   expect_refused("render " + scene_file(text) + out(), "key render.spp appears twice");
 }
 
+// A manifest's scene path could climb out of the source root ("../x.json", "a/../../x.json").
+TEST_F(HostileInput, AManifestPathMayNotLeaveItsRoot) {
+  fs::create_directories(dir_ / "root" / "golden");
+  for (const std::string scene : {"../outside.json", "scenes/../../outside.json"}) {
+    write(dir_ / "root" / "golden" / "manifest.json",
+          R"({"format": "tracer-golden/1", "goldens": {"a": {"scene": ")" + scene +
+              R"(", "options": {}, "hash": "sha1:0", "compare": "exact"}}})");
+    expect_refused("golden list --root " + (dir_ / "root").string(), "goldens.a.scene");
+    expect_refused("golden list --root " + (dir_ / "root").string(), "leaves the source root");
+  }
+}
+
 // An EXR whose header declares 100000 x 100000 pixels (a real 2 x 2 render with its data and
 // display windows and line-offset table rewritten): every command that reads images allocated
 // its pixels first (120 GB) and stopped with OpenImageIO's raw allocation error, or was killed

@@ -51,6 +51,9 @@ GoldenEntry read_entry(const std::string& name, const Json& value, const std::st
   e.scene = obj.string("scene");
   if (e.scene.empty() || std::filesystem::path(e.scene).is_absolute())
     obj.fail("scene", "expected a path relative to the source root, got \"" + e.scene + "\"");
+  const std::filesystem::path normal = std::filesystem::path(e.scene).lexically_normal();
+  if (normal.empty() || *normal.begin() == "..")
+    obj.fail("scene", "\"" + e.scene + "\" leaves the source root; a golden's scene lies inside it");
   const Json empty = Json::object();
   const Json* options = obj.find("options");
   e.options = read_entry_options(options ? *options : empty, obj.child("options"), file);
