@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "bundle/sha1.h"
+#include "image/image_io.h"
 #include "test_util.h"
 
 namespace tracer {
@@ -133,10 +134,10 @@ TEST_F(HostileInput, OutputsNeverOverwriteInputs) {
   const std::string scene = scene_file(scene_text(""));
   const std::string before = read(scene);
   expect_refused("render " + scene + " --quiet --stats " + scene + " -o " + (dir_ / "out.png").string(),
-                 "names a file this render reads");
+                 "names a file this command reads");
   expect_refused(
       "render " + scene + " --quiet --stats " + (dir_ / "out.png").string() + " -o " + (dir_ / "out.png").string(),
-      "--stats names the output image");
+      "--stats names the same file as -o");
   fs::create_directories(dir_ / "stats-dir");
   write(dir_ / "out.png", "earlier image");
   expect_refused(
@@ -151,7 +152,7 @@ TEST_F(HostileInput, OutputsNeverOverwriteInputs) {
   text.replace(text.find(R"("materials": {)"), 14,
                R"("materials": {"t": {"type": "lambert", "albedo": {"texture": "tex.png"}}, )");
   expect_refused("render " + scene_file(text) + " --quiet -o " + (dir_ / "tex.png").string(),
-                 "names a file this render reads");
+                 "names a file this command reads");
   EXPECT_EQ(read(dir_ / "tex.png"), tex_before);
 }
 
@@ -232,6 +233,33 @@ TEST_F(HostileInput, PartialFilesAreNotTrusted) {
   const size_t sha_at = huge.find("\"pixels_sha1\":\"") + 15;
   huge.replace(sha_at, 40, h.hex_digest());
   merge_refuses(huge, "beyond 2^62");
+}
+
+// compare --diff and bench converge --csv/--plot had no check: naming an input (directly,
+// through ./ or .., or through a symlink) replaced it with the difference image or the table.
+TEST_F(HostileInput, EveryCommandsOutputsNeverNameItsInputs) {
+  const Image img = test::image_from(2, 2, [](uint32_t x, uint32_t) { return Vec3{float(x), 0.5f, 0.25f}; });
+  write_image(img, (dir_ / "a.exr").string());
+  write_image(img, (dir_ / "b.exr").string());
+  const std::string a_before = read(dir_ / "a.exr");
+  fs::create_directories(dir_ / "sub");
+  fs::create_symlink(dir_ / "a.exr", dir_ / "link.exr");
+  const std::string compare = "compare " + (dir_ / "a.exr").string() + " " + (dir_ / "b.exr").string() + " --diff ";
+  for (const std::string diff : {(dir_ / "a.exr").string(), (dir_ / "sub" / ".." / "b.exr").string(),
+                                 (dir_ / "link.exr").string(), dir_.string() + "/./a.exr"})
+    expect_refused(compare + diff, "--diff names a file this command reads");
+  EXPECT_EQ(read(dir_ / "a.exr"), a_before);
+  expect_refused(compare + (dir_ / "d.nosuchformat").string(), "--diff: no image writer");
+
+  const std::string scene = scene_file(scene_text(R"("integrator": "path", "spp": 1)"));
+  const std::string scene_before = read(scene);
+  expect_refused("bench converge " + scene + " --spp 1 --ref-spp 1 --csv " + scene,
+                 "--csv names a file this command reads");
+  expect_refused("bench converge " + scene + " --spp 1 --ref-spp 1 --ref " + (dir_ / "a.exr").string() + " --plot " +
+                     (dir_ / "link.exr").string(),
+                 "--plot names a file this command reads");
+  EXPECT_EQ(read(scene), scene_before);
+  EXPECT_EQ(read(dir_ / "a.exr"), a_before);
 }
 
 // nlohmann's parser keeps the last of two equal keys, so `"width": 2, ..., "width": 4` rendered

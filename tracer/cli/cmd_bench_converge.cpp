@@ -10,7 +10,9 @@
 #include "bench/loglog_plot.h"
 #include "cli/command_registry.h"
 #include "cli/commands.h"
+#include "image/image_io.h"
 #include "io/input_error.h"
+#include "io/output_paths.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
@@ -64,6 +66,13 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
   uint32_t max_spp = 0;
   for (uint32_t s : spps) max_spp = std::max(max_spp, s);
   const Scene probe = load_scene(cmd.scene, base);
+  check_image_output(plot, "--plot");
+  std::vector<std::string> inputs(probe.report.input_files.begin(), probe.report.input_files.end());
+  inputs.push_back(cmd.scene);
+  inputs.push_back(cmd.ref);
+  refuse_outputs_naming_inputs(
+      {{csv, "--csv"}, {plot, "--plot"}, {cmd.ref.empty() ? stem + "-converge-ref.exr" : "", "the reference cache"}},
+      inputs);
   if (probe.settings.sampler == SamplerKind::Center && max_spp > 1)
     base.sampler = SamplerKind::Stochastic;  // the center sampler takes one sample only
   std::printf("tracer bench converge %s: %ux%u, %s\n", cmd.scene.c_str(), probe.settings.width, probe.settings.height,

@@ -10,6 +10,7 @@
 #include "cli/commands.h"
 #include "io/input_error.h"
 #include "io/output_batch.h"
+#include "io/output_paths.h"
 #include "io/text_file.h"
 #include "render/partial_file.h"
 #include "scene/scene_loader.h"
@@ -21,10 +22,11 @@ static int run_bundle(const RenderCommand& cmd) {
   if (out.extension() != ".bundle") throw InputError(cmd.output + ": name the bundle NAME.bundle");
   const std::filesystem::path dir = out.parent_path().empty() ? "." : out.parent_path();
   if (!std::filesystem::is_directory(dir)) throw InputError(cmd.output + ": output directory does not exist");
-  if (std::filesystem::exists(out) && std::filesystem::equivalent(out, cmd.scene))
-    throw InputError(cmd.output + ": is the scene file itself");
   const std::string text = read_text_file(cmd.scene, "scene file");
   const Scene scene = load_scene_text(text, cmd.scene, scene_overrides(cmd));
+  std::vector<std::string> inputs(scene.report.input_files.begin(), scene.report.input_files.end());
+  inputs.push_back(cmd.scene);
+  refuse_outputs_naming_inputs({{cmd.output, "-o"}}, inputs);
   const uint32_t spp = scene.settings.spp;
   const SampleRange range = cmd.samples.empty() ? SampleRange{0, spp} : parse_sample_range(cmd.samples, spp);
   const SceneBundle bundle = make_scene_bundle(scene, scene.view(), range, cmd.scene);

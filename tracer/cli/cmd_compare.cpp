@@ -5,6 +5,7 @@
 #include "cli/command_registry.h"
 #include "image/compare.h"
 #include "image/image_io.h"
+#include "io/output_paths.h"
 
 namespace tracer {
 namespace {
@@ -15,6 +16,10 @@ struct CompareCommand {
 };
 
 static int run_compare(const CompareCommand& cmd) {
+  if (!cmd.diff.empty()) {
+    check_image_output(cmd.diff, "--diff");
+    refuse_outputs_naming_inputs({{cmd.diff, "--diff"}}, {cmd.a, cmd.b});
+  }
   const Image a = read_image(cmd.a), b = read_image(cmd.b);
   const CompareResult r = compare_images(a, b, cmd.options);
   if (!cmd.diff.empty() && r.same_size) write_image(difference_image(a, b), cmd.diff);

@@ -13,6 +13,7 @@
 #include "image/image_io.h"
 #include "io/input_error.h"
 #include "io/output_batch.h"
+#include "io/output_paths.h"
 #include "io/text_file.h"
 #include "options/render_options.h"
 #include "render/partial_file.h"
@@ -37,29 +38,16 @@ void check_output_path(const std::string& path, bool partial) {
     if (p.extension() != ".partial") throw InputError(path + ": --samples writes a partial file; name it NAME.partial");
     return;
   }
-  if (p.extension().empty()) throw InputError(path + ": output needs a file extension (.exr, .png, ...)");
   if (p.extension() == ".partial")
     throw InputError(path + ": a .partial file holds a sample range; give --samples A:B");
-  if (!OIIO::ImageOutput::create(path))
-    throw InputError(path + ": no image writer for extension " + p.extension().string());
+  check_image_output(path, "-o");
 }
 
 // The output and the stats file may name no file the render reads, nor each other.
 void refuse_overwriting_inputs(const Scene& scene, const std::string& output, const std::string& stats) {
-  std::error_code ec;
-  const auto same = [&](const std::string& a, const std::string& b) {
-    return std::filesystem::exists(a, ec) && std::filesystem::exists(b, ec) && std::filesystem::equivalent(a, b, ec);
-  };
   std::vector<std::string> inputs(scene.report.input_files.begin(), scene.report.input_files.end());
   inputs.push_back(scene.file);
-  for (const auto& [path, option] : {std::pair{output, "-o"}, std::pair{stats, "--stats"}}) {
-    if (path.empty()) continue;
-    for (const std::string& input : inputs)
-      if (same(path, input) || std::filesystem::absolute(path) == std::filesystem::absolute(input))
-        throw InputError(path + ": " + option + " names a file this render reads (" + input + "); choose another name");
-  }
-  if (!stats.empty() && std::filesystem::absolute(stats) == std::filesystem::absolute(output))
-    throw InputError(stats + ": --stats names the output image; choose another name");
+  refuse_outputs_naming_inputs({{output, "-o"}, {stats, "--stats"}}, inputs);
 }
 
 // What makes two partial files parts of one render: every option its identity records.

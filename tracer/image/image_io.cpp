@@ -72,6 +72,19 @@ void write_image(const Image& image, const std::string& path) {
   batch.commit();
 }
 
+void check_image_output(const std::string& path, const std::string& option) {
+  const std::filesystem::path p(path);
+  const std::filesystem::path dir = p.parent_path().empty() ? "." : p.parent_path();
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec))
+    throw InputError(path + ": " + option + ": output directory does not exist");
+  if (std::filesystem::is_directory(p, ec)) throw InputError(path + ": " + option + " names a directory");
+  if (p.extension().empty())
+    throw InputError(path + ": " + option + ": output needs a file extension (.exr, .png, ...)");
+  if (!OIIO::ImageOutput::create(path))
+    throw InputError(path + ": " + option + ": no image writer for extension " + p.extension().string());
+}
+
 constexpr int kMaxImageSide = 16384;   // the film's limit (docs/scene-format.md)
 constexpr int kMaxImageChannels = 64;  // RGB, alpha and a few AOVs; a header asking for more is refused
 
