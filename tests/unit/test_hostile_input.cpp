@@ -260,6 +260,20 @@ TEST_F(HostileInput, EveryCommandsOutputsNeverNameItsInputs) {
                  "--plot names a file this command reads");
   EXPECT_EQ(read(scene), scene_before);
   EXPECT_EQ(read(dir_ / "a.exr"), a_before);
+
+  // slurm submit: the merge job writes -o at the end, on the cluster; it is checked before
+  // anything is submitted or written (no job directory appears).
+  const std::string submit = "slurm submit " + scene + " --parts 1 --dir " + (dir_ / "job").string() + " -o ";
+  expect_refused(submit + (dir_ / "out.nosuchformat").string(), "-o: no image writer");
+  write_image(img, (dir_ / "tex.png").string());
+  std::string text =
+      scene_text(R"("spp": 1)", R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "t"})");
+  text.replace(text.find(R"("materials": {)"), 14,
+               R"("materials": {"t": {"type": "lambert", "albedo": {"texture": "tex.png"}}, )");
+  expect_refused("slurm submit " + scene_file(text) + " --parts 1 --dir " + (dir_ / "job").string() + " -o " +
+                     (dir_ / "sub" / ".." / "tex.png").string(),
+                 "-o names a file this command reads");
+  EXPECT_FALSE(fs::exists(dir_ / "job"));
 }
 
 // nlohmann's parser keeps the last of two equal keys, so `"width": 2, ..., "width": 4` rendered

@@ -13,7 +13,9 @@
 #include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "cluster/slurm_client.h"
+#include "image/image_io.h"
 #include "io/input_error.h"
+#include "io/output_paths.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
@@ -102,6 +104,11 @@ int run_submit(const SlurmSubmitCommand& cmd) {
   job.output = fs::absolute(cmd.render.output).lexically_normal().string();
   if (!fs::is_directory(fs::path(job.output).parent_path()))
     throw InputError(cmd.render.output + ": output directory does not exist");
+  // The merge job writes the image at the end, on the cluster: its name is checked here.
+  check_image_output(cmd.render.output, "-o");
+  std::vector<std::string> inputs(scene.report.input_files.begin(), scene.report.input_files.end());
+  inputs.push_back(cmd.render.scene);
+  refuse_outputs_naming_inputs({{cmd.render.output, "-o"}}, inputs);
   job.spp = scene.settings.spp;
   job.ranges = balanced_ranges(job.spp, cmd.parts);
   job.sbatch_args = cmd.sbatch_args;
