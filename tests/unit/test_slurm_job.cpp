@@ -66,5 +66,35 @@ TEST(SlurmJob, ScriptsAndRecordRoundTrip) {
   fs::remove_all(dir);
 }
 
+// A scheduler stand-in on PATH: `sbatch` that fails (as a bad --partition would) and then one
+// that accepts, printing a job id. A failed submit left its job directory (scripts, logs)
+// behind, so the corrected command was refused: "the job directory must be new or empty".
+TEST(SlurmJob, AFailedSubmitLeavesNothingBehind) {
+  const fs::path dir = test::temp_dir("slurm-submit");
+  fs::create_directories(dir / "bin");
+  const auto stand_in = [&](const std::string& body) {
+    std::ofstream(dir / "bin" / "sbatch") << "#!/bin/sh\n" << body << "\n";
+    fs::permissions(dir / "bin" / "sbatch", fs::perms::owner_all);
+  };
+  std::ofstream(dir / "s.json")
+      << R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
+           "film": {"width": 4, "height": 4}, "render": {"spp": 2}, "materials": {}, "shapes": []})";
+  const std::string submit = "PATH=" + (dir / "bin").string() + ":$PATH " + TRACER_BINARY + " slurm submit " +
+                             (dir / "s.json").string() + " --parts 2 --dir " + (dir / "job").string() + " -o " +
+                             (dir / "out.exr").string();
+  stand_in("echo 'sbatch: error: invalid partition specified: nosuch' >&2; exit 1");
+  std::string out;
+  EXPECT_EQ(test::run_command(submit, &out), 2) << out;
+  EXPECT_NE(out.find("invalid partition"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(dir / "job")) << "a failed submit left its job directory";
+  fs::create_directories(dir / "job");  // an empty directory given as --dir stays, emptied
+  EXPECT_EQ(test::run_command(submit, &out), 2) << out;
+  EXPECT_TRUE(fs::is_directory(dir / "job") && fs::is_empty(dir / "job"));
+  stand_in("echo 4242");
+  EXPECT_EQ(test::run_command(submit, &out), 0) << out;
+  EXPECT_TRUE(fs::exists(dir / "job" / "job.json")) << out;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace tracer

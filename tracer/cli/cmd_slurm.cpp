@@ -116,10 +116,24 @@ int run_submit(const SlurmSubmitCommand& cmd) {
   std::vector<std::string> render_args;
   for (const auto& [name, text] : cmd.render.options)
     if (text) render_args.insert(render_args.end(), {option_flag(name), *text});
+  const bool dir_existed = fs::exists(job.dir);  // then it was empty (write_job_scripts checks)
   write_job_scripts(job, this_executable(), render_args);
   std::vector<size_t> all(job.ranges.size());
   for (size_t i = 0; i < all.size(); ++i) all[i] = i;
-  submit(job, all);
+  try {
+    submit(job, all);
+  } catch (...) {
+    // A failed submission leaves nothing behind, so the corrected command works with the same
+    // --dir: what was queued is cancelled, and what this command wrote is removed.
+    for (const std::string& id : job.array_jobs) cancel_job(id);
+    std::error_code ec;
+    if (!dir_existed) {
+      fs::remove_all(job.dir, ec);
+    } else {
+      for (const auto& entry : fs::directory_iterator(job.dir, ec)) fs::remove_all(entry.path(), ec);
+    }
+    throw;
+  }
   if (!cmd.wait) {
     std::printf("follow it with: tracer slurm wait %s\n", job.dir.c_str());
     return 0;
