@@ -63,6 +63,9 @@ TEST_F(DestructiveCommands, ReportResetClearsAReportItMade) {
   EXPECT_TRUE(fs::is_regular_file(report / ".tracer-golden-report"));
   fs::create_directories(dir_ / "empty");  // an empty directory is adopted
   EXPECT_EQ(test::run_tracer("golden report --reset --report " + (dir_ / "empty").string()), 0);
+  // A report assembled where none was (the fixture's cleanup after a failed reset) is marked too.
+  ASSERT_EQ(test::run_tracer("golden report --report " + (dir_ / "assembled").string()), 0);
+  EXPECT_EQ(test::run_tracer("golden report --reset --report " + (dir_ / "assembled").string(), &out), 0) << out;
 }
 
 // gpu-pack used to remove_all(OUT.partial-PID) before staging there: a directory of that name

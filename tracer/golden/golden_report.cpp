@@ -165,13 +165,18 @@ void make_report_dir(const fs::path& dir) {
   write_file_atomically((dir / kReportMarker).string(), "a golden report written by tracer (docs/golden.md)\n");
 }
 
+// Every command that writes into a report directory it does not find makes it a marked one.
+void ensure_report_dir(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(dir, ec))) make_report_dir(dir);
+}
+
 }  // namespace
 
 void write_report_row(const std::string& report_dir, const GoldenManifest& manifest, const GoldenEntry& entry,
                       const GoldenRender* render, const GoldenOutcome& outcome) {
   const fs::path dir(report_dir);
-  std::error_code ec;
-  if (!fs::exists(fs::symlink_status(dir, ec))) make_report_dir(dir);
+  ensure_report_dir(dir);
   fs::create_directories(dir / "rows");
   Json row;
   row["name"] = entry.name;
@@ -264,7 +269,7 @@ ReportCounts assemble_report(const std::string& report_dir) {
        << (rows.empty() ? "<p>No golden was checked in this run.</p>\n" : "") << "<table class=\"report\"><tbody>\n"
        << body << "</tbody></table>\n"
        << kScript << "\n</body></html>\n";
-  fs::create_directories(dir);
+  ensure_report_dir(dir);
   write_file_atomically((dir / "index.html").string(), html.str());
   return counts;
 }
