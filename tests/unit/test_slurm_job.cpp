@@ -96,5 +96,47 @@ TEST(SlurmJob, AFailedSubmitLeavesNothingBehind) {
   fs::remove_all(dir);
 }
 
+// job.json is input too: `slurm wait` on a record with no array job crashed (it took the last
+// of none), and one with no ranges blamed "--parts 0". Each broken key is named.
+TEST(SlurmJob, EveryKeyOfTheRecordIsChecked) {
+  const fs::path dir = test::temp_dir("slurm-record");
+  SlurmJob job;
+  job.dir = dir.string();
+  job.scene = (dir / "s.json").string();
+  job.output = (dir / "out.exr").string();
+  job.spp = 8;
+  job.ranges = balanced_ranges(8, 2);
+  job.array_jobs = {"11"};
+  job.merge_job = "12";
+  write_job_record(job);
+  std::ifstream in(dir / "job.json");
+  const std::string good{std::istreambuf_iterator<char>(in), {}};
+  const std::vector<std::pair<std::string, std::string>> broken = {
+      {R"("array_jobs": [
+    "11"
+  ])",
+       R"("array_jobs": [])"},
+      {R"("array_jobs": [
+    "11"
+  ])",
+       R"("array_jobs": [""])"},
+      {R"("merge_job": "12")", R"("merge_job": "")"},
+      {R"("spp": 8)", R"("spp": 0)"},
+      {R"("ranges": [)", R"("ranges": [[0, 1], )"},
+  };
+  const std::vector<std::string> keys = {"array_jobs", "array_jobs", "merge_job", "spp", "ranges"};
+  for (size_t i = 0; i < broken.size(); ++i) {
+    std::string text = good;
+    const size_t at = text.find(broken[i].first);
+    ASSERT_NE(at, std::string::npos) << broken[i].first << " in\n" << good;
+    text.replace(at, broken[i].first.size(), broken[i].second);
+    std::ofstream(dir / "job.json") << text;
+    std::string out;
+    EXPECT_EQ(test::run_tracer("slurm wait " + dir.string() + " --retries 0", &out), 2) << text << out;
+    EXPECT_NE(out.find("job.json: " + keys[i]), std::string::npos) << keys[i] << ": " << out;
+  }
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace tracer

@@ -100,12 +100,29 @@ SlurmJob read_job_record(const std::string& dir) {
   job.spp = static_cast<uint32_t>(obj.unsigned_integer("spp"));
   job.cpus_per_task = static_cast<uint32_t>(obj.unsigned_integer("cpus_per_task"));
   job.merge_job = obj.string("merge_job");
-  job.ranges = balanced_ranges(job.spp, static_cast<uint32_t>(obj.get("ranges").size()));
-  for (const auto& [key, into] : {std::pair{"sbatch_args", &job.sbatch_args}, std::pair{"array_jobs", &job.array_jobs}})
-    for (const Json& v : obj.get(key)) {
+  if (job.spp == 0) obj.fail("spp", "expected at least 1");
+  if (job.merge_job.empty()) obj.fail("merge_job", "expected the merge job's id");
+  // The ranges are the balanced ones submit wrote, entry by entry.
+  const Json& ranges = obj.get("ranges");
+  if (!ranges.is_array() || ranges.empty() || ranges.size() > job.spp)
+    obj.fail("ranges", "expected 1 to spp (" + std::to_string(job.spp) + ") sample ranges");
+  job.ranges = balanced_ranges(job.spp, static_cast<uint32_t>(ranges.size()));
+  for (size_t i = 0; i < job.ranges.size(); ++i)
+    if (ranges[i] != Json::array({job.ranges[i].begin, job.ranges[i].end}))
+      obj.fail("ranges", "entry " + std::to_string(i) + " is not [" + std::to_string(job.ranges[i].begin) + ", " +
+                             std::to_string(job.ranges[i].end) + "], the balanced range submit wrote");
+  for (const auto& [key, into] :
+       {std::pair{"sbatch_args", &job.sbatch_args}, std::pair{"array_jobs", &job.array_jobs}}) {
+    const Json& list = obj.get(key);
+    if (!list.is_array()) obj.fail(key, "expected an array of strings");
+    for (const Json& v : list) {
       if (!v.is_string()) obj.fail(key, "expected strings");
       into->push_back(v.get<std::string>());
     }
+  }
+  if (job.array_jobs.empty()) obj.fail("array_jobs", "expected at least one array job id");
+  for (const std::string& id : job.array_jobs)
+    if (id.empty()) obj.fail("array_jobs", "expected job ids, got an empty one");
   obj.finish();
   return job;
 }
