@@ -138,5 +138,42 @@ TEST(SlurmJob, EveryKeyOfTheRecordIsChecked) {
   fs::remove_all(dir);
 }
 
+// `slurm wait` reported success whenever a file stood at -o after the merge job left the queue,
+// an older image included. It now needs merge.done, which merge.sh writes after its merge.
+// Stand-ins on PATH: sbatch prints a job id, squeue finds nothing queued, scontrol knows no job.
+TEST(SlurmJob, WaitReportsOnlyAnImageThisJobWrote) {
+  const fs::path dir = test::temp_dir("slurm-wait");
+  fs::create_directories(dir / "bin");
+  for (const auto& [name, body] :
+       {std::pair{"sbatch", "echo 77"}, std::pair{"squeue", "exit 0"}, std::pair{"scontrol", "exit 1"}}) {
+    std::ofstream(dir / "bin" / name) << "#!/bin/sh\n" << body << "\n";
+    fs::permissions(dir / "bin" / name, fs::perms::owner_all);
+  }
+  std::ofstream(dir / "s.json")
+      << R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
+           "film": {"width": 4, "height": 4}, "render": {"spp": 2}, "materials": {}, "shapes": []})";
+  const std::string path = "PATH=" + (dir / "bin").string() + ":$PATH ";
+  std::string out;
+  ASSERT_EQ(test::run_command(path + TRACER_BINARY + " slurm submit " + (dir / "s.json").string() +
+                                  " --parts 1 --dir " + (dir / "job").string() + " -o " + (dir / "out.exr").string(),
+                              &out),
+            0)
+      << out;
+  ASSERT_EQ(test::run_tracer("render " + (dir / "s.json").string() + " --quiet --samples 0:2 -o " +
+                                 (dir / "job" / "part-0.partial").string(),
+                             &out),
+            0)
+      << out;
+  std::ofstream(dir / "out.exr") << "an image from an earlier render";
+  const std::string wait = path + TRACER_BINARY + " slurm wait " + (dir / "job").string() + " --retries 0";
+  EXPECT_EQ(test::run_command(wait, &out), 2) << out;
+  EXPECT_NE(out.find("without an image"), std::string::npos) << out;
+  ASSERT_EQ(test::run_command("bash " + (dir / "job" / "merge.sh").string(), &out), 0) << out;  // the merge job
+  EXPECT_TRUE(fs::exists(dir / "job" / "merge.done"));
+  EXPECT_EQ(test::run_command(wait, &out), 0) << out;
+  EXPECT_NE(out.find("wrote " + (dir / "out.exr").string()), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace tracer

@@ -77,7 +77,9 @@ int wait_for(SlurmJob& job, uint32_t retries) {
   }
   wait_until_gone(job.merge_job);
   const std::string state = job_state(job.merge_job);
-  if ((state.empty() || state == "COMPLETED") && std::filesystem::exists(job.output)) {
+  // Success only for the image this job's merge wrote: merge.sh marks it after the merge.
+  if ((state.empty() || state == "COMPLETED") && std::filesystem::exists(merge_done_path(job)) &&
+      std::filesystem::exists(job.output)) {
     std::printf("merge job %s: wrote %s\n", job.merge_job.c_str(), job.output.c_str());
     return 0;
   }

@@ -38,6 +38,8 @@ std::vector<SampleRange> balanced_ranges(uint32_t spp, uint32_t parts) {
   return ranges;
 }
 
+std::string merge_done_path(const SlurmJob& job) { return (std::filesystem::path(job.dir) / "merge.done").string(); }
+
 std::string part_path(const SlurmJob& job, size_t task) {
   return (std::filesystem::path(job.dir) / ("part-" + std::to_string(task) + ".partial")).string();
 }
@@ -68,9 +70,10 @@ void write_job_scripts(const SlurmJob& job, const std::string& tracer, const std
   write_script((fs::path(job.dir) / "merge.sh").string(),
                "#!/usr/bin/env bash\n"
                "# tracer slurm: adds every part into the image; tracer merge refuses gaps, overlaps and\n"
-               "# parts of another render, and then writes nothing.\n"
-               "exec " +
-                   shell_quote(tracer) + " merge" + quoted(parts) + " -o " + shell_quote(job.output) + "\n");
+               "# parts of another render, and then writes nothing. merge.done tells `tracer slurm wait`\n"
+               "# that this job wrote the image (not an older file at the same path).\n" +
+                   shell_quote(tracer) + " merge" + quoted(parts) + " -o " + shell_quote(job.output) + " && : > " +
+                   shell_quote(merge_done_path(job)) + "\n");
 }
 
 void write_job_record(const SlurmJob& job) {

@@ -26,6 +26,7 @@ struct SlurmJob {
 std::vector<SampleRange> balanced_ranges(uint32_t spp, uint32_t parts);
 
 std::string part_path(const SlurmJob& job, size_t task);  // DIR/part-I.partial
+std::string merge_done_path(const SlurmJob& job);         // DIR/merge.done, written by merge.sh after the merge
 
 // Creates DIR (it must not exist or be empty) with logs/, render.sh and merge.sh; `render_args`
 // are the render options as given on the command line, `tracer` this executable.
