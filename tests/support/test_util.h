@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,12 @@ struct InputStream {
   }
   float next() { return static_cast<float>(next_bits() >> 40) * 0x1p-24f; }  // uniform in [0, 1)
 };
+
+// A file's bytes ("" when it cannot be opened).
+inline std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
 
 inline std::filesystem::path temp_dir(const std::string& name) {
   const auto dir = std::filesystem::temp_directory_path() / ("tracer-test-" + name + "-" + std::to_string(::getpid()));

@@ -14,11 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 class DestructiveCommands : public ::testing::Test {
  protected:
   void SetUp() override { dir_ = test::temp_dir("destructive"); }
@@ -33,7 +28,7 @@ TEST_F(DestructiveCommands, ReportResetRefusesADirectoryItDidNotMake) {
   std::string out;
   EXPECT_EQ(test::run_tracer("golden report --reset --report " + mine.string(), &out), 2) << out;
   EXPECT_NE(out.find(mine.string() + ": not removed"), std::string::npos) << out;
-  EXPECT_EQ(read(mine / "chapters" / "one.tex"), "years of work");
+  EXPECT_EQ(test::read_file(mine / "chapters" / "one.tex"), "years of work");
 }
 
 TEST_F(DestructiveCommands, ReportResetRefusesASymbolicLinkAndAFile) {
@@ -43,11 +38,11 @@ TEST_F(DestructiveCommands, ReportResetRefusesASymbolicLinkAndAFile) {
   fs::create_directory_symlink(target, dir_ / "link");
   std::string out;
   EXPECT_EQ(test::run_tracer("golden report --reset --report " + (dir_ / "link").string(), &out), 2) << out;
-  EXPECT_EQ(read(target / "keep.txt"), "keep");
+  EXPECT_EQ(test::read_file(target / "keep.txt"), "keep");
   EXPECT_TRUE(fs::is_symlink(dir_ / "link"));
   std::ofstream(dir_ / "file.txt") << "a file";
   EXPECT_EQ(test::run_tracer("golden report --reset --report " + (dir_ / "file.txt").string(), &out), 2) << out;
-  EXPECT_EQ(read(dir_ / "file.txt"), "a file");
+  EXPECT_EQ(test::read_file(dir_ / "file.txt"), "a file");
 }
 
 TEST_F(DestructiveCommands, ReportResetClearsAReportItMade) {
@@ -80,8 +75,8 @@ TEST_F(DestructiveCommands, GpuPackNeverRemovesADirectoryItDidNotMake) {
                              " --runner " + TRACER_BINARY + "'";  // sh -c: $$ is the PID exec hands on
   std::string output;
   EXPECT_EQ(test::run_command(script, &output), 2) << output;
-  const std::string pid = read(dir_ / "pid").substr(0, read(dir_ / "pid").find('\n'));
-  EXPECT_EQ(read(out.string() + ".partial-" + pid + "/keep.txt"), "keep\n");
+  const std::string pid = test::read_file(dir_ / "pid").substr(0, test::read_file(dir_ / "pid").find('\n'));
+  EXPECT_EQ(test::read_file(out.string() + ".partial-" + pid + "/keep.txt"), "keep\n");
   EXPECT_FALSE(fs::exists(out));
   size_t entries = 0;  // root, pid, the planted directory: no staging directory left behind
   for (const auto& e : fs::directory_iterator(dir_)) entries += e.exists() ? 1 : 0;

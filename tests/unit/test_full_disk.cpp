@@ -25,16 +25,11 @@ constexpr const char* kScene =
   "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.3, 0.2]}},
   "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]})";
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 // Every file under dir with its bytes.
 std::map<std::string, std::string> files_under(const fs::path& dir) {
   std::map<std::string, std::string> files;
   for (const auto& e : fs::recursive_directory_iterator(dir))
-    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = read(e.path());
+    if (e.is_regular_file()) files[fs::relative(e.path(), dir).string()] = test::read_file(e.path());
   return files;
 }
 
@@ -86,7 +81,7 @@ class FullDisk : public ::testing::Test {
                                                                        : nullptr;
     if (!unshare) return 77;
     const int status = test::run_command(std::string(unshare) + " bash " + script.string());
-    output = read(dir_ / "output.log");
+    output = test::read_file(dir_ / "output.log");
     return status;
   }
 
@@ -133,7 +128,7 @@ TEST_F(FullDisk, RenderWithStatsWritesBothOrNeither) {
   expect_clean_failure("render " + (dir_ / "in/s.json").string() + " --quiet --seed 5 -o " +
                            (roomy / "out.png").string() + " --stats DISK/stats.json",
                        "DISK/stats.json");
-  EXPECT_EQ(read(roomy / "out.png"), read(earlier("out.png")));
+  EXPECT_EQ(test::read_file(roomy / "out.png"), test::read_file(earlier("out.png")));
   EXPECT_EQ(std::distance(fs::directory_iterator(roomy), fs::directory_iterator()), 1) << "a temporary was left";
 }
 

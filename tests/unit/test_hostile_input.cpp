@@ -32,11 +32,6 @@ std::string scene_text(const std::string& render, const std::string& shapes = kS
 
 void write(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 // The tracer under a 30 s limit: a hang fails the test instead of the CI runner.
 int run_limited(const std::string& args, std::string& output) {
   return test::run_command("timeout 30 " + std::string(TRACER_BINARY) + " " + args, &output);
@@ -132,7 +127,7 @@ TEST_F(HostileInput, DevicesAndFifosAreNotRead) {
 // -o or --stats naming the scene, a texture or each other overwrote it.
 TEST_F(HostileInput, OutputsNeverOverwriteInputs) {
   const std::string scene = scene_file(scene_text(""));
-  const std::string before = read(scene);
+  const std::string before = test::read_file(scene);
   expect_refused("render " + scene + " --quiet --stats " + scene + " -o " + (dir_ / "out.png").string(),
                  "names a file this command reads");
   expect_refused(
@@ -143,17 +138,17 @@ TEST_F(HostileInput, OutputsNeverOverwriteInputs) {
   expect_refused(
       "render " + scene + " --quiet --stats " + (dir_ / "stats-dir").string() + " -o " + (dir_ / "out.png").string(),
       "names a directory");
-  EXPECT_EQ(read(dir_ / "out.png"), "earlier image");
-  EXPECT_EQ(read(scene), before);
+  EXPECT_EQ(test::read_file(dir_ / "out.png"), "earlier image");
+  EXPECT_EQ(test::read_file(scene), before);
   write_image(test::image_from(2, 2, [](uint32_t, uint32_t) { return Vec3{1, 1, 1}; }), (dir_ / "tex.png").string());
-  const std::string tex_before = read(dir_ / "tex.png");
+  const std::string tex_before = test::read_file(dir_ / "tex.png");
   const std::string textured = R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "t"})";
   std::string text = scene_text("", textured);
   text.replace(text.find(R"("materials": {)"), 14,
                R"("materials": {"t": {"type": "lambert", "albedo": {"texture": "tex.png"}}, )");
   expect_refused("render " + scene_file(text) + " --quiet -o " + (dir_ / "tex.png").string(),
                  "names a file this command reads");
-  EXPECT_EQ(read(dir_ / "tex.png"), tex_before);
+  EXPECT_EQ(test::read_file(dir_ / "tex.png"), tex_before);
 }
 
 // Float textures holding NaN, inf or negative colours were used as they were.
@@ -206,7 +201,7 @@ TEST_F(HostileInput, PartialFilesAreNotTrusted) {
   const std::string part = (dir_ / "p.partial").string();
   std::string output;
   ASSERT_EQ(run_limited("render " + scene + " --quiet --samples 0:4 -o " + part, output), 0) << output;
-  const std::string good = read(part);
+  const std::string good = test::read_file(part);
   const size_t header_end = good.find('\n', good.find('\n') + 1);
   const auto merge_refuses = [&](const std::string& bytes, const std::string& expected) {
     write(part, bytes);
@@ -241,25 +236,33 @@ TEST_F(HostileInput, EveryCommandsOutputsNeverNameItsInputs) {
   const Image img = test::image_from(2, 2, [](uint32_t x, uint32_t) { return Vec3{float(x), 0.5f, 0.25f}; });
   write_image(img, (dir_ / "a.exr").string());
   write_image(img, (dir_ / "b.exr").string());
-  const std::string a_before = read(dir_ / "a.exr");
+  const std::string a_before = test::read_file(dir_ / "a.exr");
   fs::create_directories(dir_ / "sub");
   fs::create_symlink(dir_ / "a.exr", dir_ / "link.exr");
   const std::string compare = "compare " + (dir_ / "a.exr").string() + " " + (dir_ / "b.exr").string() + " --diff ";
   for (const std::string diff : {(dir_ / "a.exr").string(), (dir_ / "sub" / ".." / "b.exr").string(),
                                  (dir_ / "link.exr").string(), dir_.string() + "/./a.exr"})
     expect_refused(compare + diff, "--diff names a file this command reads");
-  EXPECT_EQ(read(dir_ / "a.exr"), a_before);
+  EXPECT_EQ(test::read_file(dir_ / "a.exr"), a_before);
   expect_refused(compare + (dir_ / "d.nosuchformat").string(), "--diff: no image writer");
 
   const std::string scene = scene_file(scene_text(R"("integrator": "path", "spp": 1)"));
-  const std::string scene_before = read(scene);
+  const std::string scene_before = test::read_file(scene);
   expect_refused("bench converge " + scene + " --spp 1 --ref-spp 1 --csv " + scene,
                  "--csv names a file this command reads");
   expect_refused("bench converge " + scene + " --spp 1 --ref-spp 1 --ref " + (dir_ / "a.exr").string() + " --plot " +
                      (dir_ / "link.exr").string(),
                  "--plot names a file this command reads");
-  EXPECT_EQ(read(scene), scene_before);
-  EXPECT_EQ(read(dir_ / "a.exr"), a_before);
+  EXPECT_EQ(test::read_file(scene), scene_before);
+  EXPECT_EQ(test::read_file(dir_ / "a.exr"), a_before);
+
+  // merge: -o reaching a part through a symlink would have replaced the part with the image.
+  ASSERT_EQ(test::run_tracer("render " + scene + " --quiet --samples 0:1 -o " + (dir_ / "p.partial").string()), 0);
+  const std::string part_before = test::read_file(dir_ / "p.partial");
+  fs::create_symlink(dir_ / "p.partial", dir_ / "merged.exr");
+  expect_refused("merge " + (dir_ / "p.partial").string() + " -o " + (dir_ / "merged.exr").string(),
+                 "-o names a file this command reads");
+  EXPECT_EQ(test::read_file(dir_ / "p.partial"), part_before);
 
   // slurm submit: the merge job writes -o at the end, on the cluster; it is checked before
   // anything is submitted or written (no job directory appears).
@@ -332,7 +335,7 @@ TEST_F(HostileInput, AnImageHeaderIsCheckedBeforeItsPixelsAreAllocated) {
                              &output),
             0)
       << output;
-  std::string exr = read(dir_ / "small.exr");
+  std::string exr = test::read_file(dir_ / "small.exr");
   constexpr int32_t kSide = 100000;
   for (const std::string& name : {std::string("dataWindow\0box2i\0", 17), std::string("displayWindow\0box2i\0", 20)}) {
     const size_t at = exr.find(name);

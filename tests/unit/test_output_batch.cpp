@@ -17,11 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
 size_t entries(const fs::path& dir) { return std::distance(fs::directory_iterator(dir), fs::directory_iterator()); }
 
 class OutputBatchTest : public ::testing::Test {
@@ -40,10 +35,10 @@ TEST_F(OutputBatchTest, CommitReplacesEveryFileAndLeavesNoTemporary) {
   OutputBatch batch;
   batch.add(path("a.txt"), "new a");
   batch.add(path("b.txt"), "new b");
-  EXPECT_EQ(read(dir_ / "a.txt"), "earlier a");  // nothing lands before the commit
+  EXPECT_EQ(test::read_file(dir_ / "a.txt"), "earlier a");  // nothing lands before the commit
   batch.commit();
-  EXPECT_EQ(read(dir_ / "a.txt"), "new a");
-  EXPECT_EQ(read(dir_ / "b.txt"), "new b");
+  EXPECT_EQ(test::read_file(dir_ / "a.txt"), "new a");
+  EXPECT_EQ(test::read_file(dir_ / "b.txt"), "new b");
   EXPECT_EQ(entries(dir_), 2u);
 }
 
@@ -53,8 +48,8 @@ TEST_F(OutputBatchTest, AFailedFileLeavesEveryEarlierFile) {
     batch.add(path("a.txt"), "new a");
     EXPECT_THROW(batch.add(path("missing-dir/b.txt"), "new b"), InputError);
   }
-  EXPECT_EQ(read(dir_ / "a.txt"), "earlier a");
-  EXPECT_EQ(read(dir_ / "b.txt"), "earlier b");
+  EXPECT_EQ(test::read_file(dir_ / "a.txt"), "earlier a");
+  EXPECT_EQ(test::read_file(dir_ / "b.txt"), "earlier b");
   EXPECT_EQ(entries(dir_), 2u);
 }
 
@@ -63,7 +58,7 @@ TEST_F(OutputBatchTest, ADirectoryIsRefusedBeforeAnythingLands) {
   OutputBatch batch;
   batch.add(path("a.txt"), "new a");
   EXPECT_THROW(batch.add(path("d"), "new d"), InputError);
-  EXPECT_EQ(read(dir_ / "a.txt"), "earlier a");
+  EXPECT_EQ(test::read_file(dir_ / "a.txt"), "earlier a");
 }
 
 TEST_F(OutputBatchTest, ATargetNamedTwiceIsRefused) {
@@ -86,7 +81,7 @@ TEST_F(OutputBatchTest, SigtermBeforeCommitRemovesTheTemporaries) {
   int status = 0;
   ASSERT_EQ(::waitpid(child, &status, 0), child);
   EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status;
-  EXPECT_EQ(read(dir_ / "a.txt"), "earlier a");
+  EXPECT_EQ(test::read_file(dir_ / "a.txt"), "earlier a");
   EXPECT_EQ(entries(dir_), 2u);
 }
 
@@ -97,8 +92,8 @@ TEST_F(OutputBatchTest, ASymlinkPlantedAtTheOldTemporaryNameIsNeverFollowed) {
   std::ofstream(victim) << "precious";
   fs::create_symlink(victim, dir_ / (".out.tmp" + std::to_string(::getpid()) + ".txt"));
   write_file_atomically(path("out.txt"), "new out");
-  EXPECT_EQ(read(victim), "precious");
-  EXPECT_EQ(read(dir_ / "out.txt"), "new out");
+  EXPECT_EQ(test::read_file(victim), "precious");
+  EXPECT_EQ(test::read_file(dir_ / "out.txt"), "new out");
   EXPECT_EQ(entries(dir_), 5u);  // a, b, victim, the planted link, out
 }
 
@@ -106,7 +101,7 @@ TEST_F(OutputBatchTest, ASymlinkPlantedAtTheOldTemporaryNameIsNeverFollowed) {
 TEST_F(OutputBatchTest, AnOutputNameOfTheLongestLegalLengthIsWritten) {
   const std::string name = std::string(251, 'n') + ".txt";
   write_file_atomically((dir_ / name).string(), "long");
-  EXPECT_EQ(read(dir_ / name), "long");
+  EXPECT_EQ(test::read_file(dir_ / name), "long");
   EXPECT_EQ(entries(dir_), 3u);
 }
 
@@ -121,7 +116,7 @@ TEST_F(OutputBatchTest, TemporariesHaveUnpredictableNamesAndAreNewFiles) {
   EXPECT_NE(temporaries[0], temporaries[1]);
   second.commit();
   first.commit();
-  EXPECT_EQ(read(dir_ / "a.txt"), "first");
+  EXPECT_EQ(test::read_file(dir_ / "a.txt"), "first");
   EXPECT_EQ(entries(dir_), 2u);
 }
 

@@ -109,8 +109,7 @@ TEST(SlurmJob, EveryKeyOfTheRecordIsChecked) {
   job.array_jobs = {"11"};
   job.merge_job = "12";
   write_job_record(job);
-  std::ifstream in(dir / "job.json");
-  const std::string good{std::istreambuf_iterator<char>(in), {}};
+  const std::string good = test::read_file(dir / "job.json");
   const std::vector<std::pair<std::string, std::string>> broken = {
       {R"("array_jobs": [
     "11"

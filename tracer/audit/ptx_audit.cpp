@@ -38,7 +38,7 @@ const std::set<std::string> kIntTypes = {"s8", "s16", "s32", "s64", "u8", "u16",
 const std::set<std::string> kRoundings = {"rn", "rz", "rm", "rp"};
 const std::set<std::string> kIntegralRoundings = {"rni", "rzi", "rmi", "rpi"};
 // Instructions that move bits without arithmetic: no rounding, no NaN rule.
-const std::set<std::string> kMoves = {"ld", "ldu", "st", "mov", "selp", "shfl", "prmt", "cvta", "ld.global"};
+const std::set<std::string> kMoves = {"ld", "ldu", "st", "mov", "selp", "shfl", "prmt", "cvta"};
 
 std::string opcode_of(const std::string& statement, std::string& operands) {
   std::string s = trim(statement);
@@ -273,7 +273,7 @@ PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
             audit.failures.push_back(site);
           }
           if (line.back() == ';') continue;  // a declaration on one line
-          audit.by_function[function];         // listed even when it holds no floating-point instruction
+          audit.by_function[function];       // listed even when it holds no floating-point instruction
           state = line.back() == '{' ? State::Body : State::Header;
           depth = 1;
           continue;

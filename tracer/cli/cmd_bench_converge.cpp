@@ -67,8 +67,7 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
   for (uint32_t s : spps) max_spp = std::max(max_spp, s);
   const Scene probe = load_scene(cmd.scene, base);
   check_image_output(plot, "--plot");
-  std::vector<std::string> inputs(probe.report.input_files.begin(), probe.report.input_files.end());
-  inputs.push_back(cmd.scene);
+  std::vector<std::string> inputs = probe.files_read();
   inputs.push_back(cmd.ref);
   refuse_outputs_naming_inputs(
       {{csv, "--csv"}, {plot, "--plot"}, {cmd.ref.empty() ? stem + "-converge-ref.exr" : "", "the reference cache"}},

@@ -24,9 +24,7 @@ static int run_bundle(const RenderCommand& cmd) {
   if (!std::filesystem::is_directory(dir)) throw InputError(cmd.output + ": output directory does not exist");
   const std::string text = read_text_file(cmd.scene, "scene file");
   const Scene scene = load_scene_text(text, cmd.scene, scene_overrides(cmd));
-  std::vector<std::string> inputs(scene.report.input_files.begin(), scene.report.input_files.end());
-  inputs.push_back(cmd.scene);
-  refuse_outputs_naming_inputs({{cmd.output, "-o"}}, inputs);
+  refuse_outputs_naming_inputs({{cmd.output, "-o"}}, scene.files_read());
   const uint32_t spp = scene.settings.spp;
   const SampleRange range = cmd.samples.empty() ? SampleRange{0, spp} : parse_sample_range(cmd.samples, spp);
   const SceneBundle bundle = make_scene_bundle(scene, scene.view(), range, cmd.scene);

@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
+#include "io/output_paths.h"
 #include "render/partial_file.h"
 
 namespace tracer {
@@ -18,9 +19,8 @@ struct MergeCommand {
 };
 
 static int run_merge(const MergeCommand& cmd) {
-  std::filesystem::path out(cmd.output);
-  const std::filesystem::path dir = out.parent_path().empty() ? "." : out.parent_path();
-  if (!std::filesystem::is_directory(dir)) throw InputError(cmd.output + ": output directory does not exist");
+  check_image_output(cmd.output, "-o");
+  refuse_outputs_naming_inputs({{cmd.output, "-o"}}, cmd.parts);
   std::vector<std::pair<std::string, Partial>> parts;
   for (const std::string& path : cmd.parts) parts.emplace_back(path, read_partial(path));
 

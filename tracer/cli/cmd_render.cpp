@@ -45,9 +45,7 @@ void check_output_path(const std::string& path, bool partial) {
 
 // The output and the stats file may name no file the render reads, nor each other.
 void refuse_overwriting_inputs(const Scene& scene, const std::string& output, const std::string& stats) {
-  std::vector<std::string> inputs(scene.report.input_files.begin(), scene.report.input_files.end());
-  inputs.push_back(scene.file);
-  refuse_outputs_naming_inputs({{output, "-o"}, {stats, "--stats"}}, inputs);
+  refuse_outputs_naming_inputs({{output, "-o"}, {stats, "--stats"}}, scene.files_read());
 }
 
 // What makes two partial files parts of one render: every option its identity records.

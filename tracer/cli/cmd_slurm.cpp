@@ -104,13 +104,9 @@ int run_submit(const SlurmSubmitCommand& cmd) {
   job.dir = fs::absolute(cmd.dir).lexically_normal().string();
   job.scene = fs::absolute(cmd.render.scene).lexically_normal().string();
   job.output = fs::absolute(cmd.render.output).lexically_normal().string();
-  if (!fs::is_directory(fs::path(job.output).parent_path()))
-    throw InputError(cmd.render.output + ": output directory does not exist");
   // The merge job writes the image at the end, on the cluster: its name is checked here.
   check_image_output(cmd.render.output, "-o");
-  std::vector<std::string> inputs(scene.report.input_files.begin(), scene.report.input_files.end());
-  inputs.push_back(cmd.render.scene);
-  refuse_outputs_naming_inputs({{cmd.render.output, "-o"}}, inputs);
+  refuse_outputs_naming_inputs({{cmd.render.output, "-o"}}, scene.files_read());
   job.spp = scene.settings.spp;
   job.ranges = balanced_ranges(job.spp, cmd.parts);
   job.sbatch_args = cmd.sbatch_args;

@@ -12,12 +12,12 @@ namespace tracer {
 
 void add_image(OutputBatch& batch, const Image& image, const std::string& path);  // written on commit
 void write_image(const Image& image, const std::string& path);                    // a batch of one
-Image read_image(const std::string& path);
+Image read_image(const std::string& path);  // RGB float; InputError when unreadable
 
 // Fails (InputError naming the path and the option) when an image could not be written at
 // path: no such directory, a directory, no extension, no writer for the extension. Commands
 // call it before any work, so a bad output name never costs a render.
-void check_image_output(const std::string& path, const std::string& option);  // RGB float; InputError when unreadable
+void check_image_output(const std::string& path, const std::string& option);
 bool is_float_format(const std::string& path);
 
 }  // namespace tracer

@@ -2,6 +2,12 @@
 
 namespace tracer {
 
+std::vector<std::string> Scene::files_read() const {
+  std::vector<std::string> files(report.input_files.begin(), report.input_files.end());
+  files.push_back(file);
+  return files;
+}
+
 SceneView Scene::view() const {
   SceneView v{};
   point_view_at(v, *this);

@@ -42,6 +42,7 @@ struct Scene : SceneArrays {
   LoadReport report;
 
   SceneView view() const;
+  std::vector<std::string> files_read() const;  // the scene file and every mesh and image it pulled in
 };
 
 }  // namespace tracer
