@@ -14,6 +14,7 @@
 #include "cpu_film.h"
 #include "gpu_film.h"
 #include "image/pixel_hash.h"
+#include "io/output_paths.h"
 #include "io/text_file.h"
 #include "parity/parity_gpu.h"
 #include "parity/parity_suite.h"
@@ -72,6 +73,11 @@ Options parse(int argc, char** argv) {
   }
   if (o.device != "cuda" && o.device != "cpu") throw InputError("--device " + o.device + ": expected cuda or cpu");
   if (o.command != "device" && o.input.empty()) throw InputError(o.command + ": needs an input\n" + kUsage);
+  if (!o.output.empty()) {  // the film is written after the render: checked before it
+    if (o.command != "render") throw InputError("-o " + o.output + ": only render writes a film");
+    check_output_location(o.output, "-o");
+    refuse_outputs_naming_inputs({{o.output, "-o"}}, {o.input});
+  }
   if (o.threads == 0) o.threads = default_thread_count();
   return o;
 }

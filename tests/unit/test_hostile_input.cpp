@@ -240,8 +240,8 @@ TEST_F(HostileInput, EveryCommandsOutputsNeverNameItsInputs) {
   fs::create_directories(dir_ / "sub");
   fs::create_symlink(dir_ / "a.exr", dir_ / "link.exr");
   const std::string compare = "compare " + (dir_ / "a.exr").string() + " " + (dir_ / "b.exr").string() + " --diff ";
-  for (const std::string diff : {(dir_ / "a.exr").string(), (dir_ / "sub" / ".." / "b.exr").string(),
-                                 (dir_ / "link.exr").string(), dir_.string() + "/./a.exr"})
+  for (const std::string& diff : {(dir_ / "a.exr").string(), (dir_ / "sub" / ".." / "b.exr").string(),
+                                  (dir_ / "link.exr").string(), dir_.string() + "/./a.exr"})
     expect_refused(compare + diff, "--diff names a file this command reads");
   EXPECT_EQ(test::read_file(dir_ / "a.exr"), a_before);
   expect_refused(compare + (dir_ / "d.nosuchformat").string(), "--diff: no image writer");
@@ -277,6 +277,43 @@ TEST_F(HostileInput, EveryCommandsOutputsNeverNameItsInputs) {
                      (dir_ / "sub" / ".." / "tex.png").string(),
                  "-o names a file this command reads");
   EXPECT_FALSE(fs::exists(dir_ / "job"));
+}
+
+// The GPU runner's -o wrote its film over the bundle it rendered (directly or through a
+// symlink), and was accepted and ignored by the commands that write no film; a device named
+// by a file output (--stats /dev/null) was accepted and the render ran before the write failed.
+TEST_F(HostileInput, TheRunnersFilmAndEveryFileOutputGoThroughTheOneCheck) {
+  const std::string scene = scene_file(scene_text(R"("spp": 1)"));
+  const std::string bundle = (dir_ / "s.bundle").string();
+  ASSERT_EQ(test::run_tracer("bundle " + scene + " -o " + bundle), 0);
+  const std::string bundle_before = test::read_file(bundle);
+  fs::create_symlink(bundle, dir_ / "film-link");
+  const std::string runner = std::string("timeout 30 ") + TRACER_GPU_BINARY + " ";
+  for (const std::string& film : {bundle, (dir_ / "film-link").string(), dir_.string() + "/./s.bundle"}) {
+    std::string output;
+    EXPECT_EQ(test::run_command(runner + "render " + bundle + " --device cpu -o " + film, &output), 2) << output;
+    EXPECT_NE(output.find("-o names a file this command reads"), std::string::npos) << output;
+  }
+  EXPECT_EQ(test::read_file(bundle), bundle_before);
+  std::string output;
+  EXPECT_EQ(test::run_command(runner + "pack " + dir_.string() + " --device cpu -o " + (dir_ / "f").string(), &output),
+            2);
+  EXPECT_NE(output.find("only render writes a film"), std::string::npos) << output;
+  EXPECT_EQ(
+      test::run_command(runner + "render " + bundle + " --device cpu -o " + (dir_ / "no" / "f").string(), &output), 2);
+  EXPECT_NE(output.find("-o: output directory does not exist"), std::string::npos) << output;
+  EXPECT_EQ(test::run_command(runner + "render " + bundle + " --device cpu -o " + (dir_ / "f.film").string(), &output),
+            0)
+      << output;
+
+  // A FIFO stands in for /dev/null: the old code, run as root, replaced the device with a file.
+  ASSERT_EQ(::mkfifo((dir_ / "pipe").c_str(), 0600), 0);
+  expect_refused("render " + scene + " --stats " + (dir_ / "pipe").string() + out(),
+                 "--stats names a device, FIFO or socket");
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+  expect_refused("bundle " + scene + " -o " + (dir_ / "pipe").string(), "-o names a device, FIFO or socket");
+  expect_refused("generate cube -o " + (dir_ / "no" / "m.obj").string(), "-o: output directory does not exist");
+  expect_refused("bench converge " + scene + " --spp 1 --ref-spp 1 --csv " + dir_.string(), "--csv names a directory");
 }
 
 // nlohmann's parser keeps the last of two equal keys, so `"width": 2, ..., "width": 4` rendered

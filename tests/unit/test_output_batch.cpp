@@ -2,6 +2,7 @@
 // that fails, is abandoned or is interrupted by SIGTERM leaves the earlier files as they were
 // and no temporary behind. The full-disk cases of every command: test_full_disk.cpp.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -59,6 +60,20 @@ TEST_F(OutputBatchTest, ADirectoryIsRefusedBeforeAnythingLands) {
   batch.add(path("a.txt"), "new a");
   EXPECT_THROW(batch.add(path("d"), "new d"), InputError);
   EXPECT_EQ(test::read_file(dir_ / "a.txt"), "earlier a");
+}
+
+// Run as root, a batch renamed its temporary over a device or FIFO it was given (a render's
+// --stats /dev/null replaced /dev/null with a regular file). A FIFO stands in for the device.
+TEST_F(OutputBatchTest, ADeviceOrFifoIsNeverReplaced) {
+  ASSERT_EQ(::mkfifo(path("pipe").c_str(), 0600), 0);
+  OutputBatch batch;
+  EXPECT_THROW(batch.add(path("pipe"), "new pipe"), InputError);
+  EXPECT_TRUE(fs::is_fifo(dir_ / "pipe"));
+  fs::create_symlink(dir_ / "pipe", dir_ / "link");  // a symlink is replaced, not what it names
+  batch.add(path("link"), "new link");
+  batch.commit();
+  EXPECT_TRUE(fs::is_fifo(dir_ / "pipe"));
+  EXPECT_EQ(test::read_file(dir_ / "link"), "new link");
 }
 
 TEST_F(OutputBatchTest, ATargetNamedTwiceIsRefused) {

@@ -66,6 +66,7 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
   uint32_t max_spp = 0;
   for (uint32_t s : spps) max_spp = std::max(max_spp, s);
   const Scene probe = load_scene(cmd.scene, base);
+  check_output_location(csv, "--csv");
   check_image_output(plot, "--plot");
   std::vector<std::string> inputs = probe.files_read();
   inputs.push_back(cmd.ref);

@@ -19,9 +19,8 @@ namespace tracer {
 
 static int run_bundle(const RenderCommand& cmd) {
   const std::filesystem::path out(cmd.output);
+  check_output_location(cmd.output, "-o");
   if (out.extension() != ".bundle") throw InputError(cmd.output + ": name the bundle NAME.bundle");
-  const std::filesystem::path dir = out.parent_path().empty() ? "." : out.parent_path();
-  if (!std::filesystem::is_directory(dir)) throw InputError(cmd.output + ": output directory does not exist");
   const std::string text = read_text_file(cmd.scene, "scene file");
   const Scene scene = load_scene_text(text, cmd.scene, scene_overrides(cmd));
   refuse_outputs_naming_inputs({{cmd.output, "-o"}}, scene.files_read());

@@ -5,6 +5,7 @@
 
 #include "bench/mesh_generators.h"
 #include "cli/command_registry.h"
+#include "io/output_paths.h"
 
 namespace tracer {
 namespace {
@@ -15,6 +16,7 @@ struct GenerateCommand {
 };
 
 static int run_generate(const GenerateCommand& cmd) {
+  check_output_location(cmd.output, "-o");
   const std::vector<MeshTriangle> mesh = generate_mesh(cmd.kind, cmd.triangles);
   write_obj(mesh, cmd.output);
   std::printf("wrote %s: %zu triangles\n", std::filesystem::absolute(cmd.output).string().c_str(), mesh.size());

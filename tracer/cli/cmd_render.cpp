@@ -32,9 +32,8 @@ double seconds_since(Clock::time_point t) { return std::chrono::duration<double>
 // writes a partial file, anything else an image.
 void check_output_path(const std::string& path, bool partial) {
   const std::filesystem::path p(path);
-  const std::filesystem::path dir = p.parent_path().empty() ? "." : p.parent_path();
-  if (!std::filesystem::is_directory(dir)) throw InputError(path + ": output directory does not exist");
   if (partial) {
+    check_output_location(path, "-o");
     if (p.extension() != ".partial") throw InputError(path + ": --samples writes a partial file; name it NAME.partial");
     return;
   }
@@ -76,11 +75,7 @@ static int run_render(const RenderCommand& cmd) {
       cmd.output.empty() ? std::filesystem::path(cmd.scene).stem().string() + ".png" : cmd.output;
   const bool partial = !cmd.samples.empty();
   check_output_path(output, partial);
-  if (!cmd.stats.empty() && std::filesystem::path(cmd.stats).has_parent_path() &&
-      !std::filesystem::is_directory(std::filesystem::path(cmd.stats).parent_path()))
-    throw InputError(cmd.stats + ": stats directory does not exist");
-  if (!cmd.stats.empty() && std::filesystem::is_directory(cmd.stats))
-    throw InputError(cmd.stats + ": --stats names a directory; name a file");
+  if (!cmd.stats.empty()) check_output_location(cmd.stats, "--stats");
 
   if (cmd.device == "cuda") cuda_device_description();  // fail before loading when there is no GPU
   const auto t_load = Clock::now();

@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "io/input_error.h"
+#include "io/output_paths.h"
 #include "kernel/base/detmath.h"
 
 namespace tracer {
@@ -73,12 +74,8 @@ void write_image(const Image& image, const std::string& path) {
 }
 
 void check_image_output(const std::string& path, const std::string& option) {
+  check_output_location(path, option);
   const std::filesystem::path p(path);
-  const std::filesystem::path dir = p.parent_path().empty() ? "." : p.parent_path();
-  std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec))
-    throw InputError(path + ": " + option + ": output directory does not exist");
-  if (std::filesystem::is_directory(p, ec)) throw InputError(path + ": " + option + " names a directory");
   if (p.extension().empty())
     throw InputError(path + ": " + option + ": output needs a file extension (.exr, .png, ...)");
   if (!OIIO::ImageOutput::create(path))

@@ -95,8 +95,14 @@ OutputBatch::~OutputBatch() {
 void OutputBatch::add(const std::string& target, const std::string& bytes) {
   for (const auto& [temp, earlier] : files_)
     if (earlier == target) throw InputError(target + ": named twice as an output");
-  std::error_code ec;  // a directory would fail only at the rename, after other outputs landed
-  if (std::filesystem::is_directory(target, ec)) throw InputError(target + ": cannot write: it is a directory");
+  // A directory would fail only at the rename, after other outputs landed; a device or FIFO
+  // would be replaced by a regular file when the tracer runs as root (/dev/null was).
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::symlink_status(target, ec);
+  if (std::filesystem::is_directory(status)) throw InputError(target + ": cannot write: it is a directory");
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+      !std::filesystem::is_symlink(status))
+    throw InputError(target + ": cannot write: it is a device, FIFO or socket, not a file");
   std::string temp;
   const int fd = create_temporary_for(target, temp);
   if (fd < 0) throw InputError(target + ": cannot write: " + errno_text());

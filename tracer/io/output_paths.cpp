@@ -17,6 +17,17 @@ bool same_file(const std::string& a, const std::string& b) {
   return !ec && ra == rb;
 }
 
+void check_output_location(const std::string& path, const std::string& option) {
+  const fs::path p(path);
+  const fs::path dir = p.parent_path().empty() ? "." : p.parent_path();
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw InputError(path + ": " + option + ": output directory does not exist");
+  const fs::file_status status = fs::status(p, ec);
+  if (fs::is_directory(status)) throw InputError(path + ": " + option + " names a directory; name a file");
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw InputError(path + ": " + option + " names a device, FIFO or socket; name a file");
+}
+
 void refuse_outputs_naming_inputs(const std::vector<NamedOutput>& outputs, const std::vector<std::string>& inputs) {
   for (size_t i = 0; i < outputs.size(); ++i) {
     const NamedOutput& out = outputs[i];

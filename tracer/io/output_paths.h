@@ -16,6 +16,10 @@ struct NamedOutput {
 
 bool same_file(const std::string& a, const std::string& b);
 
+// InputError unless PATH can be written as a file: its directory exists, and PATH is not a
+// directory, a device or a FIFO. Every output option's first check (images add their format's).
+void check_output_location(const std::string& path, const std::string& option);
+
 // InputError "PATH: OPTION names a file this command reads (INPUT); choose another name", or
 // names the other output; outputs with an empty path are skipped.
 void refuse_outputs_naming_inputs(const std::vector<NamedOutput>& outputs, const std::vector<std::string>& inputs);
