@@ -100,6 +100,74 @@ TEST_F(OutputBatchTest, SigtermBeforeCommitRemovesTheTemporaries) {
   EXPECT_EQ(entries(dir_), 2u);
 }
 
+// A child commits a journaled batch and SIGKILL stops it after each step: before the journal
+// lands nothing changed; after, finish_interrupted_commit makes every file new.
+TEST_F(OutputBatchTest, AJournaledCommitKilledAtAnyStepIsAllOldOrAllNew) {
+  const std::string journal = path(".journal");
+  for (int kill_at = -1; kill_at <= 3; ++kill_at) {  // -1: before the commit; 3: after the journal is gone
+    std::ofstream(dir_ / "a.txt") << "earlier a";
+    std::ofstream(dir_ / "b.txt") << "earlier b";
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      OutputBatch batch;
+      batch.add(path("a.txt"), "new a");
+      batch.add(path("b.txt"), "new b");
+      if (kill_at < 0) std::raise(SIGKILL);
+      batch.commit(journal, [&](size_t step) {
+        if (static_cast<int>(step) == kill_at) std::raise(SIGKILL);
+      });
+      ::_exit(0);
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << kill_at;
+    EXPECT_EQ(finish_interrupted_commit(journal), kill_at >= 0 && kill_at < 3) << kill_at;
+    remove_orphan_temporaries(dir_.string());
+    const std::string a = test::read_file(dir_ / "a.txt"), b = test::read_file(dir_ / "b.txt");
+    EXPECT_EQ(a, kill_at < 0 ? "earlier a" : "new a") << kill_at;
+    EXPECT_EQ(b, kill_at < 0 ? "earlier b" : "new b") << kill_at;
+    EXPECT_EQ(entries(dir_), 2u) << kill_at;
+  }
+}
+
+// The journal is input: it may rename only tracer temporaries onto names in its own directory.
+TEST_F(OutputBatchTest, AJournalNamingAnythingElseIsRefusedAndChangesNothing) {
+  std::ofstream(dir_ / ".tracer-0123456789abcdef.tmp") << "temporary";
+  for (const std::string line : {"a.txt\tb.txt", ".tracer-0123456789abcdef.tmp\t../b.txt",
+                                 ".tracer-0123456789abcdef.tmp\t", "../.tracer-0123456789abcdef.tmp\ta.txt"}) {
+    std::ofstream(dir_ / ".journal") << "tracer-commit-journal/1\n" << line << "\n";
+    EXPECT_THROW(finish_interrupted_commit(path(".journal")), InputError) << line;
+    EXPECT_EQ(test::read_file(dir_ / "a.txt"), "earlier a");
+    EXPECT_EQ(test::read_file(dir_ / "b.txt"), "earlier b");
+    EXPECT_EQ(test::read_file(dir_ / ".tracer-0123456789abcdef.tmp"), "temporary");
+  }
+  std::ofstream(dir_ / ".journal") << "not a journal\n";
+  EXPECT_THROW(finish_interrupted_commit(path(".journal")), InputError);
+}
+
+// SIGTERM between the renames of a render's image and its --stats file removed the stats
+// temporary and left a new image beside old stats; now the signal waits for the last rename.
+// strace's fault injection delivers it at the first rename of the real binary.
+TEST_F(OutputBatchTest, SigtermDuringTheRenamesWaitsForTheLast) {
+  if (test::run_command("strace -f -qq -o /dev/null true") != 0) {
+    GTEST_SKIP() << "strace cannot trace here (no strace, or ptrace refused)";
+  }
+  const std::string scene = std::string(TRACER_SOURCE_DIR) + "/scenes/cornell-box.json";
+  std::ofstream(dir_ / "out.png") << "earlier image";
+  std::ofstream(dir_ / "stats.json") << "earlier stats";
+  std::string output;
+  test::run_command(
+      "strace -f -qq -o /dev/null -e trace=rename,renameat,renameat2 -e inject=rename,renameat,"
+      "renameat2:signal=TERM:when=1 " +
+          std::string(TRACER_BINARY) + " render " + scene + " --quiet --width 8 --height 6 --spp 1 -o " +
+          path("out.png") + " --stats " + path("stats.json"),
+      &output);
+  EXPECT_NE(test::read_file(dir_ / "out.png"), "earlier image") << output;
+  EXPECT_NE(test::read_file(dir_ / "stats.json"), "earlier stats") << output;
+  EXPECT_EQ(entries(dir_), 4u) << output;  // a, b, the image and the stats; no temporary
+}
+
 // The temporary's name was .STEM.tmpPID.EXT, opened with O_TRUNC: anyone who could write to
 // the directory could plant a symlink there and have the next render overwrite its target.
 TEST_F(OutputBatchTest, ASymlinkPlantedAtTheOldTemporaryNameIsNeverFollowed) {

@@ -5,6 +5,7 @@
 #include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "golden/golden_check.h"
+#include "golden/golden_lock.h"
 #include "golden/golden_report.h"
 #include "golden/golden_update.h"
 #include "io/input_error.h"
@@ -49,6 +50,7 @@ static int run_golden_check(const GoldenCheckCommand& cmd) {
   GoldenOutcome outcome;
   std::optional<GoldenRender> render;
   try {
+    const GoldenLock lock(cmd.root, GoldenAccess::Read);  // held until the reference is read
     manifest = read_manifest(cmd.root);
     entry = manifest.find(cmd.name);
     if (cmd.device != "cpu" && cmd.device != "cuda")
@@ -109,6 +111,7 @@ static int run_golden_report(const GoldenReportCommand& cmd) {
 }
 
 static int run_golden_list(const std::string& root) {
+  const GoldenLock lock(root, GoldenAccess::Read);
   for (const GoldenEntry& e : read_manifest(root).entries) std::printf("%s\n", e.name.c_str());
   return 0;
 }

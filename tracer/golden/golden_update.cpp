@@ -4,11 +4,12 @@
 #include <regex>
 
 #include "golden/golden_check.h"
+#include "golden/golden_lock.h"
 #include "golden/golden_manifest.h"
-#include "io/shell.h"
 #include "image/image_io.h"
 #include "image/pixel_hash.h"
 #include "io/input_error.h"
+#include "io/shell.h"
 
 namespace fs = std::filesystem;
 
@@ -57,6 +58,7 @@ std::vector<std::string> uncommitted_golden_edits(const std::string& root) {
 }
 
 std::vector<GoldenChange> update_goldens(const UpdateRequest& request) {
+  const GoldenLock lock(request.root, GoldenAccess::Write);
   if (!request.force) {
     const std::vector<std::string> edits = uncommitted_golden_edits(request.root);
     if (!edits.empty()) {
@@ -121,7 +123,7 @@ std::vector<GoldenChange> update_goldens(const UpdateRequest& request) {
     changes.push_back(p.change);
   }
   if (manifest_changed) add_manifest(outputs, manifest);
-  outputs.commit();
+  outputs.commit(golden_journal_path(request.root));
   return changes;
 }
 

@@ -2,7 +2,9 @@
 // only those that are new or differ (image and manifest entry). It refuses to run while
 // golden/ has uncommitted edits (git status), unless forced, so a regeneration is always
 // a reviewable commit of its own. Every golden is rendered before anything is written:
-// one bad scene leaves golden/ untouched.
+// one bad scene leaves golden/ untouched. It holds golden/ locked throughout and commits the
+// images and the manifest through a journal (golden_lock.h), so a second update waits and
+// a killed one leaves all old files or, once the next golden command has looked, all new.
 #pragma once
 #include <optional>
 #include <string>
