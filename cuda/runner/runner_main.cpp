@@ -14,6 +14,7 @@
 #include "cpu_film.h"
 #include "gpu_film.h"
 #include "image/pixel_hash.h"
+#include "io/out_of_memory.h"
 #include "io/output_paths.h"
 #include "io/text_file.h"
 #include "parity/parity_gpu.h"
@@ -90,7 +91,7 @@ struct Rendered {
   std::string hash;
 };
 
-Rendered render_bundle(const SceneBundle& b, const Options& o, const std::string& label) {
+Rendered render_bundle_unguarded(const SceneBundle& b, const Options& o, const std::string& label) {
   const SceneView view = b.view();
   Rendered r;
   for (uint32_t i = 0; i < o.repeat; ++i) {
@@ -116,6 +117,11 @@ Rendered render_bundle(const SceneBundle& b, const Options& o, const std::string
     r.hash = "sha1-film:" + sha.hex_digest();
   }
   return r;
+}
+
+Rendered render_bundle(const SceneBundle& b, const Options& o, const std::string& label) {
+  return naming_file_when_out_of_memory(label, "rendering the bundle",
+                                        [&] { return render_bundle_unguarded(b, o, label); });
 }
 
 void write_film(const std::string& path, const Rendered& r) {

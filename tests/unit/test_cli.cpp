@@ -155,10 +155,11 @@ TEST(Cli, StatsNameEveryAccelerationStructure) {
         << output;
     const Json stats = Json::parse(std::ifstream(dir / "stats.json"));
     EXPECT_EQ(stats["accel"]["kind"], accel);
-    if (accel == "none" || accel == "grid")
+    if (accel == "none" || accel == "grid") {
       EXPECT_EQ(stats["accel"]["nodes"], 0) << accel;
-    else
+    } else {
       EXPECT_GT(stats["accel"]["nodes"].get<int>(), 0) << accel;
+    }
     EXPECT_EQ(stats["accel"].contains("cells"), accel == "grid") << accel;
     if (accel == "grid") EXPECT_GT(stats["accel"]["cells"].get<int>(), 0);
   }

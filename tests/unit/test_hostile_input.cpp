@@ -6,10 +6,13 @@
 
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
+#include "bundle/scene_bundle.h"
 #include "bundle/sha1.h"
 #include "image/image_io.h"
+#include "scene/scene_loader.h"
 #include "test_util.h"
 
 namespace tracer {
@@ -53,6 +56,17 @@ class HostileInput : public ::testing::Test {
     return (dir_ / "s.json").string();
   }
   std::string out() const { return " --quiet -o " + (dir_ / "out.png").string(); }
+  // A real 2 x 2 render as EXR bytes; s.json is its scene.
+  std::string small_exr() {
+    scene_file(scene_text(R"("spp": 1)"));
+    std::string output;
+    EXPECT_EQ(test::run_tracer("render " + (dir_ / "s.json").string() + " --quiet --width 2 --height 2 -o " +
+                                   (dir_ / "small.exr").string(),
+                               &output),
+              0)
+        << output;
+    return test::read_file(dir_ / "small.exr");
+  }
   fs::path dir_;
 };
 
@@ -216,6 +230,8 @@ TEST_F(HostileInput, PartialFilesAreNotTrusted) {
   };
   merge_refuses(with_header("\"width\":8", "\"width\":4294967304"), "width: must fit in 32 bits");
   merge_refuses(with_header("\"width\":8", "\"width\":16384"), "truncated or oversized");
+  // The render it is a part of is held to render's limits (it was read as it came).
+  merge_refuses(with_header("\"spp\":4", "\"spp\":4294967295"), "spp: 4294967295 spp x 8 x 6 pixels is more than 2^36");
   std::string flipped = good;
   flipped[header_end + 5] ^= 0x10;
   merge_refuses(flipped, "do not match pixels_sha1");
@@ -228,6 +244,31 @@ TEST_F(HostileInput, PartialFilesAreNotTrusted) {
   const size_t sha_at = huge.find("\"pixels_sha1\":\"") + 15;
   huge.replace(sha_at, 40, h.hex_digest());
   merge_refuses(huge, "beyond 2^62");
+}
+
+// A scene bundle describes a render as a scene does, and is held to the same limits: tracer-gpu
+// rendered bundles asking for max_depth 1000, a 20000-pixel film or 2^37 samples.
+TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
+  const std::string scene_path = scene_file(scene_text(R"("spp": 1)"));
+  const Scene scene = load_scene(scene_path);
+  const std::string bundle = (dir_ / "b.bundle").string();
+  const std::vector<std::pair<std::function<void(RenderSettings&)>, std::string>> cases = {
+      {[](RenderSettings& s) { s.max_depth = 1000; }, "max_depth: must be at most 64 (the depth limit)"},
+      {[](RenderSettings& s) { s.width = 20000; }, "width: must be in [1, 16384] (the film's limit)"},
+      {[](RenderSettings& s) { s.spp = 4294967295u; }, "spp: 4294967295 spp x 8 x 6 pixels is more than 2^36 samples"},
+  };
+  for (const auto& [edit, expected] : cases) {
+    SceneBundle b = make_scene_bundle(scene, scene.view(), {0, 1}, scene_path);
+    edit(b.scalars.settings);
+    write_bundle(bundle, encode_scene_bundle(b));
+    std::string output;
+    EXPECT_EQ(test::run_command("timeout 30 " + std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu",
+                                &output),
+              2)
+        << expected << "\n"
+        << output;
+    EXPECT_NE(output.find("b.bundle: the bundle's render settings: " + expected), std::string::npos) << output;
+  }
 }
 
 // compare --diff and bench converge --csv/--plot had no check: naming an input (directly,
@@ -360,24 +401,13 @@ TEST_F(HostileInput, AManifestPathMayNotLeaveItsRoot) {
   }
 }
 
-// An EXR whose header declares 100000 x 100000 pixels (a real 2 x 2 render with its data and
-// display windows and line-offset table rewritten): every command that reads images allocated
-// its pixels first (120 GB) and stopped with OpenImageIO's raw allocation error, or was killed
-// where the allocation succeeded. The header is now checked against the film's limit first.
-TEST_F(HostileInput, AnImageHeaderIsCheckedBeforeItsPixelsAreAllocated) {
-  write(dir_ / "s.json", scene_text(R"("spp": 1)"));
-  std::string output;
-  ASSERT_EQ(test::run_tracer("render " + (dir_ / "s.json").string() + " --quiet --width 2 --height 2 -o " +
-                                 (dir_ / "small.exr").string(),
-                             &output),
-            0)
-      << output;
-  std::string exr = test::read_file(dir_ / "small.exr");
-  constexpr int32_t kSide = 100000;
+// A real EXR's header rewritten to declare side x side pixels (data and display windows, and a
+// line-offset table of that many chunks pointing past the end): a small file, a huge image.
+std::string exr_declaring(std::string exr, int32_t side) {
   for (const std::string& name : {std::string("dataWindow\0box2i\0", 17), std::string("displayWindow\0box2i\0", 20)}) {
     const size_t at = exr.find(name);
-    ASSERT_NE(at, std::string::npos);
-    const int32_t box[4] = {0, 0, kSide - 1, kSide - 1};
+    EXPECT_NE(at, std::string::npos);
+    const int32_t box[4] = {0, 0, side - 1, side - 1};
     exr.replace(at + name.size() + 4, 16, reinterpret_cast<const char*>(box), 16);
   }
   size_t end = 8;  // attributes: name\0 type\0 size value, up to an empty name
@@ -388,11 +418,20 @@ TEST_F(HostileInput, AnImageHeaderIsCheckedBeforeItsPixelsAreAllocated) {
     end = type_end + 5 + size;
   }
   ++end;
-  const uint64_t chunks = (kSide + 15) / 16, first = end + 8 * chunks;  // 16 lines a chunk (zip)
+  const uint64_t chunks = (side + 15) / 16, first = end + 8 * chunks;  // 16 lines a chunk (zip)
   std::string table;
   for (uint64_t i = 0; i < chunks; ++i) table.append(reinterpret_cast<const char*>(&first), 8);
   exr = exr.substr(0, end) + table + exr.substr(end + 8);
-  write(dir_ / "huge.exr", exr);
+  return exr;
+}
+
+// An EXR whose header declares 100000 x 100000 pixels (a real 2 x 2 render with its data and
+// display windows and line-offset table rewritten): every command that reads images allocated
+// its pixels first (120 GB) and stopped with OpenImageIO's raw allocation error, or was killed
+// where the allocation succeeded. The header is now checked against the film's limit first.
+TEST_F(HostileInput, AnImageHeaderIsCheckedBeforeItsPixelsAreAllocated) {
+  write(dir_ / "huge.exr", exr_declaring(small_exr(), 100000));
+  std::string output;
   for (const std::string& args : {"compare " + (dir_ / "huge.exr").string() + " " + (dir_ / "small.exr").string(),
                                   "compare " + (dir_ / "small.exr").string() + " " + (dir_ / "huge.exr").string()}) {
     EXPECT_EQ(run_limited(args, output), 2) << output;
@@ -400,6 +439,35 @@ TEST_F(HostileInput, AnImageHeaderIsCheckedBeforeItsPixelsAreAllocated) {
         << output;
     EXPECT_EQ(output.find("OIIO"), std::string::npos) << "a library message reached the user raw: " << output;
   }
+}
+
+// With less memory than an input needs (ulimit -v), compare of an image within the size
+// limit was killed by SIGSEGV (OpenImageIO's failed allocation went unnoticed), and a render
+// named only its command line. Every allocation failure is now reported with the file, exit 2.
+TEST_F(HostileInput, RunningOutOfMemoryNamesTheFileAndIsNeverASignal) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "ulimit -v cannot hold an AddressSanitizer build (its shadow memory reserves terabytes)";
+#endif
+  // 16384 x 16384 is within the limits; its 3.2 GB of floats are not within 1.5 GB.
+  write(dir_ / "big.exr", exr_declaring(small_exr(), 16384));
+  std::string output;
+  const std::string limited = "ulimit -v 1500000 && timeout 60 " + std::string(TRACER_BINARY) + " ";
+  const auto expect_out_of_memory = [&](const std::string& args, const std::string& expected) {
+    EXPECT_EQ(test::run_command(limited + args, &output), 2) << args << "\n" << output;
+    EXPECT_NE(output.find(expected), std::string::npos) << args << "\n" << output;
+  };
+  expect_out_of_memory("compare " + (dir_ / "big.exr").string() + " " + (dir_ / "small.exr").string(),
+                       "big.exr: cannot read image: out of memory for its 16384x16384x3 floats");
+  std::string text = scene_text("", R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "t"})");
+  text.replace(text.find(R"("materials": {)"), 14,
+               R"("materials": {"t": {"type": "lambert", "albedo": {"texture": "big.exr"}}, )");
+  write(dir_ / "textured.json", text);
+  expect_out_of_memory(
+      "render " + (dir_ / "textured.json").string() + out(),
+      "materials.t.albedo.texture: " + (dir_ / "big.exr").string() + ": cannot read image: out of memory");
+  expect_out_of_memory("render " + (dir_ / "s.json").string() + " --width 16384 --height 16384" + out(),
+                       "s.json: out of memory while allocating its 16384x16384 film");
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
 }
 
 }  // namespace

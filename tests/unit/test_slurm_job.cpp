@@ -122,8 +122,12 @@ TEST(SlurmJob, EveryKeyOfTheRecordIsChecked) {
       {R"("merge_job": "12")", R"("merge_job": "")"},
       {R"("spp": 8)", R"("spp": 0)"},
       {R"("ranges": [)", R"("ranges": [[0, 1], )"},
+      {R"("spp": 8)", R"("spp": 4294967304)"},  // 2^32 + 8 was read as 8
+      {R"("cpus_per_task": 1)", R"("cpus_per_task": 4294967297)"},
+      {R"("cpus_per_task": 1)", R"("cpus_per_task": 0)"},
   };
-  const std::vector<std::string> keys = {"array_jobs", "array_jobs", "merge_job", "spp", "ranges"};
+  const std::vector<std::string> keys = {"array_jobs", "array_jobs", "merge_job",     "spp",
+                                         "ranges",     "spp",        "cpus_per_task", "cpus_per_task"};
   for (size_t i = 0; i < broken.size(); ++i) {
     std::string text = good;
     const size_t at = text.find(broken[i].first);

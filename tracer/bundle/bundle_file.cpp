@@ -1,5 +1,6 @@
 #include "bundle_file.h"
 
+#include "io/out_of_memory.h"
 #include "io/output_batch.h"
 #include "io/text_file.h"
 #include "sha1.h"
@@ -89,7 +90,9 @@ void write_bundle(const std::string& path, const BundleFile& bundle) {
 }
 
 BundleFile read_bundle(const std::string& path, const std::string& expected_kind) {
-  return decode_bundle(read_text_file(path, "bundle", kBundleMaxBytes), path, expected_kind);
+  return naming_file_when_out_of_memory(path, "reading the bundle", [&] {
+    return decode_bundle(read_text_file(path, "bundle", kBundleMaxBytes), path, expected_kind);
+  });
 }
 
 BundleFile decode_bundle(const std::string& bytes, const std::string& path, const std::string& expected_kind) {

@@ -1,9 +1,9 @@
 #include "scene_bundle.h"
 
+#include "options/work_limits.h"
+
 namespace tracer {
 namespace {
-
-constexpr uint64_t kMaxPixels = 1ull << 28;
 
 SceneView without_pointers(SceneView view) {
 #define TRACER_NULL_POINTER(Type, name) view.name = nullptr;
@@ -47,10 +47,10 @@ SceneBundle decode_scene_bundle(const BundleFile& file, const std::string& path)
   TRACER_SCENE_ARRAYS(TRACER_GET_ARRAY)
 #undef TRACER_GET_ARRAY
   const RenderSettings& rs = b.scalars.settings;
-  if (rs.width == 0 || rs.height == 0 || static_cast<uint64_t>(rs.width) * rs.height > kMaxPixels)
-    throw InputError(path + ": bundle image of " + std::to_string(rs.width) + "x" + std::to_string(rs.height) +
-                     " pixels (1 to 2^28 pixels)");
-  if (rs.spp == 0 || b.range.begin >= b.range.end || b.range.end > rs.spp)
+  // The render it describes is within the limits render applies to a scene.
+  if (const auto v = work_limit_violation(rs.width, rs.height, rs.spp, rs.max_depth))
+    throw InputError(path + ": the bundle's render settings: " + v->key + ": " + v->reason);
+  if (b.range.begin >= b.range.end || b.range.end > rs.spp)
     throw InputError(path + ": bundle sample range [" + std::to_string(b.range.begin) + ", " +
                      std::to_string(b.range.end) + ") is not inside [0, " + std::to_string(rs.spp) + ")");
   return b;

@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
+#include "io/out_of_memory.h"
 #include "io/output_paths.h"
 #include "render/partial_file.h"
 
@@ -55,7 +56,8 @@ static int run_merge(const MergeCommand& cmd) {
     throw InputError(cmd.parts.front() + "...: no part holds samples [" + std::to_string(next) + ", " +
                      std::to_string(spp) + ")");
 
-  FilmBuffer total = parts.front().second.film;
+  FilmBuffer total =
+      naming_file_when_out_of_memory(cmd.output, "merging the parts", [&] { return parts.front().second.film; });
   total.range = {0, spp};
   uint64_t nonfinite = 0, overflow = 0;
   for (size_t k = 1; k < parts.size(); ++k) {
@@ -73,7 +75,8 @@ static int run_merge(const MergeCommand& cmd) {
     }
   }
   for (const FilmSum& s : total.pixels) nonfinite += s.nonfinite, overflow += s.overflow;
-  write_image(resolve_film(total, spp), cmd.output);
+  naming_file_when_out_of_memory(cmd.output, "writing the merged image",
+                                 [&] { write_image(resolve_film(total, spp), cmd.output); });
   std::printf("merged %zu parts, samples [0, %u), %llu NaN/inf samples, %llu overflowing samples: wrote %s\n",
               parts.size(), spp, static_cast<unsigned long long>(nonfinite), static_cast<unsigned long long>(overflow),
               std::filesystem::absolute(cmd.output).string().c_str());

@@ -12,6 +12,7 @@
 #include "cli/commands.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
+#include "io/out_of_memory.h"
 #include "io/output_batch.h"
 #include "io/output_paths.h"
 #include "io/text_file.h"
@@ -92,14 +93,17 @@ static int run_render(const RenderCommand& cmd) {
   CudaRunInfo cuda;
   Partial part;
   const auto t_render = Clock::now();
-  if (cmd.device == "cuda") {
-    part.film = render_cuda_film(scene, range, stats, cuda);  // one launch: no progress to draw
-  } else {
-    const uint64_t tiles = ((rs.width + 15) / 16) * static_cast<uint64_t>((rs.height + 15) / 16);
-    ProgressBar bar(tiles, !cmd.quiet);
-    part.film = render_cpu_film(scene, range, cmd.threads, stats, [&](uint64_t done, uint64_t) { bar.update(done); });
-    bar.finish();
-  }
+  const std::string film_size = std::to_string(rs.width) + "x" + std::to_string(rs.height);
+  naming_file_when_out_of_memory(cmd.scene, "allocating its " + film_size + " film", [&] {
+    if (cmd.device == "cuda") {
+      part.film = render_cuda_film(scene, range, stats, cuda);  // one launch: no progress to draw
+    } else {
+      const uint64_t tiles = ((rs.width + 15) / 16) * static_cast<uint64_t>((rs.height + 15) / 16);
+      ProgressBar bar(tiles, !cmd.quiet);
+      part.film = render_cpu_film(scene, range, cmd.threads, stats, [&](uint64_t done, uint64_t) { bar.update(done); });
+      bar.finish();
+    }
+  });
   const double render_s = seconds_since(t_render);
   // The image (or partial file) and the --stats file land together or not at all.
   OutputBatch outputs;

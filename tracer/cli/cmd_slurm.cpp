@@ -152,7 +152,7 @@ const RegisterCommand kSlurmSubmit(
        app.add_option("--sbatch", cmd->sbatch_args, "an sbatch option for every job, e.g. --sbatch=--partition=gpu")
            ->allow_extra_args(false);
        app.add_option("--cpus-per-task", cmd->cpus_per_task, "CPUs of each task (its render threads; default 1)")
-           ->check(count_in(1, 1024));
+           ->check(count_in(1, kMaxCpusPerTask));
        app.add_flag("--wait", cmd->wait, "wait for the image, resubmitting missing ranges (see slurm wait)");
        app.add_option("--retries", cmd->retries, "resubmissions of missing ranges with --wait (default 2)")
            ->check(count_in(0, 100));

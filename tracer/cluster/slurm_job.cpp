@@ -100,10 +100,12 @@ SlurmJob read_job_record(const std::string& dir) {
   job.dir = std::filesystem::absolute(dir).lexically_normal().string();
   job.scene = obj.string("scene");
   job.output = obj.string("output");
-  job.spp = static_cast<uint32_t>(obj.unsigned_integer("spp"));
-  job.cpus_per_task = static_cast<uint32_t>(obj.unsigned_integer("cpus_per_task"));
+  job.spp = obj.unsigned_integer_32("spp");  // 2^32 + 1 was read as 1
+  job.cpus_per_task = obj.unsigned_integer_32("cpus_per_task");
   job.merge_job = obj.string("merge_job");
   if (job.spp == 0) obj.fail("spp", "expected at least 1");
+  if (job.cpus_per_task == 0 || job.cpus_per_task > kMaxCpusPerTask)
+    obj.fail("cpus_per_task", "expected 1 to " + std::to_string(kMaxCpusPerTask) + " (the --cpus-per-task limit)");
   if (job.merge_job.empty()) obj.fail("merge_job", "expected the merge job's id");
   // The ranges are the balanced ones submit wrote, entry by entry.
   const Json& ranges = obj.get("ranges");

@@ -11,6 +11,8 @@
 
 namespace tracer {
 
+constexpr uint32_t kMaxCpusPerTask = 1024;  // --cpus-per-task, and the record's cpus_per_task
+
 struct SlurmJob {
   std::string dir;            // absolute job directory (shared)
   std::string scene, output;  // absolute paths

@@ -82,33 +82,50 @@ void check_image_output(const std::string& path, const std::string& option) {
     throw InputError(path + ": " + option + ": no image writer for extension " + p.extension().string());
 }
 
-constexpr int kMaxImageSide = 16384;   // the film's limit (docs/scene-format.md)
-constexpr int kMaxImageChannels = 64;  // RGB, alpha and a few AOVs; a header asking for more is refused
-
-Image read_image(const std::string& path) {
+ImagePixels read_image_pixels(const std::string& path, int max_channels_read) {
   // A FIFO or a device would block OpenImageIO or never end.
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": cannot read image: no such file");
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": cannot read image: not a regular file");
-  OIIO::ImageBuf buf(path);
+  const std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+  if (!in) throw InputError(path + ": cannot read image: " + OIIO::geterror());
   // The header is input too: its size is checked before any pixel is allocated.
-  if (!buf.init_spec(path, 0, 0)) throw InputError(path + ": cannot read image: " + buf.geterror());
-  const OIIO::ImageSpec& header = buf.spec();
-  if (header.width < 1 || header.height < 1 || header.width > kMaxImageSide || header.height > kMaxImageSide)
+  const OIIO::ImageSpec& header = in->spec();
+  if (header.width < 1 || header.height < 1 || header.width > kMaxImageSide || header.height > kMaxImageSide ||
+      header.depth != 1)
     throw InputError(path + ": cannot read image: its header declares " + std::to_string(header.width) + "x" +
                      std::to_string(header.height) + " pixels; images are 1 to " + std::to_string(kMaxImageSide) +
                      " pixels on a side, as the film");
-  if (header.nchannels < 3 || header.nchannels > kMaxImageChannels)
+  if (header.nchannels < 1 || header.nchannels > kMaxImageChannels)
+    throw InputError(path + ": cannot read image: its header declares " + std::to_string(header.nchannels) +
+                     " channels; images have 1 to " + std::to_string(kMaxImageChannels));
+  ImagePixels image;
+  image.width = static_cast<uint32_t>(header.width);
+  image.height = static_cast<uint32_t>(header.height);
+  image.channels = header.nchannels;
+  image.channels_read = std::min(header.nchannels, max_channels_read);
+  image.float_format = header.format.is_floating_point();
+  const size_t count = size_t{image.width} * image.height * static_cast<size_t>(image.channels_read);
+  try {
+    image.values.resize(count);
+  } catch (const std::bad_alloc&) {
+    throw InputError(path + ": cannot read image: out of memory for its " + std::to_string(image.width) + "x" +
+                     std::to_string(image.height) + "x" + std::to_string(image.channels_read) + " floats");
+  }
+  if (!in->read_image(0, 0, 0, image.channels_read, OIIO::TypeDesc::FLOAT, image.values.data()))
+    throw InputError(path + ": cannot read image: " + in->geterror());
+  return image;
+}
+
+Image read_image(const std::string& path) {
+  ImagePixels pixels = read_image_pixels(path, 3);
+  if (pixels.channels < 3)
     throw InputError(path + ": cannot read image: expected 3 to " + std::to_string(kMaxImageChannels) +
-                     " channels, got " + std::to_string(header.nchannels));
-  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) throw InputError(path + ": cannot read image: " + buf.geterror());
-  const OIIO::ImageSpec& spec = buf.spec();
+                     " channels, got " + std::to_string(pixels.channels));
   Image image;
-  image.width = static_cast<uint32_t>(spec.width);
-  image.height = static_cast<uint32_t>(spec.height);
-  image.rgb.resize(static_cast<size_t>(spec.width) * spec.height * 3);
-  buf.get_pixels(OIIO::ROI(spec.x, spec.x + spec.width, spec.y, spec.y + spec.height, 0, 1, 0, 3),
-                 OIIO::TypeDesc::FLOAT, image.rgb.data());
+  image.width = pixels.width;
+  image.height = pixels.height;
+  image.rgb = std::move(pixels.values);
   return image;
 }
 

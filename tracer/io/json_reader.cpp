@@ -184,6 +184,12 @@ uint64_t JsonObject::unsigned_integer(const std::string& key) {
   return v.get<uint64_t>();
 }
 
+uint32_t JsonObject::unsigned_integer_32(const std::string& key) {
+  const uint64_t v = unsigned_integer(key);
+  if (v > UINT32_MAX) fail(key, "must fit in 32 bits, got " + std::to_string(v));
+  return static_cast<uint32_t>(v);
+}
+
 Vec3 JsonObject::vec3(const std::string& key) { return read_vec3(get(key), child(key), file_); }
 
 Vec3 JsonObject::vec3_or(const std::string& key, Vec3 fallback) {

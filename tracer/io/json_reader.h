@@ -31,6 +31,7 @@ class JsonObject {
   float number(const std::string& key);
   float number_or(const std::string& key, float fallback);
   uint64_t unsigned_integer(const std::string& key);
+  uint32_t unsigned_integer_32(const std::string& key);  // error beyond 2^32 - 1, never truncated
   Vec3 vec3(const std::string& key);
   Vec3 vec3_or(const std::string& key, Vec3 fallback);
   Vec3 color(const std::string& key);  // non-negative RGB; textures are a later issue

@@ -4,26 +4,23 @@
 
 #include "bundle/sha1.h"
 #include "io/input_error.h"
+#include "io/out_of_memory.h"
 #include "io/text_file.h"
 #include "options/number_text.h"
+#include "options/work_limits.h"
 
 namespace tracer {
 namespace {
 
 constexpr const char* kMagic = "tracer-partial/2";
-constexpr uint32_t kMaxSide = 16384;  // film.width and film.height, as the loader allows
+// A header line, then the largest film the limits allow: read_text_file refuses more unread.
+constexpr uint64_t kMaxPartialBytes = (1u << 20) + uint64_t{kMaxResolution} * kMaxResolution * sizeof(FilmSum);
 static_assert(sizeof(FilmSum) == 32, "the partial file stores film sums as 32 bytes");
 
 std::string pixels_sha1(const FilmSum* pixels, size_t count) {
   Sha1 h;
   h.append(pixels, count * sizeof(FilmSum));
   return h.hex_digest();
-}
-
-uint32_t read_u32(JsonObject& obj, const std::string& key) {
-  const uint64_t v = obj.unsigned_integer(key);
-  if (v > 0xffffffffu) obj.fail(key, "must fit in 32 bits, got " + std::to_string(v));
-  return static_cast<uint32_t>(v);
 }
 
 }  // namespace
@@ -48,8 +45,10 @@ std::string encode_partial(const Partial& partial) {
   return bytes;
 }
 
-Partial read_partial(const std::string& path) {
-  const std::string bytes = read_text_file(path, "partial file");
+namespace {
+
+Partial read_partial_unguarded(const std::string& path) {
+  const std::string bytes = read_text_file(path, "partial file", kMaxPartialBytes);
   const size_t magic_end = bytes.find('\n');
   if (magic_end == std::string::npos || bytes.compare(0, magic_end, kMagic) != 0)
     throw InputError(path + ": not a partial file (expected the line \"" + std::string(kMagic) + "\")");
@@ -61,11 +60,11 @@ Partial read_partial(const std::string& path) {
   p.header.scene = obj.string("scene");
   p.header.scene_sha1 = obj.string("scene_sha1");
   p.header.render = obj.get("render");
-  p.header.spp = read_u32(obj, "spp");
+  p.header.spp = obj.unsigned_integer_32("spp");
   p.header.nonfinite = obj.unsigned_integer("nonfinite");
   p.header.overflow = obj.unsigned_integer("overflow");
-  p.film.width = read_u32(obj, "width");
-  p.film.height = read_u32(obj, "height");
+  p.film.width = obj.unsigned_integer_32("width");
+  p.film.height = obj.unsigned_integer_32("height");
   const std::string sha1 = obj.string("pixels_sha1");
   const Json& samples = obj.get("samples");
   if (!samples.is_array() || samples.size() != 2 || !samples[0].is_number_unsigned() ||
@@ -76,8 +75,8 @@ Partial read_partial(const std::string& path) {
   obj.finish();
   if (!(p.film.range.begin < p.film.range.end && p.film.range.end <= p.header.spp))
     obj.fail("samples", "expected 0 <= begin < end <= spp");
-  for (const auto& [side, name] : {std::pair{p.film.width, "width"}, std::pair{p.film.height, "height"}})
-    if (side < 1 || side > kMaxSide) obj.fail(name, "must be in [1, " + std::to_string(kMaxSide) + "]");
+  // The render it is a part of is within the limits render applies (max_depth is in "render").
+  if (const auto v = work_limit_violation(p.film.width, p.film.height, p.header.spp, 0)) obj.fail(v->key, v->reason);
   // The size is checked before anything is allocated for the pixels.
   const size_t count = static_cast<size_t>(p.film.width) * p.film.height;
   if (bytes.size() - header_end - 1 != count * sizeof(FilmSum))
@@ -93,6 +92,12 @@ Partial read_partial(const std::string& path) {
         throw InputError(path + ": pixel " + std::to_string(i) +
                          " holds a film sum beyond 2^62 (not written by tracer)");
   return p;
+}
+
+}  // namespace
+
+Partial read_partial(const std::string& path) {
+  return naming_file_when_out_of_memory(path, "reading the partial file", [&] { return read_partial_unguarded(path); });
 }
 
 SampleRange parse_sample_range(const std::string& text, uint32_t spp) {

@@ -6,6 +6,7 @@
 #include "accel/acceleration.h"
 #include "accel/bounds.h"
 #include "io/json_reader.h"
+#include "io/out_of_memory.h"
 #include "io/text_file.h"
 #include "scene/camera_setup.h"
 #include "scene/light_reader.h"
@@ -64,9 +65,7 @@ void install_acceleration(Acceleration a, Scene& scene) {
   scene.grid_prims = std::move(a.grid.prims);
 }
 
-}  // namespace
-
-Scene load_scene_text(const std::string& text, const std::string& path, const RenderOverrides& overrides) {
+Scene load_scene_unguarded(const std::string& text, const std::string& path, const RenderOverrides& overrides) {
   Scene scene;
   scene.file = path;
   const Json root = parse_json_text(text, path);
@@ -121,6 +120,13 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
                        scene);
   scene.report.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
   return scene;
+}
+
+}  // namespace
+
+Scene load_scene_text(const std::string& text, const std::string& path, const RenderOverrides& overrides) {
+  return naming_file_when_out_of_memory(path, "loading the scene, its meshes and textures and building its accelerator",
+                                        [&] { return load_scene_unguarded(text, path, overrides); });
 }
 
 Scene load_scene(const std::string& path, const RenderOverrides& overrides) {

@@ -30,19 +30,10 @@ RenderSettings read_settings(const Json* render, const Json& film, const std::st
   used_types.insert(std::string("sampler:") + enum_name(rs.sampler));
   used_types.insert(std::string("integrator:") + enum_name(rs.integrator));
   used_types.insert(std::string("accel:") + enum_name(rs.accel));
-  if (rs.spp == 0) throw InputError(where("spp") + ": spp must be at least 1");
-  if (rs.max_depth > kMaxDepth) throw InputError(where("max_depth") + ": must be at most " + std::to_string(kMaxDepth));
   if (rs.grid_resolution > 1024)
     throw InputError(where("grid_resolution") + ": must be at most 1024 cells along the longest axis");
-  for (const auto& [size, name] : {std::pair{rs.width, "width"}, std::pair{rs.height, "height"}})
-    if (size < 1 || size > kMaxResolution)
-      throw InputError(where(name) + ": must be in [1, " + std::to_string(kMaxResolution) + "], got " +
-                       std::to_string(size));
-  const uint64_t samples = static_cast<uint64_t>(rs.spp) * rs.width * rs.height;
-  if (samples > kMaxSamples)
-    throw InputError(where("spp") + ": " + std::to_string(rs.spp) + " spp x " + std::to_string(rs.width) + " x " +
-                     std::to_string(rs.height) +
-                     " pixels is more than 2^36 samples (hours on one machine); lower spp or the film size");
+  if (const auto v = work_limit_violation(rs.width, rs.height, rs.spp, rs.max_depth))
+    throw InputError(where(v->key) + ": " + v->reason);
   rs.grid_n = 1;
   while (static_cast<uint64_t>(rs.grid_n) * rs.grid_n < rs.spp) ++rs.grid_n;
   const bool square = static_cast<uint64_t>(rs.grid_n) * rs.grid_n == rs.spp;

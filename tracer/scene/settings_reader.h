@@ -7,11 +7,9 @@
 
 #include "io/json_reader.h"
 #include "options/render_options.h"
+#include "options/work_limits.h"
 
 namespace tracer {
-
-constexpr uint32_t kMaxResolution = 16384;    // film.width and film.height at most
-constexpr uint64_t kMaxSamples = 1ull << 36;  // spp x width x height at most: hours on one machine
 
 // Also records the integrator, sampler and accel in `used_types` ("sampler:grid").
 RenderSettings read_settings(const Json* render, const Json& film, const std::string& file,

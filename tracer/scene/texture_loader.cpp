@@ -1,15 +1,12 @@
 #include "scene/texture_loader.h"
 
-#include <OpenImageIO/imagebuf.h>
-
 #include <cmath>
 #include <filesystem>
 
+#include "image/image_io.h"
 #include "kernel/base/detmath.h"
 
 namespace tracer {
-
-constexpr int kMaxTextureSide = 16384;  // texels on a side, as the film
 
 std::string TextureLoader::resolve(const std::string& file) const {
   return (std::filesystem::path(dir_) / file).string();
@@ -112,43 +109,37 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& path,
   scene_.report.input_files.insert(path);
   if (!std::filesystem::exists(path)) fail_at(scene_file, where, "image " + path + " does not exist");
   if (!std::filesystem::is_regular_file(path)) fail_at(scene_file, where, "image " + path + " is not a regular file");
-  OIIO::ImageBuf buf(path);
-  const OIIO::ImageSpec& header = buf.spec();  // read before the pixels: refuse huge images unread
-  if (header.width > kMaxTextureSide || header.height > kMaxTextureSide)
-    fail_at(scene_file, where,
-            path + ": " + std::to_string(header.width) + "x" + std::to_string(header.height) + " is larger than " +
-                std::to_string(kMaxTextureSide) + " texels on a side");
-  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-    fail_at(scene_file, where, "cannot read image " + path + ": " + buf.geterror());
-  const OIIO::ImageSpec& s = buf.spec();
-  if (s.nchannels != 1 && s.nchannels != 3 && s.nchannels != 4)
-    fail_at(scene_file, where, path + ": expected 1, 3 or 4 channels, got " + std::to_string(s.nchannels));
-  if (s.width < 1 || s.height < 1) fail_at(scene_file, where, path + ": empty image");
-  const bool srgb = !data && !buf.nativespec().format.is_floating_point();
-  std::vector<float> pixels(size_t(s.width) * s.height * s.nchannels);
-  buf.get_pixels(OIIO::ROI(s.x, s.x + s.width, s.y, s.y + s.height, 0, 1, 0, s.nchannels), OIIO::TypeDesc::FLOAT,
-                 pixels.data());
+  ImagePixels pixels;
+  try {
+    pixels = read_image_pixels(path, 4);
+  } catch (const InputError& e) {
+    fail_at(scene_file, where, e.what());
+  }
+  const int channels = pixels.channels;
+  if (channels != 1 && channels != 3 && channels != 4)
+    fail_at(scene_file, where, path + ": expected 1, 3 or 4 channels, got " + std::to_string(channels));
+  const bool srgb = !data && !pixels.float_format;
   Texture t{};
   t.kind = TextureKind::Image;
   t.wrap = wrap;
-  t.width = static_cast<uint32_t>(s.width);
-  t.height = static_cast<uint32_t>(s.height);
+  t.width = pixels.width;
+  t.height = pixels.height;
   t.offset = static_cast<uint32_t>(scene_.texels.size());
   double sum[3] = {0, 0, 0};
-  for (size_t p = 0; p < size_t(s.width) * s.height; ++p)
+  for (size_t p = 0; p < size_t{pixels.width} * pixels.height; ++p)
     for (int c = 0; c < 3; ++c) {
-      float v = pixels[p * s.nchannels + (s.nchannels == 1 ? 0 : c)];
+      float v = pixels.values[p * channels + (channels == 1 ? 0 : c)];
       if (srgb) v = srgb_to_linear(v);
       // A NaN, inf or (in a colour) negative texel would reach the film as NaN or negative light.
       if (!std::isfinite(v) || (!data && v < 0.0f))
         fail_at(scene_file, where,
-                path + ": texel (" + std::to_string(p % s.width) + ", " + std::to_string(p / s.width) + ") channel " +
-                    std::to_string(c) + " is " + std::to_string(v) + "; texels must be finite" +
+                path + ": texel (" + std::to_string(p % pixels.width) + ", " + std::to_string(p / pixels.width) +
+                    ") channel " + std::to_string(c) + " is " + std::to_string(v) + "; texels must be finite" +
                     (data ? "" : " and >= 0"));
       scene_.texels.push_back(v);
       sum[c] += v;
     }
-  const double n = double(s.width) * s.height;
+  const double n = double(pixels.width) * pixels.height;
   mean = {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
   const uint32_t index = static_cast<uint32_t>(scene_.textures.size());
   scene_.textures.push_back(t);
