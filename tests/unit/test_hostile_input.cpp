@@ -470,5 +470,24 @@ TEST_F(HostileInput, RunningOutOfMemoryNamesTheFileAndIsNeverASignal) {
   EXPECT_FALSE(fs::exists(dir_ / "out.png"));
 }
 
+// A filesystem error reached the user as libstdc++ words it ("filesystem error: cannot create
+// directories: Not a directory [r/rows]"), and golden check rendered (or failed on its scene)
+// before it found that --report could not be made.
+TEST_F(HostileInput, LibraryErrorsAreWordedAsTheTracersAndChecksComeFirst) {
+  write(dir_ / "afile", "a file, not a directory");
+  fs::create_directories(dir_ / "root" / "golden");
+  write(dir_ / "root" / "golden" / "manifest.json",
+        R"({"format": "tracer-golden/1", "goldens": {"a": {"scene": "missing.json"}}})");
+  const std::string report = (dir_ / "afile" / "sub").string();
+  std::string output;
+  EXPECT_EQ(run_limited("golden check a --root " + (dir_ / "root").string() + " --report " + report, output), 2);
+  EXPECT_NE(output.find(report + ": --report: cannot make the report directory: Not a directory"), std::string::npos)
+      << output;
+  EXPECT_EQ(output.find("missing.json"), std::string::npos) << "the check ran before --report was checked: " << output;
+  EXPECT_EQ(run_limited("golden report --report " + report, output), 2);
+  EXPECT_NE(output.find(report + "/rows: cannot create directories: Not a directory"), std::string::npos) << output;
+  EXPECT_EQ(output.find("filesystem error"), std::string::npos) << output;
+}
+
 }  // namespace
 }  // namespace tracer

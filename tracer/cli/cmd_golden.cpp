@@ -49,6 +49,7 @@ static int run_golden_check(const GoldenCheckCommand& cmd) {
   entry.scene = "(unknown)";
   GoldenOutcome outcome;
   std::optional<GoldenRender> render;
+  if (!cmd.report.empty()) prepare_report_dir(cmd.report);  // before the render it would report
   try {
     const GoldenLock lock(cmd.root, GoldenAccess::Read);  // held until the reference is read
     manifest = read_manifest(cmd.root);

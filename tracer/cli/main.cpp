@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <map>
 #include <new>
 #include <string>
@@ -16,6 +17,18 @@ namespace tracer {
 std::vector<CommandSpec>& command_registry() {
   static std::vector<CommandSpec> commands;
   return commands;
+}
+
+// libstdc++ says "filesystem error: cannot OP: REASON [PATH1] [PATH2]"; the tracer says
+// "PATH1: cannot OP (PATH2): REASON", as every other refusal names its file first.
+std::string describe_filesystem_error(const std::filesystem::filesystem_error& e) {
+  const std::string what = e.what(), reason = e.code().message();
+  const std::string prefix = "filesystem error: ";
+  std::string operation = what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what;
+  operation = operation.substr(0, operation.find(": " + reason));
+  std::string text = e.path1().empty() ? operation : e.path1().string() + ": " + operation;
+  if (!e.path2().empty()) text += " (" + e.path2().string() + ")";
+  return text + ": " + reason;
 }
 
 }  // namespace tracer
@@ -63,6 +76,8 @@ int main(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
     std::fprintf(stderr, "error: out of memory: `%s` needs more memory than this machine gives\n",
                  command.substr(0, 400).c_str());
+  } catch (const std::filesystem::filesystem_error& e) {  // named as the tracer names files, not as libstdc++ does
+    std::fprintf(stderr, "error: %s\n", describe_filesystem_error(e).c_str());
   } catch (const std::exception& e) {  // InputError, DeviceUnavailable, CUDA errors, I/O
     std::fprintf(stderr, "error: %s\n", e.what());
   }

@@ -173,6 +173,16 @@ void ensure_report_dir(const fs::path& dir) {
 
 }  // namespace
 
+void prepare_report_dir(const std::string& report_dir) {
+  const fs::path dir(report_dir);
+  try {
+    ensure_report_dir(dir);
+    fs::create_directories(dir / "rows");
+  } catch (const fs::filesystem_error& e) {
+    throw InputError(report_dir + ": --report: cannot make the report directory: " + e.code().message());
+  }
+}
+
 void write_report_row(const std::string& report_dir, const GoldenManifest& manifest, const GoldenEntry& entry,
                       const GoldenRender* render, const GoldenOutcome& outcome) {
   const fs::path dir(report_dir);

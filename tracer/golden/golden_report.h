@@ -16,6 +16,10 @@ struct ReportCounts {
 
 // Writes the row (and, unless the golden passed, its images). `render` is null when the
 // golden could not be rendered.
+// Before a check renders: makes REPORT_DIR a marked report directory when nothing is there,
+// or InputError naming it and --report when it cannot hold rows.
+void prepare_report_dir(const std::string& report_dir);
+
 void write_report_row(const std::string& report_dir, const GoldenManifest& manifest, const GoldenEntry& entry,
                       const GoldenRender* render, const GoldenOutcome& outcome);
 
