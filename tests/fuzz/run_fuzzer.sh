@@ -3,6 +3,7 @@
 # copied into a work corpus under the build tree, mutated for SECONDS with the target's
 # dictionary, each input limited to 10 s and 2 GiB; any crash, hang, leak or sanitizer report
 # exits non-zero and leaves its input under WORK/artifacts/. Prints how many inputs ran.
+# suppressions/NAME.lsan, where present, lists library leaks the target may not report.
 # Usage: run_fuzzer.sh FUZZER SOURCE_DIR NAME SECONDS WORK
 set -euo pipefail
 fuzzer=$1 source=$2 name=$3 seconds=$4 work=$5
@@ -11,6 +12,12 @@ mkdir -p "$work/corpus" "$work/artifacts"
 cp "$source/corpus/$name"/* "$work/corpus/"
 dict=()
 [ -f "$source/dict/$name.dict" ] && dict=("-dict=$source/dict/$name.dict")
+# A target whose libraries leak where we cannot free (suppressions/NAME.lsan says what and why)
+# needs full malloc stacks: the libraries are built without frame pointers.
+if [ -f "$source/suppressions/$name.lsan" ]; then
+  export LSAN_OPTIONS="suppressions=$source/suppressions/$name.lsan${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+  export ASAN_OPTIONS="fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+fi
 set +e
 "$fuzzer" "$work/corpus" "${dict[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
   -max_len=65536 -print_final_stats=1 -artifact_prefix="$work/artifacts/" 2>"$work/log"

@@ -489,5 +489,22 @@ TEST_F(HostileInput, LibraryErrorsAreWordedAsTheTracersAndChecksComeFirst) {
   EXPECT_EQ(output.find("filesystem error"), std::string::npos) << output;
 }
 
+// OpenEXR allocates an attribute's declared size before reading it: a few hundred bytes that
+// declare a 1 GiB string made every image-reading command allocate 1 GiB (fuzz.image found it).
+// Every attribute must now fit in the file before OpenImageIO opens it.
+TEST_F(HostileInput, AnExrAttributeLargerThanItsFileIsRefusedUnread) {
+  std::string exr = small_exr();
+  const std::string attribute = std::string("comments\0string\0", 16) + std::string("\0\0\0\x40", 4) + "tiny";
+  exr.insert(8, attribute);  // after the magic number and the version field
+  write(dir_ / "bomb.exr", exr);
+  std::string output;
+  EXPECT_EQ(run_limited("compare " + (dir_ / "bomb.exr").string() + " " + (dir_ / "small.exr").string(), output), 2)
+      << output;
+  EXPECT_NE(output.find("bomb.exr: cannot read image: its EXR header attribute comments (string) declares 1073741824 "
+                        "bytes"),
+            std::string::npos)
+      << output;
+}
+
 }  // namespace
 }  // namespace tracer

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "image/exr_header_check.h"
 #include "io/input_error.h"
 #include "io/output_paths.h"
 #include "kernel/base/detmath.h"
@@ -82,20 +83,21 @@ void check_image_output(const std::string& path, const std::string& option) {
     throw InputError(path + ": " + option + ": no image writer for extension " + p.extension().string());
 }
 
-ImagePixels read_image_pixels(const std::string& path, int max_channels_read) {
+ImagePixels read_image_pixels(const std::string& path, int max_channels_read, int max_side) {
   // A FIFO or a device would block OpenImageIO or never end.
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": cannot read image: no such file");
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": cannot read image: not a regular file");
+  check_exr_header_sizes(path);
   const std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
   if (!in) throw InputError(path + ": cannot read image: " + OIIO::geterror());
   // The header is input too: its size is checked before any pixel is allocated.
   const OIIO::ImageSpec& header = in->spec();
-  if (header.width < 1 || header.height < 1 || header.width > kMaxImageSide || header.height > kMaxImageSide ||
-      header.depth != 1)
+  max_side = std::min(max_side, kMaxImageSide);
+  if (header.width < 1 || header.height < 1 || header.width > max_side || header.height > max_side || header.depth != 1)
     throw InputError(path + ": cannot read image: its header declares " + std::to_string(header.width) + "x" +
-                     std::to_string(header.height) + " pixels; images are 1 to " + std::to_string(kMaxImageSide) +
-                     " pixels on a side, as the film");
+                     std::to_string(header.height) + " pixels; images are 1 to " + std::to_string(max_side) +
+                     " pixels on a side" + (max_side == kMaxImageSide ? ", as the film" : ""));
   if (header.nchannels < 1 || header.nchannels > kMaxImageChannels)
     throw InputError(path + ": cannot read image: its header declares " + std::to_string(header.nchannels) +
                      " channels; images have 1 to " + std::to_string(kMaxImageChannels));

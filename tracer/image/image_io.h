@@ -26,9 +26,10 @@ struct ImagePixels {
 };
 
 // The one reader of image files (compare, references, textures): a regular file, its header
-// checked against the limits above, then the first min(channels, max_channels_read) channels.
-// InputError naming the path when any of that fails, an allocation included.
-ImagePixels read_image_pixels(const std::string& path, int max_channels_read);
+// checked against the limits above (max_side at most kMaxImageSide), then the first
+// min(channels, max_channels_read) channels. InputError naming the path when any of that
+// fails, an allocation included.
+ImagePixels read_image_pixels(const std::string& path, int max_channels_read, int max_side = kMaxImageSide);
 
 void add_image(OutputBatch& batch, const Image& image, const std::string& path);  // written on commit
 void write_image(const Image& image, const std::string& path);                    // a batch of one

@@ -1,0 +1,88 @@
+#include "image/exr_header_check.h"
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "io/input_error.h"
+
+namespace tracer {
+namespace {
+
+constexpr unsigned char kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
+constexpr uint32_t kMultipartFlag = 0x1000;  // version field bit 12
+constexpr size_t kMaxNameBytes = 256;        // long names: 255 characters and the terminator
+
+class HeaderReader {
+ public:
+  HeaderReader(const std::string& path) : path_(path), in_(path, std::ios::binary) {
+    std::error_code ec;
+    size_ = std::filesystem::file_size(path, ec);
+    if (ec || !in_) fail("cannot open it");
+  }
+
+  [[noreturn]] void fail(const std::string& why) const {
+    throw InputError(path_ + ": cannot read image: its EXR header " + why);
+  }
+  uint64_t left() const { return size_ - offset_; }
+
+  void read(void* into, size_t bytes) {
+    if (bytes > left() || !in_.read(static_cast<char*>(into), static_cast<std::streamsize>(bytes)))
+      fail("is cut short at byte " + std::to_string(offset_));
+    offset_ += bytes;
+  }
+  std::string name() {
+    std::string text;
+    for (char c = 1; text.size() <= kMaxNameBytes;) {
+      read(&c, 1);
+      if (c == '\0') return text;
+      text += c;
+    }
+    fail("holds a name longer than 255 bytes at byte " + std::to_string(offset_));
+  }
+  int32_t int32() {
+    unsigned char b[4];
+    read(b, 4);
+    return static_cast<int32_t>(uint32_t{b[0]} | uint32_t{b[1]} << 8 | uint32_t{b[2]} << 16 | uint32_t{b[3]} << 24);
+  }
+  void skip(uint64_t bytes) {
+    if (bytes > left() || !in_.seekg(static_cast<std::streamoff>(bytes), std::ios::cur))
+      fail("is cut short at byte " + std::to_string(offset_));
+    offset_ += bytes;
+  }
+
+ private:
+  std::string path_;
+  std::ifstream in_;
+  uint64_t size_ = 0, offset_ = 0;
+};
+
+}  // namespace
+
+void check_exr_header_sizes(const std::string& path) {
+  {
+    unsigned char magic[4] = {};
+    std::ifstream probe(path, std::ios::binary);
+    if (!probe.read(reinterpret_cast<char*>(magic), 4) || std::memcmp(magic, kExrMagic, 4) != 0) return;
+  }
+  HeaderReader in(path);
+  in.skip(4);
+  const uint32_t version = static_cast<uint32_t>(in.int32());
+  const bool multipart = (version & kMultipartFlag) != 0;
+  for (bool first_header = true;; first_header = false) {
+    std::string name = in.name();
+    if (name.empty() && (!multipart || !first_header)) return;  // the end of the (last) header
+    for (; !name.empty(); name = in.name()) {
+      const std::string type = in.name();
+      const int32_t size = in.int32();
+      if (size < 0 || static_cast<uint64_t>(size) > in.left())
+        in.fail("attribute " + name + " (" + type + ") declares " + std::to_string(size) + " bytes; " +
+                std::to_string(in.left()) + " are left in the file");
+      in.skip(static_cast<uint64_t>(size));
+    }
+    if (!multipart) return;
+  }
+}
+
+}  // namespace tracer
