@@ -175,6 +175,10 @@ TEST(SlurmJob, WaitReportsOnlyAnImageThisJobWrote) {
   EXPECT_TRUE(fs::exists(dir / "job" / "merge.done"));
   EXPECT_EQ(test::run_command(wait, &out), 0) << out;
   EXPECT_NE(out.find("wrote " + (dir / "out.exr").string()), std::string::npos) << out;
+  // A state the tracer does not know (Slurm adds some) is a failure that names it, image or not.
+  std::ofstream(dir / "bin" / "scontrol") << "#!/bin/sh\necho 'JobId=77 JobState=SPECIAL_EXIT Reason=None'\n";
+  EXPECT_EQ(test::run_command(wait, &out), 2) << out;
+  EXPECT_NE(out.find("merge job 77 ended SPECIAL_EXIT"), std::string::npos) << out;
   fs::remove_all(dir);
 }
 
