@@ -489,21 +489,28 @@ TEST_F(HostileInput, LibraryErrorsAreWordedAsTheTracersAndChecksComeFirst) {
   EXPECT_EQ(output.find("filesystem error"), std::string::npos) << output;
 }
 
-// OpenEXR allocates an attribute's declared size before reading it: a few hundred bytes that
-// declare a 1 GiB string made every image-reading command allocate 1 GiB (fuzz.image found it).
-// Every attribute must now fit in the file before OpenImageIO opens it.
-TEST_F(HostileInput, AnExrAttributeLargerThanItsFileIsRefusedUnread) {
+// Image libraries allocate what a header declares before reading it: an EXR attribute
+// (OpenEXR) or a PNG chunk (libpng) of a few hundred bytes declaring 1 GiB made every
+// image-reading command allocate 1 GiB (fuzz.image found both). Every declared size must now
+// fit in the file before OpenImageIO opens it.
+TEST_F(HostileInput, AHeaderDeclaringMoreThanItsFileIsRefusedUnread) {
   std::string exr = small_exr();
-  const std::string attribute = std::string("comments\0string\0", 16) + std::string("\0\0\0\x40", 4) + "tiny";
-  exr.insert(8, attribute);  // after the magic number and the version field
+  exr.insert(8, std::string("comments\0string\0", 16) + std::string("\0\0\0\x40", 4) + "tiny");  // after the version
   write(dir_ / "bomb.exr", exr);
+  ASSERT_EQ(test::run_tracer("render " + (dir_ / "s.json").string() + " --quiet --width 2 --height 2 -o " +
+                             (dir_ / "small.png").string()),
+            0);
+  std::string png = test::read_file(dir_ / "small.png");
+  png.insert(8 + 25, std::string("\x40\0\0\0tEXt", 8) + "tiny");  // after the signature and IHDR
+  write(dir_ / "bomb.png", png);
   std::string output;
-  EXPECT_EQ(run_limited("compare " + (dir_ / "bomb.exr").string() + " " + (dir_ / "small.exr").string(), output), 2)
-      << output;
-  EXPECT_NE(output.find("bomb.exr: cannot read image: its EXR header attribute comments (string) declares 1073741824 "
-                        "bytes"),
-            std::string::npos)
-      << output;
+  for (const auto& [file, expected] :
+       {std::pair{"bomb.exr", "its EXR header attribute comments (string) declares 1073741824 bytes"},
+        std::pair{"bomb.png", "its PNG chunk tEXt declares 1073741824 bytes"}}) {
+    EXPECT_EQ(run_limited("compare " + (dir_ / file).string() + " " + (dir_ / "small.exr").string(), output), 2)
+        << output;
+    EXPECT_NE(output.find(std::string(file) + ": cannot read image: " + expected), std::string::npos) << output;
+  }
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "image/exr_header_check.h"
+#include "image/declared_size_check.h"
 #include "io/input_error.h"
 #include "io/output_paths.h"
 #include "kernel/base/detmath.h"
@@ -88,7 +88,12 @@ ImagePixels read_image_pixels(const std::string& path, int max_channels_read, in
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path + ": cannot read image: no such file");
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": cannot read image: not a regular file");
-  check_exr_header_sizes(path);
+  check_declared_sizes(path);
+  // Only the reader the extension names reads the file: by default OpenImageIO also tries
+  // every other format library it links (DICOM, FITS, RAW, ...) on a file its own reader
+  // refuses, which puts formats the tracer never documents in front of hostile input.
+  static const bool one_reader = OIIO::attribute("try_all_readers", 0);
+  (void)one_reader;
   const std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
   if (!in) throw InputError(path + ": cannot read image: " + OIIO::geterror());
   // The header is input too: its size is checked before any pixel is allocated.

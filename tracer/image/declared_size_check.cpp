@@ -1,4 +1,4 @@
-#include "image/exr_header_check.h"
+#include "image/declared_size_check.h"
 
 #include <cstdint>
 #include <cstring>
@@ -11,19 +11,21 @@ namespace tracer {
 namespace {
 
 constexpr unsigned char kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
+constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 constexpr uint32_t kMultipartFlag = 0x1000;  // version field bit 12
 constexpr size_t kMaxNameBytes = 256;        // long names: 255 characters and the terminator
 
 class HeaderReader {
  public:
-  HeaderReader(const std::string& path) : path_(path), in_(path, std::ios::binary) {
+  HeaderReader(const std::string& path, std::string what)
+      : path_(path), what_(std::move(what)), in_(path, std::ios::binary) {
     std::error_code ec;
     size_ = std::filesystem::file_size(path, ec);
     if (ec || !in_) fail("cannot open it");
   }
 
   [[noreturn]] void fail(const std::string& why) const {
-    throw InputError(path_ + ": cannot read image: its EXR header " + why);
+    throw InputError(path_ + ": cannot read image: its " + what_ + " " + why);
   }
   uint64_t left() const { return size_ - offset_; }
 
@@ -41,10 +43,15 @@ class HeaderReader {
     }
     fail("holds a name longer than 255 bytes at byte " + std::to_string(offset_));
   }
-  int32_t int32() {
+  int32_t int32() {  // little-endian, as EXR stores it
     unsigned char b[4];
     read(b, 4);
     return static_cast<int32_t>(uint32_t{b[0]} | uint32_t{b[1]} << 8 | uint32_t{b[2]} << 16 | uint32_t{b[3]} << 24);
+  }
+  uint32_t big_endian32() {  // as PNG stores it
+    unsigned char b[4];
+    read(b, 4);
+    return uint32_t{b[0]} << 24 | uint32_t{b[1]} << 16 | uint32_t{b[2]} << 8 | uint32_t{b[3]};
   }
   void skip(uint64_t bytes) {
     if (bytes > left() || !in_.seekg(static_cast<std::streamoff>(bytes), std::ios::cur))
@@ -53,20 +60,13 @@ class HeaderReader {
   }
 
  private:
-  std::string path_;
+  std::string path_, what_;
   std::ifstream in_;
   uint64_t size_ = 0, offset_ = 0;
 };
 
-}  // namespace
-
-void check_exr_header_sizes(const std::string& path) {
-  {
-    unsigned char magic[4] = {};
-    std::ifstream probe(path, std::ios::binary);
-    if (!probe.read(reinterpret_cast<char*>(magic), 4) || std::memcmp(magic, kExrMagic, 4) != 0) return;
-  }
-  HeaderReader in(path);
+void check_exr(const std::string& path) {
+  HeaderReader in(path, "EXR header");
   in.skip(4);
   const uint32_t version = static_cast<uint32_t>(in.int32());
   const bool multipart = (version & kMultipartFlag) != 0;
@@ -83,6 +83,33 @@ void check_exr_header_sizes(const std::string& path) {
     }
     if (!multipart) return;
   }
+}
+
+void check_png(const std::string& path) {
+  HeaderReader in(path, "PNG chunk");
+  in.skip(sizeof kPngSignature);
+  for (;;) {
+    const uint32_t length = in.big_endian32();
+    char type[5] = {};
+    in.read(type, 4);
+    if (uint64_t{length} + 4 > in.left())  // the data and its CRC
+      in.fail(std::string(type) + " declares " + std::to_string(length) + " bytes; " + std::to_string(in.left()) +
+              " are left in the file");
+    in.skip(uint64_t{length} + 4);
+    if (std::string(type) == "IEND" || in.left() == 0) return;
+  }
+}
+
+}  // namespace
+
+void check_declared_sizes(const std::string& path) {
+  unsigned char magic[8] = {};
+  std::ifstream probe(path, std::ios::binary);
+  probe.read(reinterpret_cast<char*>(magic), sizeof magic);
+  const std::streamsize got = probe.gcount();
+  probe.close();
+  if (got >= 4 && std::memcmp(magic, kExrMagic, 4) == 0) check_exr(path);
+  if (got == 8 && std::memcmp(magic, kPngSignature, 8) == 0) check_png(path);
 }
 
 }  // namespace tracer

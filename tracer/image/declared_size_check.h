@@ -1,0 +1,18 @@
+// Image libraries allocate what a file's header declares before they read it: OpenEXR each
+// header attribute's size (a 644-byte file declared a 1.8 GB string), libpng each chunk's
+// length (a 342-byte PNG declared a 2 GB text chunk). Both found by fuzz.image. Before
+// OpenImageIO opens an EXR or a PNG, every size its header declares must fit in the file.
+//   EXR (OpenEXR file layout): magic, version, then per header "name\0 type\0 size value"
+//   up to an empty name; multi-part files end with an empty header.
+//   PNG (ISO/IEC 15948): signature, then chunks "length type data crc" up to IEND.
+#pragma once
+#include <string>
+
+namespace tracer {
+
+// InputError "PATH: cannot read image: its EXR header ..." or "... its PNG chunk ..." when a
+// declared size is larger than what is left of the file or the structure is cut short.
+// Files of other formats are left to their readers.
+void check_declared_sizes(const std::string& path);
+
+}  // namespace tracer
