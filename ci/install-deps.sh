@@ -13,6 +13,7 @@ packages=(
   chromium                                # opens the golden report headless in a test
   git                                     # golden update's check for uncommitted edits
   strace                                  # stops a command at its Nth rename with a signal (commit tests)
+  python3                                 # ci/mutation.py, the mutation campaign
   fonts-dejavu-core                       # the font of the bench converge plot
   libembree-dev                           # the Embree row of bench rays (benchmark only)
   clang libomp-dev libclang-rt-14-dev     # the second compiler, its OpenMP runtime, libFuzzer and sanitizers (ci/extra.sh)

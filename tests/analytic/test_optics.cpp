@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "kernel/shading/bsdf.h"
 #include "kernel/shading/optics.h"
 
 using namespace tracer;
@@ -81,4 +82,38 @@ TEST(Optics, ExactFresnelLimits) {
   }
   // IOR 1: no interface, no reflection at any angle.
   for (float c = 0.05f; c <= 1.0f; c += 0.05f) EXPECT_EQ(fresnel_exact(c, c, 1.0f, 1.0f), 0.0f);
+}
+
+// The path tracer's dielectric as sample_bsdf draws it (kernel/shading/bsdf.h), from outside
+// (front) and from inside the glass: a refraction obeys Snell's law n_in sin(theta_i) =
+// n_out sin(theta_t) and leaves on the far side; beyond the critical angle arcsin(1 / ior),
+// reached only from inside, every choice reflects about the normal (total internal reflection).
+TEST(Optics, PathTracerDielectricRefractsBySnellsLawFromEitherSide) {
+  Material glass{};
+  glass.kind = MaterialKind::Dielectric;
+  glass.fresnel = FresnelKind::Exact;
+  glass.tint = {1.0f, 1.0f, 1.0f};
+  glass.ior = 1.5f;
+  const double critical = std::asin(1.0 / 1.5);
+  for (const bool front : {true, false}) {
+    const double n_in = front ? 1.0 : 1.5, n_out = front ? 1.5 : 1.0;
+    // n is the normal on wo's side, as the integrator passes it; wo points back along the ray.
+    const Vec3 n = {0.0f, 0.0f, 1.0f};
+    for (double theta = 0.01; theta < 1.55; theta += 0.01) {
+      const Vec3 d = incident(theta), wo = -d;
+      BsdfSample s{};
+      ASSERT_TRUE(sample_bsdf(glass, wo, n, front, 0.9999f, 0.5f, 0.5f, s));
+      ASSERT_TRUE(s.specular);
+      if (!front && theta > critical + 1e-4) {
+        const Vec3 mirror = reflect(d, n);
+        EXPECT_NEAR(length(s.wi - mirror), 0.0, 1e-6) << "inside, beyond the critical angle, at " << theta;
+        continue;
+      }
+      if (!front && theta > critical - 1e-4) continue;  // within rounding of the critical angle
+      // u_choice near 1 refracts wherever the Fresnel reflectance is below it.
+      ASSERT_LT(s.wi.z, 0.0f) << (front ? "outside" : "inside") << " at " << theta << ": did not refract";
+      EXPECT_NEAR(n_in * std::sin(theta), n_out * sin_to_normal(s.wi, n), 2e-6)
+          << (front ? "outside" : "inside") << " at " << theta;
+    }
+  }
 }

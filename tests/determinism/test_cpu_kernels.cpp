@@ -70,6 +70,9 @@ TEST(CpuKernels, EveryVariantGivesTheSameHitsInEveryShippedScene) {
   }
 }
 
+// Agreement, not correctness: it compares with the golden hashes, so once the goldens are
+// regenerated it shows only that the variants agree with the render the update made; it is no
+// evidence that the image is right (docs/mutation.md).
 TEST(CpuKernels, EveryVariantRendersEveryGolden) {
   const GoldenManifest manifest = read_manifest(TRACER_SOURCE_DIR);
   size_t renders = 0;

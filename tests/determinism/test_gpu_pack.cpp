@@ -32,6 +32,9 @@ void spill(const fs::path& p, const std::string& bytes) { std::ofstream(p, std::
 // The pack the CTest fixture gpu-pack.write made (tests/CMakeLists.txt).
 fs::path pack() { return TRACER_GPU_PACK; }
 
+// Agreement, not correctness: it compares with the golden hashes, so once the goldens are
+// regenerated it shows only that the runner's bundles agree with the render the update made; it is no
+// evidence that the image is right (docs/mutation.md).
 TEST(GpuPack, RunnerOnTheCpuReproducesEveryGoldenHashAndParityAnswer) {
   std::string out;
   ASSERT_EQ(test::run_command((pack() / "run.sh").string() + " --device cpu", &out), 0) << out;

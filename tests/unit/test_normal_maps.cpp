@@ -51,26 +51,31 @@ TEST(NormalMaps, FlatNormalMapAndConstantBumpMapChangeNothing) {
   std::filesystem::remove_all(dir);
 }
 
-// A normal map of (sin a, 0, cos a) in tangent space tilts the quad's normal toward +x
-// (its u direction) by a; with the light at (1, 0, 1) from the centre pixel the path
-// tracer's direct light there becomes albedo I (n . l) / (pi d^2) with the tilted n (a
-// tilt toward -x would give cos a - sin a instead of cos a + sin a).
+// A normal map of (sin a, 0, cos a) in tangent space tilts the quad's normal toward +x (its
+// u direction, the tangent) by a, and one of (0, sin a, cos a) toward +y (its v direction,
+// the bitangent n x t). With the light at (1, 0, 1), or (0, 1, 1), from the centre pixel the
+// path tracer's direct light there is albedo I (n . l) / (pi d^2) with the tilted n; a tilt
+// the wrong way along either axis gives cos a - sin a instead of cos a + sin a.
 TEST(NormalMaps, TiltedNormalMapTiltsTheCosine) {
   const auto dir = test::temp_dir("maps-tilt");
   const float a = 0.5f;
-  write_image(constant_image(4, 0.5f + 0.5f * std::sin(a), 0.5f, 0.5f + 0.5f * std::cos(a)),
-              (dir / "tilt.exr").string());
-  const std::string scene = R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
-    "film": {"width": 33, "height": 33}, "render": {"integrator": "path", "sampler": "center", "max_depth": 1},
-    "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5], "normal_map": "tilt.exr"}},
-    "lights": [{"type": "point", "position": [1, 0, 1], "intensity": [2, 2, 2]}],
-    "shapes": [{"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "m"}]})";
-  const Image img = render_in(dir, scene);
-  const float centre = img.rgb[3 * (16 * 33 + 16)];  // the point (0, 0, 0): d^2 = 2
-  const double n_x = 2.0 * (0.5 + 0.5 * std::sin(a)) - 1.0, n_z = 2.0 * (0.5 + 0.5 * std::cos(a)) - 1.0;
-  const double cos = (n_x + n_z) / std::sqrt(2.0) / std::sqrt(n_x * n_x + n_z * n_z);
-  const double expected = 0.5 / M_PI * 2.0 * cos / 2.0;
-  EXPECT_NEAR(centre, expected, 1e-5 * expected);
+  const double tilted = 2.0 * (0.5 + 0.5 * std::sin(a)) - 1.0, up = 2.0 * (0.5 + 0.5 * std::cos(a)) - 1.0;
+  const double cos = (tilted + up) / std::sqrt(2.0) / std::sqrt(tilted * tilted + up * up);
+  const double expected = 0.5 / M_PI * 2.0 * cos / 2.0;  // d^2 = 2 from the point (0, 0, 0)
+  for (const bool along_v : {false, true}) {
+    const float t = 0.5f + 0.5f * std::sin(a);
+    write_image(constant_image(4, along_v ? 0.5f : t, along_v ? t : 0.5f, 0.5f + 0.5f * std::cos(a)),
+                (dir / "tilt.exr").string());
+    const std::string scene =
+        R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
+      "film": {"width": 33, "height": 33}, "render": {"integrator": "path", "sampler": "center", "max_depth": 1},
+      "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5], "normal_map": "tilt.exr"}},
+      "lights": [{"type": "point", "position": )" +
+        std::string(along_v ? "[0, 1, 1]" : "[1, 0, 1]") + R"(, "intensity": [2, 2, 2]}],
+      "shapes": [{"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "m"}]})";
+    const Image img = render_in(dir, scene);
+    EXPECT_NEAR(img.rgb[3 * (16 * 33 + 16)], expected, 1e-5 * expected) << (along_v ? "along v" : "along u");
+  }
   std::filesystem::remove_all(dir);
 }
 

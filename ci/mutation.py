@@ -1,0 +1,199 @@
+#!/usr/bin/env python3
+"""The mutation campaign (docs/mutation.md): does the suite catch a physics bug once the
+goldens have been regenerated to hide it?
+
+For each mutant of ci/mutants.txt (a small exact edit of kernel code) in a scratch clone of
+the commit under test: apply it, build, regenerate the goldens with the documented update
+command (a mutant that changes no golden is not a bug the goldens see: reported apart),
+run every label but golden, cuda, slurm and fuzz, and call the mutant killed when a test
+fails. Equivalent mutants (unbiased in expectation) are listed apart: the file names the
+test of their own kind that kills them, and the campaign checks that it does.
+
+usage: ci/mutation.py [--sample] [--only NAME[,NAME...]] [--list] [--keep DIR]
+  --sample  the mutants marked "sample" in ci/mutants.txt (CI runs these)
+  --only    the named mutants
+  --list    print the mutants and exit
+  --keep    use DIR as the scratch clone and keep it (rebuilds are incremental)
+Exit 0 when every mutant run was killed (or, when equivalent, killed by its own test).
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+MUTANTS = os.path.join(ROOT, "ci", "mutants.txt")
+# Labels that do not take part: the goldens themselves, and what needs a GPU, a cluster or a fuzzer.
+EXCLUDED_LABELS = "golden|cuda|slurm|fuzz"
+
+
+class Mutant:
+    def __init__(self, name):
+        self.name, self.feature, self.file = name, "", ""
+        self.sample = False
+        self.equivalent = ""  # why it is unbiased; its own test must kill it
+        self.killer = ""  # for an equivalent mutant: the ctest -R pattern of its test
+        self.before, self.after = [], []
+
+
+def read_mutants(path):
+    """Blocks of '## key: value' lines, then '-' lines (the exact text) and '+' lines (its
+    replacement). Blank lines and '#' comments between blocks are ignored."""
+    mutants, current = [], None
+    with open(path, encoding="utf-8") as f:
+        for number, line in enumerate(f, 1):
+            line = line.rstrip("\n")
+            where = f"{path}:{number}"
+            if line.startswith("## "):
+                key, _, value = line[3:].partition(": ")
+                if key == "name":
+                    current = Mutant(value.strip())
+                    mutants.append(current)
+                elif current is None:
+                    sys.exit(f"{where}: '## {key}' before any '## name'")
+                elif key in ("feature", "file", "equivalent", "killer"):
+                    setattr(current, key, value.strip())
+                elif key == "sample":
+                    current.sample = value.strip() == "yes"
+                else:
+                    sys.exit(f"{where}: unknown key '{key}'")
+            elif line.startswith("-") and current is not None:
+                current.before.append(line[1:])
+            elif line.startswith("+") and current is not None:
+                current.after.append(line[1:])
+            elif line.strip() and not line.startswith("#"):
+                sys.exit(f"{where}: expected '## key: value', '-TEXT', '+TEXT', a comment or a blank line")
+    names = set()
+    for m in mutants:
+        if not (m.feature and m.file and m.before):
+            sys.exit(f"{path}: mutant {m.name} needs a feature, a file and '-' lines")
+        if m.equivalent and not m.killer:
+            sys.exit(f"{path}: equivalent mutant {m.name} needs the killer test that catches it")
+        if m.name in names:
+            sys.exit(f"{path}: mutant {m.name} twice")
+        names.add(m.name)
+    return mutants
+
+
+def run(command, cwd, log, timeout=3600):
+    with open(log, "a", encoding="utf-8") as out:
+        out.write(f"$ {' '.join(command)}\n")
+        out.flush()
+        return subprocess.run(command, cwd=cwd, stdout=out, stderr=subprocess.STDOUT, timeout=timeout).returncode
+
+
+def apply(mutant, scratch):
+    path = os.path.join(scratch, mutant.file)
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    before, after = "\n".join(mutant.before) + "\n", "\n".join(mutant.after) + "\n"
+    count = text.count(before)
+    if count != 1:
+        return f"stale: the text occurs {count} times in {mutant.file}"
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(text.replace(before, after))
+    return ""
+
+
+def failed_tests(build, log):
+    """The tests ctest recorded as failed in the last run."""
+    failed = os.path.join(build, "Testing", "Temporary", "LastTestsFailed.log")
+    if not os.path.exists(failed):
+        return []
+    with open(failed, encoding="utf-8") as f:
+        return [line.strip().split(":", 1)[-1] for line in f if line.strip()]
+
+
+def campaign(mutants, scratch, jobs):
+    build = os.path.join(scratch, "build")
+    log = os.path.join(scratch, "mutation.log")
+    tracer = os.path.join(build, "tracer")
+    configure = ["cmake", "-S", scratch, "-B", build, "-DCMAKE_BUILD_TYPE=Release", "-DTRACER_WITH_CUDA=OFF",
+                 "-DTRACER_CPU_VARIANTS=OFF"]
+    if run(configure, scratch, log) != 0 or run(["cmake", "--build", build, "-j", str(jobs)], scratch, log) != 0:
+        sys.exit(f"the unmutated tree does not build; see {log}")
+    rows = []
+    for m in mutants:
+        start = time.time()
+        run(["git", "checkout", "--quiet", "--", "."], scratch, log)
+        row = {"mutant": m, "goldens": "-", "verdict": "", "by": ""}
+        problem = apply(m, scratch)
+        if problem:
+            row["verdict"] = problem
+        elif run(["cmake", "--build", build, "-j", str(jobs)], scratch, log) != 0:
+            row["verdict"] = "does not build"
+        else:
+            update = subprocess.run([tracer, "golden", "update", "--force", "--root", scratch],
+                                    capture_output=True, text=True)
+            rewritten = re.search(r"(\d+) of (\d+) matching goldens rewritten", update.stdout)
+            row["goldens"] = rewritten.group(1) if rewritten else "?"
+            if update.returncode != 0 or not rewritten:
+                row["verdict"] = "golden update failed: " + (update.stderr.strip().splitlines() or ["?"])[-1]
+            elif rewritten.group(1) == "0" and not m.equivalent:
+                row["verdict"] = "unseen: no golden changed"
+            else:
+                test = ["ctest", "--test-dir", build, "-LE", EXCLUDED_LABELS, "-j", str(jobs), "--timeout", "600",
+                        "--stop-on-failure"]
+                if m.equivalent:
+                    test += ["-R", m.killer]
+                code = run(test, scratch, log)
+                killers = failed_tests(build, log)
+                row["verdict"] = "killed" if code != 0 else "SURVIVED"
+                row["by"] = ", ".join(killers[:3])
+        row["seconds"] = time.time() - start
+        rows.append(row)
+        print(f"{m.name:40} {row['goldens']:>3} goldens  {row['verdict']:10} {row['by']}  ({row['seconds']:.0f} s)",
+              flush=True)
+    run(["git", "checkout", "--quiet", "--", "."], scratch, log)
+    return rows
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--sample", action="store_true")
+    parser.add_argument("--only", default="")
+    parser.add_argument("--list", action="store_true")
+    parser.add_argument("--keep", default="")
+    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
+    args = parser.parse_args()
+    mutants = read_mutants(MUTANTS)
+    if args.only:
+        names = args.only.split(",")
+        unknown = [n for n in names if n not in {m.name for m in mutants}]
+        if unknown:
+            sys.exit(f"--only: no mutant named {', '.join(unknown)} in {MUTANTS}")
+        mutants = [m for m in mutants if m.name in names]
+    elif args.sample:
+        mutants = [m for m in mutants if m.sample]
+    if args.list:
+        for m in mutants:
+            kind = f"equivalent ({m.equivalent}); killed by {m.killer}" if m.equivalent else "bug"
+            print(f"{m.name:40} {m.feature:32} {m.file}  {kind}{'  [sample]' if m.sample else ''}")
+        return 0
+    scratch = args.keep or tempfile.mkdtemp(prefix="tracer-mutation-")
+    if not os.path.isdir(os.path.join(scratch, ".git")):
+        if os.path.exists(scratch) and os.listdir(scratch):
+            sys.exit(f"--keep {scratch}: not a scratch clone and not empty")
+        subprocess.run(["git", "clone", "--quiet", "--no-hardlinks", ROOT, scratch], check=True)
+    subprocess.run(["git", "-C", scratch, "fetch", "--quiet", ROOT, "HEAD"], check=True)
+    subprocess.run(["git", "-C", scratch, "checkout", "--quiet", "--force", "FETCH_HEAD"], check=True)
+    print(f"mutation campaign: {len(mutants)} mutants of {MUTANTS} in {scratch}, labels but {EXCLUDED_LABELS}")
+    rows = campaign(mutants, scratch, args.jobs)
+    bugs = [r for r in rows if not r["mutant"].equivalent]
+    valid = [r for r in bugs if r["verdict"] in ("killed", "SURVIVED")]
+    killed = sum(r["verdict"] == "killed" for r in valid)
+    equivalent = [r for r in rows if r["mutant"].equivalent]
+    print(f"score: {killed} of {len(valid)} mutants the goldens see killed"
+          f" ({100.0 * killed / max(len(valid), 1):.0f} %); {len(bugs) - len(valid)} not run or unseen;"
+          f" equivalent: {sum(r['verdict'] == 'killed' for r in equivalent)} of {len(equivalent)} killed by their own test")
+    if not args.keep:
+        shutil.rmtree(scratch, ignore_errors=True)
+    return 0 if all(r["verdict"] == "killed" for r in rows) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
