@@ -131,8 +131,12 @@ def campaign(mutants, scratch, jobs):
                                     capture_output=True, text=True)
             rewritten = re.search(r"(\d+) of (\d+) matching goldens rewritten", update.stdout)
             row["goldens"] = rewritten.group(1) if rewritten else "?"
-            if update.returncode != 0 or not rewritten:
-                row["verdict"] = "golden update failed: " + (update.stderr.strip().splitlines() or ["?"])[-1]
+            refusal = (update.stderr.strip().splitlines() or ["?"])[-1]
+            if update.returncode != 0 and ("NaN/inf" in refusal or "beyond the film's range" in refusal):
+                # The update refuses images with NaN, inf or overflowing samples: nobody can hide this one.
+                row["verdict"], row["by"] = "killed", "golden update refused it: " + refusal
+            elif update.returncode != 0 or not rewritten:
+                row["verdict"] = "golden update failed: " + refusal
             elif rewritten.group(1) == "0" and not m.equivalent:
                 row["verdict"] = "unseen: no golden changed"
             else:
@@ -140,6 +144,9 @@ def campaign(mutants, scratch, jobs):
                         "--stop-on-failure"]
                 if m.equivalent:
                     test += ["-R", m.killer]
+                stale = os.path.join(build, "Testing", "Temporary", "LastTestsFailed.log")
+                if os.path.exists(stale):
+                    os.remove(stale)  # ctest leaves the last failing run's list when all pass
                 code = run(test, scratch, log)
                 killers = failed_tests(build, log)
                 row["verdict"] = "killed" if code != 0 else "SURVIVED"

@@ -6,6 +6,7 @@
 
 #include "kernel/shading/bsdf.h"
 #include "kernel/shading/optics.h"
+#include "test_util.h"
 
 using namespace tracer;
 
@@ -72,6 +73,29 @@ TEST(Optics, SchlickEqualsR0AtNormalIncidenceAndOneAtGrazing) {
   }
 }
 
+// Reflectance is reciprocal (Helmholtz): light crossing an interface one way reflects as much
+// as light crossing it back along the same two directions. Schlick's approximation keeps
+// that by taking the cosine on the optically thinner side (Schlick 1994) from either side,
+// so from inside the glass it must equal the outside value bit for bit, and reach 1 at the
+// critical angle, where the outside angle is grazing.
+TEST(Optics, SchlickIsTheSameFromEitherSideOfTheInterface) {
+  for (const float ior : {1.33f, 1.5f, 2.42f}) {
+    for (double theta = 0.0; theta < 1.5707; theta += 0.01) {
+      const Vec3 d = incident(theta), n = {0.0f, 0.0f, 1.0f};
+      Vec3 t;
+      float cos_t;
+      ASSERT_TRUE(refract(d, n, 1.0f / ior, t, cos_t));
+      const float cos_i = static_cast<float>(std::cos(theta));
+      const float outside = dielectric_reflectance(FresnelKind::Schlick, cos_i, cos_t, 1.0f, ior);
+      const float inside = dielectric_reflectance(FresnelKind::Schlick, cos_t, cos_i, ior, 1.0f);
+      EXPECT_EQ(inside, outside) << "ior " << ior << " at " << theta;
+    }
+    const float at_critical =
+        dielectric_reflectance(FresnelKind::Schlick, std::sqrt(1.0f - 1.0f / (ior * ior)), 0.0f, ior, 1.0f);
+    EXPECT_NEAR(at_critical, 1.0f, 1e-6f) << "ior " << ior;
+  }
+}
+
 TEST(Optics, ExactFresnelLimits) {
   for (const float ior : {1.33f, 1.5f, 2.42f}) {
     const float r0 = ((1.0f - ior) / (1.0f + ior)) * ((1.0f - ior) / (1.0f + ior));
@@ -116,4 +140,32 @@ TEST(Optics, PathTracerDielectricRefractsBySnellsLawFromEitherSide) {
           << (front ? "outside" : "inside") << " at " << theta;
     }
   }
+}
+
+// The Whitted tracer splits a ray at glass into Fresnel-weighted reflected and refracted
+// rays; the path tracer picks one of them with the Fresnel probability. With the same camera
+// rays (the same sampler, seed and spp), the same depth, no Russian roulette and no lights,
+// the path tracer's pixel is therefore an unbiased estimate of the Whitted pixel (the same
+// sum, evaluated by sampling). Every path returns throughput 1 times a background radiance in
+// [0, 1], so a pixel's error has standard deviation at most 1 / (2 sqrt(spp)) (Popoviciu);
+// every pixel must lie within 5 of those. A glass ball makes every ray refract in and out.
+TEST(Optics, WhittedGlassIsThePathTracersExpectation) {
+  const auto dir = test::temp_dir("optics-glass");
+  const auto scene = [](const char* integrator) {
+    return std::string(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0.3, 3], "to": [0, 0, 0], "vfov": 45},
+      "film": {"width": 16, "height": 16},
+      "render": {"integrator": ")") +
+           integrator + R"(", "sampler": "stochastic", "spp": 1024, "max_depth": 8, "rr_depth": 64, "seed": 5},
+      "background": {"type": "gradient", "zenith": [1, 0.6, 0.2], "horizon": [0, 0.1, 0.9]},
+      "materials": {"glass": {"type": "dielectric", "ior": 1.5, "fresnel": "exact"}},
+      "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "glass"}]})";
+  };
+  const Image whitted = test::render_in(dir, scene("whitted"));
+  const Image path = test::render_in(dir, scene("path"));
+  ASSERT_EQ(whitted.rgb.size(), path.rgb.size());
+  const double bound = 5.0 * 0.5 / std::sqrt(1024.0);
+  size_t outside = 0;
+  for (size_t i = 0; i < path.rgb.size(); ++i) outside += std::abs(path.rgb[i] - whitted.rgb[i]) > bound;
+  EXPECT_EQ(outside, 0u) << "of " << path.rgb.size() << " pixel channels beyond " << bound;
+  std::filesystem::remove_all(dir);
 }

@@ -197,5 +197,39 @@ TEST(PathAnalytic, ErrorFallsAsOneOverSqrtSpp) {
   RecordProperty("slope", std::to_string(slope));
 }
 
+// A plane facing +y seen straight down through a very narrow camera (every ray at normal
+// incidence within 0.1 degrees) under a background `sky`, one bounce.
+std::string plane_seen_head_on(const std::string& material, const std::string& sky) {
+  return R"({"format": "tracer-scene/1", "camera": {"from": [0, 5, 0], "to": [0, 0, 0], "up": [0, 0, -1], "vfov": 0.2},
+    "film": {"width": 64, "height": 64},
+    "render": {"integrator": "path", "spp": 16, "sampler": "stochastic", "max_depth": 1, "nee": false},
+    "background": )" +
+         sky + R"(, "materials": {"m": )" + material + R"(},
+    "shapes": [{"type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "m"}]})";
+}
+
+// The modified Phong specular lobe ks (e + 2) / (2 pi) cos^e(alpha) (Lafortune and Willems
+// 1994) is normalised so that at normal incidence, where alpha is the angle to the normal, it
+// reflects exactly ks of a uniform sky: the integral of (e + 2) / (2 pi) cos^(e+1) over the
+// hemisphere is 1. (With (e + 1) it would reflect (e + 1) / (e + 2): 0.955 at e = 20.)
+TEST(PathAnalytic, PhongSpecularLobeReflectsAllOfAUniformSkyAtNormalIncidence) {
+  const Image img =
+      render(plane_seen_head_on(R"({"type": "phong", "diffuse": [0, 0, 0], "specular": [1, 1, 1], "shininess": 20})",
+                                R"({"type": "constant", "radiance": [1, 1, 1]})"));
+  const MeanStat m = mean_of(img, 0);
+  EXPECT_NEAR(m.mean, 1.0, 5.0 * m.stderr_ + 1e-4) << "stderr " << m.stderr_;
+}
+
+// Metal roughness r is the Phong exponent e = 2 / r^2 - 2 (docs/materials.md): r = 0.5 gives
+// e = 6. Under a sky whose radiance is the direction's y, a plane facing +y seen head-on
+// returns albedo times the lobe's mean cosine about the mirror direction, (e + 1) / (e + 2)
+// = 7/8 (the lobe's density is (e + 1) / (2 pi) cos^e).
+TEST(PathAnalytic, MetalRoughnessSetsTheLobesMeanCosine) {
+  const Image img = render(plane_seen_head_on(R"({"type": "metal", "albedo": [1, 1, 1], "roughness": 0.5})",
+                                              R"({"type": "gradient", "zenith": [1, 1, 1], "horizon": [0, 0, 0]})"));
+  const MeanStat m = mean_of(img, 0);
+  EXPECT_NEAR(m.mean, 7.0 / 8.0, 5.0 * m.stderr_ + 1e-4) << "stderr " << m.stderr_;
+}
+
 }  // namespace
 }  // namespace tracer
