@@ -275,20 +275,29 @@ TEST(ClosedForms, ConstantSpecularMapScalesTheSpecularTerm) {
 // A height map rising g per texel along u: central differences one texel apart give the
 // local normal (-g, 0, 1), tilted by atan(g) against the quad's u (+x). With the light at
 // (1, 0, 1) from the centre point the path tracer's direct light there is
-// albedo I cos / (pi d^2) with cos = (1 - g) / (sqrt 2 sqrt(1 + g^2)).
+// albedo I cos / (pi d^2) with cos = (1 - g) / (sqrt 2 sqrt(1 + g^2)). The same ramp along v
+// (rising towards the image's top row) tilts the normal to (0, -g, 1), against the quad's v
+// (+y, the bitangent), and gives the same cosine with the light at (0, 1, 1).
 TEST(ClosedForms, HeightRampTiltsTheNormalByItsSlope) {
   const auto dir = test::temp_dir("closed-bump-ramp");
   const float g = 0.25f;
-  write_image(column_image(8, 8, [g](uint32_t x) { return g * x; }), (dir / "ramp.exr").string());
-  const Image img =
-      render_in(dir, R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
-    "film": {"width": 33, "height": 33}, "render": {"integrator": "path", "sampler": "center", "max_depth": 1},
-    "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5], "bump_map": "ramp.exr"}},
-    "lights": [{"type": "point", "position": [1, 0, 1], "intensity": [2, 2, 2]}],
-    "shapes": [{"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "m"}]})");
   const double cos = (1.0 - g) / (std::sqrt(2.0) * std::sqrt(1.0 + double(g) * g));
   const double expected = 0.5 / M_PI * 2.0 * cos / 2.0;  // d^2 = 2
-  EXPECT_NEAR(img.rgb[3 * (16 * 33 + 16)], expected, 1e-5 * expected);
+  for (const bool along_v : {false, true}) {
+    const Image ramp = test::image_from(8, 8, [&](uint32_t x, uint32_t y) {
+      const float h = g * static_cast<float>(along_v ? 7 - y : x);
+      return Vec3{h, h, h};
+    });
+    write_image(ramp, (dir / "ramp.exr").string());
+    const Image img =
+        render_in(dir, R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 2], "to": [0, 0, 0], "vfov": 60},
+      "film": {"width": 33, "height": 33}, "render": {"integrator": "path", "sampler": "center", "max_depth": 1},
+      "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5], "bump_map": "ramp.exr"}},
+      "lights": [{"type": "point", "position": )" +
+                           std::string(along_v ? "[0, 1, 1]" : "[1, 0, 1]") + R"(, "intensity": [2, 2, 2]}],
+      "shapes": [{"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "m"}]})");
+    EXPECT_NEAR(img.rgb[3 * (16 * 33 + 16)], expected, 1e-5 * expected) << (along_v ? "along v" : "along u");
+  }
   std::filesystem::remove_all(dir);
 }
 
