@@ -6,13 +6,15 @@
 # kernel code, docs/cuda.md) rendering every golden and running the GPU pack that the default
 # build writes; the libFuzzer targets, 60 s each (docs/fuzzing.md); the `slurm` label against
 # a one-node cluster started by ci/slurm-up.sh and stopped by ci/slurm-down.sh
-# (docs/distributed.md). device-semantics and slurm use the default build of ci/test.sh.
+# (docs/distributed.md); the mutation campaign's sample (ci/mutation.py --sample, a few
+# mutants of different features, each killed without the goldens: docs/mutation.md).
+# device-semantics and slurm use the default build of ci/test.sh.
 # The presets build the CPU renderer only; the dependencies are those of ci/install-deps.sh.
-# Arguments pick jobs (default: clang asan device-semantics fuzz slurm).
+# Arguments pick jobs (default: clang asan device-semantics fuzz slurm mutation).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=("$@")
-[ ${#jobs[@]} -gt 0 ] || jobs=(clang asan device-semantics fuzz slurm)
+[ ${#jobs[@]} -gt 0 ] || jobs=(clang asan device-semantics fuzz slurm mutation)
 for job in "${jobs[@]}"; do
   started=$SECONDS
   if [ "$job" = slurm ]; then
@@ -28,6 +30,12 @@ for job in "${jobs[@]}"; do
     bash ci/slurm-down.sh
     trap - EXIT
     echo "== slurm: done in $((SECONDS - started)) s"
+    continue
+  fi
+  if [ "$job" = mutation ]; then
+    echo "== mutation: the campaign's sample in a scratch clone"
+    python3 ci/mutation.py --sample
+    echo "== mutation: done in $((SECONDS - started)) s"
     continue
   fi
   echo "== $job: configure, build, test"
