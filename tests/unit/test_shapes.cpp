@@ -124,6 +124,32 @@ int self_hits(const Scene& scene, Vec3 aim_center, float aim_radius) {
 
 }  // namespace
 
+// Phong's normal interpolation (Phong 1975): a triangle inscribed in the unit sphere whose
+// vertex normals are its vertices' positions has, at a hit with barycentrics b, the shading
+// normal b0 n0 + b1 n1 + b2 n2 = b0 v0 + b1 v1 + b2 v2 = p, so it points from the centre
+// through the hit point. Each weight must go with its own vertex's normal.
+TEST(Triangle, VertexNormalsOfAnInscribedMeshPointFromTheCentreThroughTheHit) {
+  const Scene scene = test::scene_from(one_shape_scene(
+      R"({"type": "mesh", "file": ")" + test::source_path("scenes/models/icosahedron.obj") + R"(", "material": "m"})"));
+  const SceneView view = scene.view();
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<float> aim(-0.45f, 0.45f);
+  int hits = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 origin = {0.0f, 0.0f, 5.0f}, target = {aim(rng), aim(rng), aim(rng)};
+    const Ray ray = {origin, normalize(target - origin)};
+    const Hit hit = trace_closest(view, ray, kInfinity);
+    ASSERT_NE(hit.prim, kNoHit) << "ray " << i;  // every aim point lies within the inradius, 0.79
+    const Surface s = surface_at(view, ray, hit);
+    const Vec3 radial = normalize(s.p);
+    ASSERT_NEAR(s.ns.x, radial.x, 1e-5f) << "ray " << i;
+    ASSERT_NEAR(s.ns.y, radial.y, 1e-5f) << "ray " << i;
+    ASSERT_NEAR(s.ns.z, radial.z, 1e-5f) << "ray " << i;
+    ++hits;
+  }
+  EXPECT_EQ(hits, 20000);
+}
+
 TEST(Shapes, NoSelfIntersectionAtLargeCoordinates) {
   const Scene sphere = test::scene_from(
       one_shape_scene(R"({"type": "sphere", "center": [300, 200, 500], "radius": 90, "material": "m"})"));
