@@ -65,6 +65,16 @@ TEST(PathAnalytic, FurnaceWithAlbedoOneIsUniform) {
   for (float v : img.rgb) ASSERT_NEAR(v, 1.0f, kFloatTolerance);
 }
 
+// The same furnace with the Sobol sampler in every dimension (film, each bounce): any
+// sample of any path still returns exactly 1.
+TEST(PathAnalytic, FurnaceWithAlbedoOneIsUniformWithTheSobolSampler) {
+  RenderOverrides ov;
+  ov.sampler = SamplerKind::Sobol;
+  ov.spp = 4;
+  const Image img = render(furnace(1.0f), ov);
+  for (float v : img.rgb) ASSERT_NEAR(v, 1.0f, kFloatTolerance);
+}
+
 // A Lambert plane under a uniform sky reflects albedo times the sky's radiance.
 TEST(PathAnalytic, PlaneUnderUniformSkyReflectsAlbedoTimesSky) {
   const Image img =
@@ -82,13 +92,14 @@ TEST(PathAnalytic, PlaneUnderUniformSkyReflectsAlbedoTimesSky) {
 // is 4 (1/2pi) 2 (1/sqrt 2) atan(1/sqrt 2) (point to parallel rectangle, four corner
 // pieces), so the plane reflects a L F with F = 0.5541264; with the sky sampled as a light
 // and without (only BSDF rays find it).
-void plane_under_bright_top_face(bool sky_sampling) {
+void plane_under_bright_top_face(bool sky_sampling, SamplerKind sampler = SamplerKind::Stochastic) {
   const auto dir = test::temp_dir("sky-top-face");
   const std::string faces = test::write_cube_faces(dir, 4, [](int face, int, int) {
     return face == 2 ? Vec3{2.0f, 2.0f, 2.0f} : Vec3{0.0f, 0.0f, 0.0f};
   });
   RenderOverrides ov;
   ov.sky_sampling = sky_sampling ? Switch::On : Switch::Off;
+  ov.sampler = sampler;
   RenderStats stats;
   const Image img = render_cpu(
       load_scene_text(R"({"format": "tracer-scene/1", "camera": {"from": [0, 2, 0], "to": [0, 0, 0.01], "vfov": 60},
@@ -108,12 +119,16 @@ void plane_under_bright_top_face(bool sky_sampling) {
 
 TEST(PathAnalytic, PlaneUnderABrightCubeFaceWithSkySampling) { plane_under_bright_top_face(true); }
 TEST(PathAnalytic, PlaneUnderABrightCubeFaceWithoutSkySampling) { plane_under_bright_top_face(false); }
+TEST(PathAnalytic, PlaneUnderABrightCubeFaceWithSkySamplingAndTheSobolSampler) {
+  plane_under_bright_top_face(true, SamplerKind::Sobol);
+}
 
 // Inside a closed sphere of albedo a whose surface emits Le, every point sees
 // Le + a Le + a^2 Le + ... = Le / (1 - a); with a = 0.5, Le = 0.5: 1.
-void closed_emitting_sphere(bool nee) {
+void closed_emitting_sphere(bool nee, SamplerKind sampler = SamplerKind::Stochastic) {
   RenderOverrides ov;
   ov.nee = nee ? Switch::On : Switch::Off;
+  ov.sampler = sampler;
   const Image img = render(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 0], "to": [0, 0, 1], "vfov": 70},
     "film": {"width": 40, "height": 40}, "render": {"integrator": "path", "spp": 16, "sampler": "stochastic", "max_depth": 64},
     "materials": {"shell": {"type": "emissive", "radiance": [0.5, 0.5, 0.5], "albedo": [0.5, 0.5, 0.5], "two_sided": true}},
@@ -128,6 +143,9 @@ void closed_emitting_sphere(bool nee) {
 
 TEST(PathAnalytic, InsideAnEmittingSphereWithNee) { closed_emitting_sphere(true); }
 TEST(PathAnalytic, InsideAnEmittingSpherePlainEstimator) { closed_emitting_sphere(false); }
+TEST(PathAnalytic, InsideAnEmittingSphereWithNeeAndTheSobolSampler) {
+  closed_emitting_sphere(true, SamplerKind::Sobol);
+}
 
 // A point light of intensity I at the centre of a Lambert sphere of radius r and albedo a:
 // irradiance I / r^2 everywhere, radiance a I / (pi r^2 (1 - a)) with interreflection.

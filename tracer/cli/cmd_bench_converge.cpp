@@ -1,6 +1,6 @@
 // `tracer bench converge SCENE --spp 1,4,16,...`: error against time as the sample count
-// grows, for the scene's settings or for NEE+MIS and the plain estimator side by side; a
-// table, a CSV file and a log-log plot of RMSE against seconds.
+// grows, for the scene's settings, for NEE+MIS and the plain estimator side by side, or for
+// several samplers side by side; a table, a CSV file and a log-log plot of RMSE against seconds.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,16 +13,22 @@
 #include "image/image_io.h"
 #include "io/input_error.h"
 #include "io/output_paths.h"
+#include "options/enum_names.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
 
 struct BenchConvergeCommand {
-  std::string scene, ref, csv, plot, spp = "1,4,16,64,256", nee = "scene";
+  std::string scene, ref, csv, plot, spp = "1,4,16,64,256", nee = "scene", samplers;
   uint32_t ref_spp = 0, width = 0, height = 0;
   int threads = 0;
 };
 namespace {
+
+struct Series {
+  std::string label;
+  RenderOverrides overrides;  // on top of the common ones
+};
 
 struct Point {
   uint32_t spp;
@@ -49,12 +55,37 @@ double seconds_to_reach(const std::vector<Point>& series, double ImageError::*me
   return last.seconds * std::pow(last.error.*metric / target, 2.0 / power);
 }
 
+// Series i against series 0 (the first sampler listed): RMSE at each equal spp as a ratio,
+// and the time series i needs to reach series 0's RMSE at its largest spp.
+void compare_with_baseline(const std::vector<Series>& setups, const std::vector<std::vector<Point>>& results,
+                           size_t i) {
+  const std::string& name = setups[i].label;
+  const std::string& base_name = setups[0].label;
+  std::printf("%s against %s, RMSE at equal spp:", name.c_str(), base_name.c_str());
+  for (size_t k = 0; k < results[i].size(); ++k)
+    std::printf(" %u spp %.3fx%s", results[i][k].spp, results[i][k].error.rmse / results[0][k].error.rmse,
+                k + 1 < results[i].size() ? "," : "\n");
+  const Point& last = results[0].back();
+  bool extrapolated = false;
+  const double t = seconds_to_reach(results[i], &ImageError::rmse, 1, last.error.rmse, extrapolated);
+  std::printf("%s reaches %s's RMSE at %u spp (%.6g, %.3f s) in %.3f s%s: time to equal RMSE %.3fx\n", name.c_str(),
+              base_name.c_str(), last.spp, last.error.rmse, last.seconds, t, extrapolated ? " (extrapolated)" : "",
+              t / last.seconds);
+}
+
 }  // namespace
 
 static int run_bench_converge(const BenchConvergeCommand& cmd) {
   const std::vector<uint32_t> spps = parse_spp_list("--spp", cmd.spp);
   if (cmd.nee != "scene" && cmd.nee != "on" && cmd.nee != "off" && cmd.nee != "both")
     throw InputError("--nee " + cmd.nee + ": expected scene, on, off or both");
+  std::vector<SamplerKind> samplers;
+  std::stringstream sampler_names(cmd.samplers);
+  for (std::string name; std::getline(sampler_names, name, ',');)
+    samplers.push_back(parse_enum<SamplerKind>(name, "--samplers"));
+  if (!samplers.empty() && cmd.nee == "both")
+    throw InputError("--samplers: compares samplers with one estimator; give --nee scene, on or off with it");
+  if (samplers.size() == 1) throw InputError("--samplers: give two or more samplers to compare");
   const std::string stem = std::filesystem::path(cmd.scene).stem().string();
   const std::string csv = cmd.csv.empty() ? stem + "-converge.csv" : cmd.csv;
   const std::string plot = cmd.plot.empty() ? stem + "-converge.png" : cmd.plot;
@@ -81,21 +112,28 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
                                     stem + "-converge-ref.exr");
 
   const bool nee = probe.settings.nee == Switch::On;
-  std::vector<std::pair<std::string, Switch>> series_setups;
-  if (cmd.nee == "both")
-    series_setups = {{"NEE+MIS", Switch::On}, {"plain", Switch::Off}};
-  else
-    series_setups = {{probe.settings.integrator == IntegratorKind::Path ? (nee ? "NEE+MIS" : "plain") : "render",
-                      probe.settings.nee}};
+  std::vector<Series> series_setups;
+  if (cmd.nee == "both") {
+    series_setups = {{"NEE+MIS", {}}, {"plain", {}}};
+    series_setups[0].overrides.nee = Switch::On;
+    series_setups[1].overrides.nee = Switch::Off;
+  } else if (!samplers.empty()) {
+    for (SamplerKind kind : samplers) {
+      series_setups.push_back({enum_name(kind), {}});
+      series_setups.back().overrides.sampler = kind;
+    }
+  } else {
+    series_setups = {{probe.settings.integrator == IntegratorKind::Path ? (nee ? "NEE+MIS" : "plain") : "render", {}}};
+  }
 
   std::ostringstream out;  // the table, written with the plot once every render is done
   out << "series,spp,seconds,rmse,display_rmse,rel_mse\n";
   std::printf("%-10s %8s %10s %12s %13s %12s\n", "series", "spp", "seconds", "RMSE", "display RMSE", "relMSE");
   std::vector<std::vector<Point>> results;
   std::vector<PlotSeries> lines;
-  for (const auto& [label, nee] : series_setups) {
+  for (const auto& [label, overrides] : series_setups) {
     RenderOverrides ov = base;
-    if (cmd.nee == "both") ov.nee = nee;
+    ov.override_with(overrides);
     results.emplace_back();
     PlotSeries line{label, {}, {}};
     for (uint32_t spp : spps) {
@@ -116,7 +154,9 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
   outputs.add(csv, out.str());
   add_loglog_plot(outputs, plot, {"RMSE against render time: " + stem, "seconds", "RMSE"}, lines);
   outputs.commit();
-  if (results.size() == 2) {
+  if (!samplers.empty()) {
+    for (size_t i = 1; i < results.size(); ++i) compare_with_baseline(series_setups, results, i);
+  } else if (results.size() == 2) {
     const Point& plain = results[1].back();
     const struct {
       const char* name;
@@ -146,6 +186,9 @@ const RegisterCommand kBenchConvergeCommand(
        app.add_option("--spp", cmd->spp, "comma-separated sample counts (default 1,4,16,64,256)");
        app.add_option("--nee", cmd->nee,
                       "scene (default), on, off, or both: NEE+MIS and the plain estimator side by side");
+       app.add_option("--samplers", cmd->samplers,
+                      "comma-separated samplers side by side (e.g. stochastic,stratified,sobol); ratios against the "
+                      "first");
        app.add_option("--ref", cmd->ref, "reference image (EXR); default: render one at --ref-spp");
        app.add_option("--ref-spp", cmd->ref_spp, "reference samples per pixel (default 8 x the largest --spp)")
            ->check(count_in(1, UINT32_MAX));

@@ -52,6 +52,7 @@ std::vector<Knob> knobs(bool cubemap_sky) {
   }
   k.push_back({"sampler", "stochastic", with([](RenderOverrides& o) { o.sampler = SamplerKind::Stochastic; }), false});
   k.push_back({"sampler", "stratified", with([](RenderOverrides& o) { o.sampler = SamplerKind::Stratified; }), true});
+  k.push_back({"sampler", "sobol", with([](RenderOverrides& o) { o.sampler = SamplerKind::Sobol; }), false});
   k.push_back({"fresnel", "schlick", with([](RenderOverrides& o) { o.fresnel = FresnelKind::Schlick; }), false});
   k.push_back({"fresnel", "exact", with([](RenderOverrides& o) { o.fresnel = FresnelKind::Exact; }), false});
   k.push_back(

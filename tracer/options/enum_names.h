@@ -22,7 +22,7 @@ struct EnumNames<IntegratorKind> {
 template <>
 struct EnumNames<SamplerKind> {
   static constexpr const char* kind = "sampler";
-  static constexpr const char* names[] = {"center", "grid", "stochastic", "stratified"};
+  static constexpr const char* names[] = {"center", "grid", "stochastic", "stratified", "sobol"};
 };
 template <>
 struct EnumNames<AccelKind> {

@@ -5,9 +5,11 @@
 // `nee` off (the plain estimator), counts fully. Russian roulette from rr_depth bounces on
 // survives with q = min(max throughput, 0.95) and divides by q, so it stays unbiased.
 // A cube-map sky sampled as a light (render.sky_sampling) is MIS-weighted like the shapes.
-// Random numbers per bounce b: four Philox pairs at dimensions kDimFirstFree + 4b + {0..3}.
+// Random numbers per bounce b: four pairs at dimensions kDimFirstFree + 4b + {0..3} (light
+// position; light choice and BSDF lobe; BSDF direction; roulette and sky cell), drawn by the
+// scene's sampler (sampler.h: Philox pairs, or scrambled Sobol pairs for `sobol`).
 #pragma once
-#include "kernel/base/philox.h"
+#include "kernel/camera/sampler.h"
 #include "kernel/geom/ray_offset.h"
 #include "kernel/integrator/whitted.h"
 #include "kernel/shading/bsdf.h"
@@ -57,10 +59,10 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, ui
     const Vec3 n = front ? s.ns : -s.ns;
     const uint32_t dim = kDimFirstFree + 4u * depth;
     float light_u1, light_u2, pick_u, choice_u, dir_u1, dir_u2, rr_u, sky_cell_u;
-    sample_uniform2(rs.seed, pixel, sample, dim, light_u1, light_u2);
-    sample_uniform2(rs.seed, pixel, sample, dim + 1u, pick_u, choice_u);
-    sample_uniform2(rs.seed, pixel, sample, dim + 2u, dir_u1, dir_u2);
-    sample_uniform2(rs.seed, pixel, sample, dim + 3u, rr_u, sky_cell_u);
+    draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim, light_u1, light_u2);
+    draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 1u, pick_u, choice_u);
+    draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 2u, dir_u1, dir_u2);
+    draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 3u, rr_u, sky_cell_u);
 
     if (nee && !is_specular(m)) {
       const LightSample ls = sample_light(scene, pick_light(scene, pick_u), s.p, light_u1, light_u2, sky_cell_u);

@@ -18,7 +18,7 @@ TRACER_HD Vec3 render_sample(const SceneView& scene, uint32_t px, uint32_t py, u
   const uint32_t pixel = py * rs.width + px;
   float ox = 0.5f, oy = 0.5f, lu = 0.5f, lv = 0.5f;
   film_offset(rs.sampler, rs.grid_n, rs.seed, pixel, s, ox, oy);
-  if (uses_feature(scene.features, kFeatureThinLens)) sample_uniform2(rs.seed, pixel, s, kDimLens, lu, lv);
+  if (uses_feature(scene.features, kFeatureThinLens)) draw_uniform2(rs.sampler, rs.seed, pixel, s, kDimLens, lu, lv);
   const Ray ray = camera_ray(scene.camera, static_cast<float>(px) + ox, static_cast<float>(py) + oy, lu, lv);
   ++counts.camera;
   switch (rs.integrator) {
