@@ -10,6 +10,7 @@
 #include <cmath>
 #include <vector>
 
+#include "kernel/camera/sampler.h"
 #include "kernel/shading/bsdf.h"
 #include "kernel/shading/light_sampling.h"
 #include "test_util.h"
@@ -61,15 +62,27 @@ double chi2_p_value(const std::vector<double>& observed, const std::vector<doubl
   return gamma_q((cells - 1) / 2.0, chi2 / 2.0);
 }
 
+// Where a sampling routine's uniforms come from: the fixed stream, or one pixel's points of
+// the Sobol sampler in the pairs the path tracer gives a BSDF sample (the lobe choice is
+// the second half of bounce 0's pair 1, the direction its pair 2; path.h).
+enum class Inputs { Stream, Sobol };
+
 // Directions binned by (cos theta, phi) about `axis`; `cdf_cos(c)` is the probability that
 // cos theta < c. Returns the p-value.
 template <class Sample, class CdfCos>
-double direction_test(Vec3 axis, Sample sample, CdfCos cdf_cos, double cos_lo, int cos_bins = 16, int phi_bins = 24) {
+double direction_test(Vec3 axis, Sample sample, CdfCos cdf_cos, double cos_lo, Inputs inputs = Inputs::Stream,
+                      int cos_bins = 16, int phi_bins = 24) {
   const Frame f = frame_around(axis);
   std::vector<double> observed(cos_bins * phi_bins, 0.0), expected(cos_bins * phi_bins, 0.0);
   Stream s{42};
   for (int i = 0; i < kSamples; ++i) {
-    const float u1 = s.next(), u2 = s.next(), u3 = s.next();  // one declaration: drawn in order
+    float u1, u2, u3, unused;
+    if (inputs == Inputs::Sobol) {
+      sobol_uniform2(42u, 0u, static_cast<uint32_t>(i), kDimFirstFree + 1u, unused, u1);
+      sobol_uniform2(42u, 0u, static_cast<uint32_t>(i), kDimFirstFree + 2u, u2, u3);
+    } else {
+      u1 = s.next(), u2 = s.next(), u3 = s.next();
+    }
     const Vec3 d = sample(u1, u2, u3);
     const double c = dot(d, f.n), phi = std::atan2(dot(d, f.b), dot(d, f.t)) + M_PI;
     const int ci = std::min(cos_bins - 1, std::max(0, int((c - cos_lo) / (1 - cos_lo) * cos_bins)));
@@ -93,10 +106,10 @@ Material material(MaterialKind kind) {
   return m;
 }
 
-TEST(SamplingChi2, CosineHemisphere) {
+double cosine_hemisphere_p(Inputs inputs) {
   const Vec3 n = normalize(Vec3{0.3f, 0.5f, -0.8f});
   const Material m = material(MaterialKind::Lambert);
-  const double p = direction_test(
+  return direction_test(
       n,
       [&](float a, float b, float c) {
         BsdfSample s;
@@ -104,16 +117,17 @@ TEST(SamplingChi2, CosineHemisphere) {
         EXPECT_NEAR(s.pdf, dot(s.wi, n) / kPi, 1e-5);
         return s.wi;
       },
-      [](double c) { return c * c; }, 0.0);  // P(cos < c) = c^2 for density cos / pi
-  EXPECT_GT(p, kSignificance);
+      [](double c) { return c * c; }, 0.0, inputs);  // P(cos < c) = c^2 for density cos / pi
 }
 
-TEST(SamplingChi2, MetalLobeAtNormalIncidence) {
+TEST(SamplingChi2, CosineHemisphere) { EXPECT_GT(cosine_hemisphere_p(Inputs::Stream), kSignificance); }
+
+double metal_lobe_p(Inputs inputs) {
   Material m = material(MaterialKind::Metal);
   m.roughness = 0.4f;
   const float e = metal_exponent(m.roughness);
   const Vec3 n = {0, 1, 0};
-  const double p = direction_test(
+  return direction_test(
       n,
       [&](float a, float b, float c) {
         BsdfSample s;
@@ -121,26 +135,36 @@ TEST(SamplingChi2, MetalLobeAtNormalIncidence) {
         EXPECT_NEAR(s.pdf, pdf_bsdf(m, n, s.wi, n), 1e-4 * s.pdf);
         return s.wi;
       },
-      [&](double c) { return std::pow(c, e + 1.0); }, 0.0);  // density (e+1)/(2 pi) cos^e
-  EXPECT_GT(p, kSignificance);
+      [&](double c) { return std::pow(c, e + 1.0); }, 0.0, inputs);  // density (e+1)/(2 pi) cos^e
 }
 
-TEST(SamplingChi2, PhongLobes) {
+TEST(SamplingChi2, MetalLobeAtNormalIncidence) { EXPECT_GT(metal_lobe_p(Inputs::Stream), kSignificance); }
+
+double phong_lobes_p(Inputs inputs) {
   Material m = material(MaterialKind::Phong);
   m.albedo = {0.3f, 0.3f, 0.3f};
   m.specular = {0.5f, 0.5f, 0.5f};
   m.shininess = 20.0f;
   const Vec3 n = {0, 0, 1};
   const double pd = phong_diffuse_probability(m);
-  const double p = direction_test(
+  return direction_test(
       n,
       [&](float a, float b, float c) {
         BsdfSample s;
         EXPECT_TRUE(sample_bsdf(m, n, n, true, a, b, c, s));
         return s.wi;
       },
-      [&](double c) { return pd * c * c + (1 - pd) * std::pow(c, m.shininess + 1.0); }, 0.0);
-  EXPECT_GT(p, kSignificance);
+      [&](double c) { return pd * c * c + (1 - pd) * std::pow(c, m.shininess + 1.0); }, 0.0, inputs);
+}
+
+TEST(SamplingChi2, PhongLobes) { EXPECT_GT(phong_lobes_p(Inputs::Stream), kSignificance); }
+
+// The same three lobes fed the Sobol sampler's points: a warp that distorts their density
+// fails here as it would with independent uniforms.
+TEST(SamplingChi2, BsdfLobesFromTheSobolSamplersPoints) {
+  EXPECT_GT(cosine_hemisphere_p(Inputs::Sobol), kSignificance);
+  EXPECT_GT(metal_lobe_p(Inputs::Sobol), kSignificance);
+  EXPECT_GT(phong_lobes_p(Inputs::Sobol), kSignificance);
 }
 
 TEST(SamplingChi2, DielectricChoosesReflectionWithFresnelProbability) {
@@ -375,6 +399,10 @@ TEST(SamplingChi2, RejectsAWrongDensity) {
   const double p = direction_test(
       {0, 0, 1}, [](float a, float b, float) { return direction_from(a, b); }, [](double c) { return c * c; }, 0.0);
   EXPECT_LT(p, 1e-12);
+  const double p_sobol = direction_test(
+      {0, 0, 1}, [](float, float b, float c) { return direction_from(b, c); }, [](double c) { return c * c; }, 0.0,
+      Inputs::Sobol);
+  EXPECT_LT(p_sobol, 1e-12) << "and with the Sobol sampler's points";
 }
 
 }  // namespace
