@@ -62,10 +62,8 @@ TRACER_HD void sobol_uniform2(uint64_t seed, uint32_t pixel, uint32_t sample, ui
   const Philox4 keys =
       philox4x32_10({{pixel, dimension, 0u, 1u}}, static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32));
   const uint32_t index = nested_uniform_scramble(sample, keys.v[0]);
-  // nested_uniform_scramble(sobol_dimensionN(index)) with the inner reversals cancelled:
-  // reversed, dimension 0 is the index itself and dimension 1 its superset parity.
-  a = uniform_from_bits(reverse_bits(laine_karras_permutation(index, keys.v[1])));
-  b = uniform_from_bits(reverse_bits(laine_karras_permutation(superset_parity(index), keys.v[2])));
+  a = uniform_from_bits(nested_uniform_scramble(sobol_dimension0(index), keys.v[1]));
+  b = uniform_from_bits(nested_uniform_scramble(sobol_dimension1(index), keys.v[2]));
 }
 
 }  // namespace tracer

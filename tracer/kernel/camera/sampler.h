@@ -8,6 +8,16 @@ namespace tracer {
 
 enum class SamplerKind : uint32_t { Center, Grid, Stochastic, Stratified, Sobol };
 
+// Two uniforms for dimension pair `dimension` (the film's, the lens's, each bounce's): the
+// Sobol sampler's scrambled Sobol pair, every other sampler's independent Philox pair.
+TRACER_HD void draw_uniform2(SamplerKind kind, uint64_t seed, uint32_t pixel, uint32_t sample, uint32_t dimension,
+                             float& a, float& b) {
+  if (kind == SamplerKind::Sobol)
+    sobol_uniform2(seed, pixel, sample, dimension, a, b);
+  else
+    sample_uniform2(seed, pixel, sample, dimension, a, b);
+}
+
 // Offset in [0,1)^2 inside the pixel of sample `s` of `spp`; `grid_n` = sqrt(spp) for the
 // grid and stratified samplers (the loader checks that spp is a square).
 TRACER_HD void film_offset(SamplerKind kind, uint32_t grid_n, uint64_t seed, uint32_t pixel, uint32_t s, float& ox,
@@ -18,8 +28,8 @@ TRACER_HD void film_offset(SamplerKind kind, uint32_t grid_n, uint64_t seed, uin
       ox = (static_cast<float>(s % grid_n) + 0.5f) / static_cast<float>(grid_n);
       oy = (static_cast<float>(s / grid_n) + 0.5f) / static_cast<float>(grid_n);
       return;
-    case SamplerKind::Stochastic: sample_uniform2(seed, pixel, s, kDimFilm, ox, oy); return;
-    case SamplerKind::Sobol: sobol_uniform2(seed, pixel, s, kDimFilm, ox, oy); return;
+    case SamplerKind::Stochastic:
+    case SamplerKind::Sobol: draw_uniform2(kind, seed, pixel, s, kDimFilm, ox, oy); return;
     case SamplerKind::Stratified: {
       float jx, jy;
       sample_uniform2(seed, pixel, s, kDimFilm, jx, jy);
@@ -30,16 +40,6 @@ TRACER_HD void film_offset(SamplerKind kind, uint32_t grid_n, uint64_t seed, uin
       return;
     }
   }
-}
-
-// Two uniforms for dimension pair `dimension` past the film's: the Sobol sampler's
-// scrambled Sobol pair, every other sampler's independent Philox pair.
-TRACER_HD void draw_uniform2(SamplerKind kind, uint64_t seed, uint32_t pixel, uint32_t sample, uint32_t dimension,
-                             float& a, float& b) {
-  if (kind == SamplerKind::Sobol)
-    sobol_uniform2(seed, pixel, sample, dimension, a, b);
-  else
-    sample_uniform2(seed, pixel, sample, dimension, a, b);
 }
 
 }  // namespace tracer
