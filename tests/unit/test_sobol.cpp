@@ -103,3 +103,20 @@ TEST(Sobol, DrawUniformPicksTheSamplersPairs) {
   EXPECT_EQ(a, x);
   EXPECT_EQ(b, y);
 }
+
+// The pair is each Sobol dimension of the shuffled index, Owen-scrambled: the composition of
+// the functions tested above, whatever reversals sobol_uniform2 cancels.
+TEST(Sobol, PairIsTheScrambledDimensionsOfTheShuffledIndex) {
+  const uint64_t seed = 0x0123456789abcdefull;
+  for (uint32_t pixel : {0u, 7u, 123456u})
+    for (uint32_t dimension = 0; dimension < 12; ++dimension)
+      for (uint32_t sample : {0u, 1u, 2u, 3u, 17u, 255u, 4096u, 0xfffffffeu}) {
+        const Philox4 keys = philox4x32_10({{pixel, dimension, 0u, 1u}}, static_cast<uint32_t>(seed),
+                                           static_cast<uint32_t>(seed >> 32));
+        const uint32_t index = nested_uniform_scramble(sample, keys.v[0]);
+        float a, b;
+        sobol_uniform2(seed, pixel, sample, dimension, a, b);
+        EXPECT_EQ(a, uniform_from_bits(nested_uniform_scramble(sobol_dimension0(index), keys.v[1])));
+        EXPECT_EQ(b, uniform_from_bits(nested_uniform_scramble(sobol_dimension1(index), keys.v[2])));
+      }
+}

@@ -62,8 +62,11 @@ TRACER_HD void sobol_uniform2(uint64_t seed, uint32_t pixel, uint32_t sample, ui
   const Philox4 keys =
       philox4x32_10({{pixel, dimension, 0u, 1u}}, static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32));
   const uint32_t index = nested_uniform_scramble(sample, keys.v[0]);
-  a = uniform_from_bits(nested_uniform_scramble(sobol_dimension0(index), keys.v[1]));
-  b = uniform_from_bits(nested_uniform_scramble(sobol_dimension1(index), keys.v[2]));
+  // nested_uniform_scramble(sobol_dimension0(index)) and nested_uniform_scramble(
+  // sobol_dimension1(index)) with reverse_bits(reverse_bits(x)) = x cancelled: four of the
+  // eight bit reversals, which took most of the draw's time (perf)
+  a = uniform_from_bits(reverse_bits(laine_karras_permutation(index, keys.v[1])));
+  b = uniform_from_bits(reverse_bits(laine_karras_permutation(superset_parity(index), keys.v[2])));
 }
 
 }  // namespace tracer

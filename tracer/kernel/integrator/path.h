@@ -58,13 +58,18 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, ui
     const Vec3 wo = -ray.dir;
     const Vec3 n = front ? s.ns : -s.ns;
     const uint32_t dim = kDimFirstFree + 4u * depth;
-    float light_u1, light_u2, pick_u, choice_u, dir_u1, dir_u2, rr_u, sky_cell_u;
-    draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim, light_u1, light_u2);
+    const bool sample_lights = nee && !is_specular(m);
+    const bool roulette = depth + 1 >= rs.rr_depth;
+    // A pair is drawn only where it is used: each is a pure function of its dimension, so
+    // one left undrawn changes no other.
+    float light_u1 = 0.0f, light_u2 = 0.0f, pick_u, choice_u, dir_u1, dir_u2, rr_u = 0.0f, sky_cell_u = 0.0f;
+    if (sample_lights) draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim, light_u1, light_u2);
     draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 1u, pick_u, choice_u);
     draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 2u, dir_u1, dir_u2);
-    draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 3u, rr_u, sky_cell_u);
+    if (roulette || (sample_lights && scene.sky_light != kNoHit))
+      draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 3u, rr_u, sky_cell_u);
 
-    if (nee && !is_specular(m)) {
+    if (sample_lights) {
       const LightSample ls = sample_light(scene, pick_light(scene, pick_u), s.p, light_u1, light_u2, sky_cell_u);
       const Vec3 f = ls.valid ? eval_bsdf_cos(m, wo, ls.wi, n) : Vec3{0.0f, 0.0f, 0.0f};
       if (max_component(f) > 0.0f) {
@@ -81,7 +86,7 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, ui
     throughput *= bs.weight;
     bsdf_pdf = bs.pdf;
     specular = bs.specular;
-    if (depth + 1 >= rs.rr_depth) {
+    if (roulette) {
       const float q = min_of(max_component(throughput), 0.95f);
       if (!(rr_u < q)) break;
       throughput = throughput / q;
