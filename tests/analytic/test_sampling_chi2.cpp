@@ -132,7 +132,7 @@ double metal_lobe_p(Inputs inputs) {
       [&](float a, float b, float c) {
         BsdfSample s;
         EXPECT_TRUE(sample_bsdf(m, n, n, true, a, b, c, s));
-        EXPECT_NEAR(s.pdf, pdf_bsdf(m, n, s.wi, n), 1e-4 * s.pdf);
+        EXPECT_NEAR(s.pdf, eval_bsdf(m, n, s.wi, n).pdf, 1e-4 * s.pdf);
         return s.wi;
       },
       [&](double c) { return std::pow(c, e + 1.0); }, 0.0, inputs);  // density (e+1)/(2 pi) cos^e

@@ -111,8 +111,8 @@ TEST(Sobol, PairIsTheScrambledDimensionsOfTheShuffledIndex) {
   for (uint32_t pixel : {0u, 7u, 123456u})
     for (uint32_t dimension = 0; dimension < 12; ++dimension)
       for (uint32_t sample : {0u, 1u, 2u, 3u, 17u, 255u, 4096u, 0xfffffffeu}) {
-        const Philox4 keys = philox4x32_10({{pixel, dimension, 0u, 1u}}, static_cast<uint32_t>(seed),
-                                           static_cast<uint32_t>(seed >> 32));
+        const Philox4 keys =
+            philox4x32_10({{pixel, dimension, 0u, 1u}}, static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32));
         const uint32_t index = nested_uniform_scramble(sample, keys.v[0]);
         float a, b;
         sobol_uniform2(seed, pixel, sample, dimension, a, b);

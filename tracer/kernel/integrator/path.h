@@ -71,12 +71,12 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, Ray ray, uint32_t pixel, ui
 
     if (sample_lights) {
       const LightSample ls = sample_light(scene, pick_light(scene, pick_u), s.p, light_u1, light_u2, sky_cell_u);
-      const Vec3 f = ls.valid ? eval_bsdf_cos(m, wo, ls.wi, n) : Vec3{0.0f, 0.0f, 0.0f};
-      if (max_component(f) > 0.0f) {
+      const BsdfValue f = ls.valid ? eval_bsdf(m, wo, ls.wi, n) : BsdfValue{{0.0f, 0.0f, 0.0f}, 0.0f};
+      if (max_component(f.f_cos) > 0.0f) {
         ++counts.shadow;
         if (light_visible(scene, s, ls)) {
-          const float w = ls.prim == kNoHit ? 1.0f : power_heuristic(ls.pdf, pdf_bsdf(m, wo, ls.wi, n));
-          radiance += throughput * f * ls.radiance * (w / ls.pdf);
+          const float w = ls.prim == kNoHit ? 1.0f : power_heuristic(ls.pdf, f.pdf);
+          radiance += throughput * f.f_cos * ls.radiance * (w / ls.pdf);
         }
       }
     }

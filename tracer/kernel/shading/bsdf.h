@@ -1,8 +1,8 @@
 // Scattering for the path integrator, one switch per operation over the material kinds
 // (docs/materials.md). wo points from the surface toward the previous vertex, n is the
 // unit shading normal flipped to wo's side, wi the sampled or queried direction; all in
-// world space. eval_bsdf_cos returns f(wo, wi) |cos(n, wi)|, pdf_bsdf the solid-angle
-// density with which sample_bsdf picks wi; both are 0 for specular (delta) choices.
+// world space. eval_bsdf returns f(wo, wi) |cos(n, wi)| and the solid-angle density with
+// which sample_bsdf picks wi; both are 0 for specular (delta) choices.
 //   lambert:    f = albedo / pi, cosine-weighted sampling.
 //   metal:      roughness 0 is a mirror tinted by albedo. Otherwise a Phong lobe
 //               cos^e(alpha) about the mirror direction, e = 2 / roughness^2 - 2, sampled
@@ -42,42 +42,41 @@ TRACER_HD float phong_diffuse_probability(const Material& m) {
   return d + s > 0.0f ? d / (d + s) : 1.0f;
 }
 
-TRACER_HD Vec3 eval_bsdf_cos(const Material& m, Vec3 wo, Vec3 wi, Vec3 n) {
-  const float cos_i = dot(wi, n);
-  const Vec3 zero = {0.0f, 0.0f, 0.0f};
-  if (!(cos_i > 0.0f)) return zero;
-  switch (m.kind) {
-    case MaterialKind::Lambert:
-    case MaterialKind::Emissive: return m.albedo * (cos_i / kPi);
-    case MaterialKind::Metal:
-      if (m.roughness == 0.0f) return zero;
-      return m.albedo * phong_lobe_pdf(metal_exponent(m.roughness), dot(wi, reflect(-wo, n)));
-    case MaterialKind::Phong: {
-      const float cos_a = max_of(dot(wi, reflect(-wo, n)), 0.0f);
-      const float lobe = (m.shininess + 2.0f) / (2.0f * kPi) * det_pow(cos_a, m.shininess);
-      return m.albedo * (cos_i / kPi) + m.specular * (lobe * cos_i);
-    }
-    case MaterialKind::Dielectric: break;
-  }
-  return zero;
-}
+// f(wo, wi) |cos(n, wi)| and the density with which sample_bsdf picks wi, together: the
+// lobe's cos^e(alpha) is one det_pow for both.
+struct BsdfValue {
+  Vec3 f_cos;
+  float pdf;
+};
 
-TRACER_HD float pdf_bsdf(const Material& m, Vec3 wo, Vec3 wi, Vec3 n) {
+TRACER_HD BsdfValue eval_bsdf(const Material& m, Vec3 wo, Vec3 wi, Vec3 n) {
   const float cos_i = dot(wi, n);
-  if (!(cos_i > 0.0f)) return 0.0f;
+  BsdfValue v = {{0.0f, 0.0f, 0.0f}, 0.0f};
+  if (!(cos_i > 0.0f)) return v;
   switch (m.kind) {
     case MaterialKind::Lambert:
-    case MaterialKind::Emissive: return cos_i / kPi;
+    case MaterialKind::Emissive:
+      v.f_cos = m.albedo * (cos_i / kPi);
+      v.pdf = cos_i / kPi;
+      return v;
     case MaterialKind::Metal:
-      if (m.roughness == 0.0f) return 0.0f;
-      return phong_lobe_pdf(metal_exponent(m.roughness), dot(wi, reflect(-wo, n)));
+      if (m.roughness == 0.0f) return v;
+      v.pdf = phong_lobe_pdf(metal_exponent(m.roughness), dot(wi, reflect(-wo, n)));
+      v.f_cos = m.albedo * v.pdf;
+      return v;
     case MaterialKind::Phong: {
+      const float cos_a = dot(wi, reflect(-wo, n));
+      const float power = det_pow(max_of(cos_a, 0.0f), m.shininess);
+      const float lobe = (m.shininess + 2.0f) / (2.0f * kPi) * power;
+      v.f_cos = m.albedo * (cos_i / kPi) + m.specular * (lobe * cos_i);
       const float pd = phong_diffuse_probability(m);
-      return pd * cos_i / kPi + (1.0f - pd) * phong_lobe_pdf(m.shininess, dot(wi, reflect(-wo, n)));
+      const float lobe_pdf = cos_a > 0.0f ? (m.shininess + 1.0f) / (2.0f * kPi) * power : 0.0f;  // phong_lobe_pdf
+      v.pdf = pd * cos_i / kPi + (1.0f - pd) * lobe_pdf;
+      return v;
     }
     case MaterialKind::Dielectric: break;
   }
-  return 0.0f;
+  return v;
 }
 
 // `front`: wo is on the side the geometric normal points to (outside a dielectric).
@@ -128,9 +127,10 @@ TRACER_HD bool sample_bsdf(const Material& m, Vec3 wo, Vec3 n, bool front, float
       if (!(max_component(m.albedo) > 0.0f || max_component(m.specular) > 0.0f)) return false;
       const Vec3 local = u_choice < pd ? sample_cosine_hemisphere(u1, u2) : sample_phong_lobe(m.shininess, u1, u2);
       s.wi = frame_around(u_choice < pd ? n : reflect(-wo, n)).to_world(local);
-      s.pdf = pdf_bsdf(m, wo, s.wi, n);
+      const BsdfValue v = eval_bsdf(m, wo, s.wi, n);
+      s.pdf = v.pdf;
       if (!(s.pdf > 0.0f)) return false;
-      s.weight = eval_bsdf_cos(m, wo, s.wi, n) / s.pdf;
+      s.weight = v.f_cos / s.pdf;
       return true;
     }
   }
