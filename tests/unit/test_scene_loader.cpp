@@ -111,6 +111,15 @@ TEST(SceneLoader, DefaultsAndOverrides) {
   EXPECT_EQ(s.settings.integrator, IntegratorKind::Whitted);
   EXPECT_EQ(s.settings.accel, AccelKind::Bvh);
   EXPECT_EQ(s.settings.max_depth, 5u);
+  const Scene plain =
+      test::scene_from(scene_with(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"})"));
+  EXPECT_EQ(plain.settings.sampler, SamplerKind::Sobol);  // the default for a scene that names none
+}
+
+// Every shipped scene names its sampler, so the default (sobol since issue 29) moves no golden.
+TEST(SceneLoader, EveryShippedSceneNamesItsSampler) {
+  for (const auto& path : test::shipped_scenes())
+    EXPECT_NE(test::read_file(path).find("\"sampler\""), std::string::npos) << path;
 }
 
 TEST(SceneLoader, EveryShippedSceneLoads) {

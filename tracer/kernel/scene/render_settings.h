@@ -29,7 +29,7 @@ enum Effects : uint32_t {
 
 #define TRACER_RENDER_OPTIONS(X)                                                                                    \
   X(integrator, IntegratorKind, IntegratorKind::Whitted, render, Always, "whitted, path, normals, albedo or depth") \
-  X(sampler, SamplerKind, SamplerKind::Stochastic, render, Always, "center, grid, stochastic, stratified or sobol") \
+  X(sampler, SamplerKind, SamplerKind::Sobol, render, Always, "center, grid, stochastic, stratified or sobol") \
   X(spp, uint32_t, 1u, render, Always, "samples per pixel")                                                         \
   X(seed, uint64_t, 0u, render, Always, "64-bit seed")                                                              \
   X(width, uint32_t, 0u, film, Always, "image width in pixels")                                                     \
