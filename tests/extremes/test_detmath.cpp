@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "kernel/base/detmath.h"
 
@@ -131,6 +132,23 @@ TEST(DetMath, SinCosHugeArguments) {
   EXPECT_SWEEP_WITHIN_BOUND(s);
   EXPECT_LE(ulp_error(det_sin(3.4028235e38f), std::sin(static_cast<double>(3.4028235e38f))), kUlpBound);
   EXPECT_LE(ulp_error(det_cos(3.4028235e38f), std::cos(static_cast<double>(3.4028235e38f))), kUlpBound);
+}
+
+// det_sincos shares one argument reduction and must equal det_sin and det_cos bit for bit:
+// every float in [-8, 8] at a stride, huge and tiny arguments, infinities and NaN.
+TEST(DetMath, SinCosPairEqualsSinAndCos) {
+  std::mt19937 rng(5);
+  std::vector<float> xs = {0.0f,   -0.0f,     0x1p-12f,   -0x1p-12f, 0x1.fffffep-13f, 3.4028235e38f, -3.4028235e38f,
+                           1e-45f, kInfinity, -kInfinity, kNaN};
+  for (uint32_t bits = 0; bits < 0x41000000u; bits += 997)
+    xs.insert(xs.end(), {float_of_bits(bits), -float_of_bits(bits)});
+  for (int i = 0; i < 200000; ++i) xs.push_back(float_of_bits(rng() & 0xff7fffffu));
+  for (float x : xs) {
+    float s, c;
+    det_sincos(x, s, c);
+    ASSERT_EQ(bits_of(s), bits_of(det_sin(x))) << x;
+    ASSERT_EQ(bits_of(c), bits_of(det_cos(x))) << x;
+  }
 }
 
 // Every special value, compared bit for bit with what glibc's float functions return

@@ -194,6 +194,24 @@ TRACER_HD float det_cos(float x) {
   }
 }
 
+// det_sin(x) and det_cos(x), bit for bit, from one argument reduction.
+TRACER_HD void det_sincos(float x, float& s, float& c) {
+  using namespace detmath_detail;
+  if (!is_finite(x)) {
+    s = c = kNaN;
+    return;
+  }
+  const Reduced red = reduce_pi_over_2(x);
+  const double sin_r = sin_poly(red.r), cos_r = cos_poly(red.r);
+  switch (red.quadrant) {
+    case 0: s = static_cast<float>(sin_r), c = static_cast<float>(cos_r); break;
+    case 1: s = static_cast<float>(cos_r), c = static_cast<float>(-sin_r); break;
+    case 2: s = static_cast<float>(-sin_r), c = static_cast<float>(-cos_r); break;
+    default: s = static_cast<float>(-cos_r), c = static_cast<float>(sin_r); break;
+  }
+  if (abs_of(x) < 0x1p-12f) s = x;  // as det_sin
+}
+
 TRACER_HD float det_tan(float x) {
   using namespace detmath_detail;
   if (!is_finite(x)) return kNaN;

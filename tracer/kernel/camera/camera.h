@@ -22,8 +22,9 @@ TRACER_HD Ray camera_ray(const Camera& cam, float fx, float fy, float lu, float 
   Vec3 origin = cam.origin;
   if (cam.lens_radius > 0.0f) {
     const float r = cam.lens_radius * det_sqrt(lu);
-    const float phi = 2.0f * kPi * lv;
-    origin = origin + cam.lens_u * (r * det_cos(phi)) + cam.lens_v * (r * det_sin(phi));
+    float sin_phi, cos_phi;
+    det_sincos(2.0f * kPi * lv, sin_phi, cos_phi);
+    origin = origin + cam.lens_u * (r * cos_phi) + cam.lens_v * (r * sin_phi);
   }
   return {origin, normalize(target - origin)};
 }

@@ -23,8 +23,9 @@ TRACER_HD Frame frame_around(Vec3 n) {
 // Direction at polar angle acos(cos_theta) and azimuth 2 pi u about +z.
 TRACER_HD Vec3 direction_from(float cos_theta, float u) {
   const float sin_theta = det_sqrt(max_of(0.0f, 1.0f - cos_theta * cos_theta));
-  const float phi = 2.0f * kPi * u;
-  return {sin_theta * det_cos(phi), sin_theta * det_sin(phi), cos_theta};
+  float sin_phi, cos_phi;
+  det_sincos(2.0f * kPi * u, sin_phi, cos_phi);
+  return {sin_theta * cos_phi, sin_theta * sin_phi, cos_theta};
 }
 
 // Cosine-weighted hemisphere about +z (Malley's method with the polar disk map):
