@@ -27,7 +27,7 @@ std::string scene_with(const std::string& render) {
 // Options set away from their defaults, one value per option, given as JSON.
 nlohmann::json changed_options() {
   return {{"integrator", "path"},
-          {"sampler", "grid"},
+          {"sampler", "stochastic"},
           {"spp", 4},
           {"seed", 9},
           {"width", 6},
@@ -39,7 +39,9 @@ nlohmann::json changed_options() {
           {"sky_sampling", false},
           {"triangle_test", "moller-trumbore"},
           {"grid_resolution", 12},
-          {"effects", "shadows,reflections"}};
+          {"effects", "shadows,reflections"},
+          {"noise_threshold", 0.25},  // exact in float, so the JSON round trip is exact
+          {"min_spp", 2}};
 }
 
 TEST(RenderOptions, EveryOptionIsCoveredByThisTest) {

@@ -19,6 +19,7 @@
 #include "options/render_options.h"
 #include "render/partial_file.h"
 #include "render/progress.h"
+#include "render/render_adaptive.h"
 #include "render/render_cpu.h"
 #include "render/render_cuda.h"
 #include "scene/scene_loader.h"
@@ -88,7 +89,22 @@ static int run_render(const RenderCommand& cmd) {
   const double build_s = scene.report.build_seconds;
 
   const RenderSettings& rs = scene.settings;
+  const bool adaptive = rs.noise_threshold > 0.0f;
+  if (adaptive && partial)
+    throw InputError(cmd.scene +
+                     ": --samples: an adaptive render (noise_threshold) decides each pixel's samples "
+                     "from all of them, so it cannot be split into sample ranges; render it whole");
+  if (adaptive && cmd.device == "cuda")
+    throw InputError(cmd.scene + ": --device cuda: adaptive sampling (noise_threshold) runs on the CPU only so far");
+  if (!cmd.sample_map.empty() && !adaptive)
+    throw InputError(cmd.scene + ": --sample-map: only an adaptive render (noise_threshold) has one");
+  if (!cmd.sample_map.empty()) {
+    check_image_output(cmd.sample_map, "--sample-map");
+    refuse_outputs_naming_inputs({{output, "-o"}, {cmd.stats, "--stats"}, {cmd.sample_map, "--sample-map"}},
+                                 scene.files_read());
+  }
   const SampleRange range = partial ? parse_sample_range(cmd.samples, rs.spp) : SampleRange{0, rs.spp};
+  AdaptiveFilm adaptive_film;
   RenderStats stats;
   CudaRunInfo cuda;
   Partial part;
@@ -97,6 +113,11 @@ static int run_render(const RenderCommand& cmd) {
   naming_file_when_out_of_memory(cmd.scene, "allocating its " + film_size + " film", [&] {
     if (cmd.device == "cuda") {
       part.film = render_cuda_film(scene, range, stats, cuda);  // one launch: no progress to draw
+    } else if (adaptive) {
+      ProgressBar bar(static_cast<uint64_t>(rs.width) * rs.height * rs.spp, !cmd.quiet);
+      adaptive_film =
+          render_cpu_adaptive(scene, cmd.threads, stats, [&](uint64_t done, uint64_t) { bar.update(done); });
+      bar.finish();
     } else {
       const uint64_t tiles = ((rs.width + 15) / 16) * static_cast<uint64_t>((rs.height + 15) / 16);
       ProgressBar bar(tiles, !cmd.quiet);
@@ -115,9 +136,18 @@ static int run_render(const RenderCommand& cmd) {
                    stats.nonfinite_samples,
                    stats.overflow_samples};
     outputs.add(output, encode_partial(part));
+  } else if (adaptive) {
+    add_image(outputs, resolve_adaptive(adaptive_film), output);
+    if (!cmd.sample_map.empty()) add_image(outputs, adaptive_sample_map(adaptive_film), cmd.sample_map);
   } else {
     add_image(outputs, resolve_film(part.film, rs.spp), output);
   }
+  uint64_t samples_taken = static_cast<uint64_t>(rs.width) * rs.height * (range.end - range.begin);
+  if (adaptive) {
+    samples_taken = 0;
+    for (const uint32_t n : adaptive_film.samples) samples_taken += n;
+  }
+  const double mean_spp = static_cast<double>(samples_taken) / (static_cast<double>(rs.width) * rs.height);
 
   const uint64_t rays = stats.rays.camera + stats.rays.secondary + stats.rays.shadow;
   const double mrays = render_s > 0.0 ? static_cast<double>(rays) / render_s / 1e6 : 0.0;
@@ -144,6 +174,11 @@ static int run_render(const RenderCommand& cmd) {
                  {"secondary", stats.rays.secondary},
                  {"total", rays}};
     j["mrays_per_second"] = mrays;
+    if (adaptive)
+      j["adaptive"] = {{"noise_threshold", rs.noise_threshold},
+                       {"checkpoints", adaptive_checkpoints(rs.min_spp, rs.spp)},
+                       {"samples_taken", samples_taken},
+                       {"mean_spp", mean_spp}};
     j["nonfinite_samples"] = stats.nonfinite_samples;
     j["overflow_samples"] = stats.overflow_samples;
     j["degenerate_triangles"] = scene.report.degenerate_triangles;
@@ -158,6 +193,9 @@ static int run_render(const RenderCommand& cmd) {
   if (!cmd.quiet && cmd.device == "cuda")
     std::fprintf(stderr, "%s: kernel %.6f s, upload %.3f s, download %.3f s\n", cuda.device.c_str(),
                  cuda.kernel_seconds, cuda.upload_seconds, cuda.download_seconds);
+  if (!cmd.quiet && adaptive)
+    std::fprintf(stderr, "adaptive: noise threshold %g, %.1f spp on average (from %u to %u)\n",
+                 static_cast<double>(rs.noise_threshold), mean_spp, std::min(rs.min_spp, rs.spp), rs.spp);
   if (!cmd.quiet)
     std::fprintf(stderr, "%ux%u, %u spp, %.3f s, %.2fM rays, %.2f Mrays/s, %llu NaN/inf samples\n", rs.width, rs.height,
                  rs.spp, render_s, static_cast<double>(rays) / 1e6, mrays,
@@ -183,6 +221,9 @@ const RegisterCommand kRenderCommand({"", "render", "render a scene to an image"
                                         add_threads_option(app, cmd->threads);
                                         app.add_option("--device", cmd->device, "cpu or cuda");
                                         app.add_option("--stats", cmd->stats, "write timings and ray counts as JSON");
+                                        app.add_option(
+                                            "--sample-map", cmd->sample_map,
+                                            "adaptive sampling: write each pixel's sample count as an image");
                                         app.add_flag("--quiet", cmd->quiet, "no progress bar or summary");
                                         return [cmd] { return run_render(*cmd); };
                                       }});

@@ -100,6 +100,10 @@ int run_submit(const SlurmSubmitCommand& cmd) {
   namespace fs = std::filesystem;
   const Scene scene =
       load_scene(cmd.render.scene, scene_overrides(cmd.render));  // bad input fails here, not on the cluster
+  if (scene.settings.noise_threshold > 0.0f)
+    throw InputError(cmd.render.scene +
+                     ": noise_threshold: an adaptive render decides each pixel's samples from all "
+                     "of them, so tracer slurm cannot split it into sample ranges; render it whole");
   SlurmJob job;
   job.dir = fs::absolute(cmd.dir).lexically_normal().string();
   job.scene = fs::absolute(cmd.render.scene).lexically_normal().string();

@@ -15,7 +15,8 @@ struct RenderCommand {
   std::map<std::string, std::optional<std::string>> options;  // --spp 4: "spp" -> "4", for every option of the table
   int threads = 0;
   std::string device = "cpu";
-  std::string samples;  // --samples A:B: write samples [A, B) to a partial file
+  std::string samples;     // --samples A:B: write samples [A, B) to a partial file
+  std::string sample_map;  // --sample-map FILE: adaptive sampling's per-pixel sample counts
   bool quiet = false;
 };
 

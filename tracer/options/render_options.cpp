@@ -10,6 +10,8 @@
 namespace tracer {
 namespace {
 
+constexpr double kThresholdMax = 1e6;  // the largest threshold option (noise_threshold)
+
 // An option's value from its JSON form (scene file, manifest, partial file): numbers for
 // counts and seeds, true/false for switches, names for enums and effects.
 template <class T>
@@ -20,6 +22,10 @@ T value_from_json(const Json& v, const std::string& path, const std::string& fil
         v.get<uint64_t>() > std::numeric_limits<T>::max())
       fail_at(file, path, "expected " + count_range(0, std::numeric_limits<T>::max()) + ", got " + describe(v));
     return static_cast<T>(v.get<uint64_t>());
+  } else if constexpr (std::is_same_v<T, float>) {  // thresholds: positive and finite
+    if (!v.is_number() || !(v.get<double>() > 0.0) || !(v.get<double>() <= kThresholdMax))
+      fail_at(file, path, "expected a number above 0 and at most 1e6, got " + describe(v));
+    return static_cast<float>(v.get<double>());
   } else if constexpr (std::is_same_v<T, Switch>) {
     if (!v.is_boolean()) fail_at(file, path, "expected true or false, got " + describe(v));
     return v.get<bool>() ? Switch::On : Switch::Off;
@@ -34,7 +40,7 @@ T value_from_json(const Json& v, const std::string& path, const std::string& fil
 
 template <class T>
 nlohmann::ordered_json value_to_json(T value) {
-  if constexpr (std::is_same_v<T, uint32_t> || std::is_same_v<T, uint64_t>)
+  if constexpr (std::is_same_v<T, uint32_t> || std::is_same_v<T, uint64_t> || std::is_same_v<T, float>)
     return value;
   else if constexpr (std::is_same_v<T, Switch>)
     return value == Switch::On;
@@ -51,6 +57,11 @@ T value_from_text(const std::string& text, const std::string& flag) {
     const std::optional<uint64_t> value = parse_count(text, std::numeric_limits<T>::max());
     if (!value) throw InputError(flag + " \"" + text + "\": expected " + count_range(0, std::numeric_limits<T>::max()));
     return static_cast<T>(*value);
+  } else if constexpr (std::is_same_v<T, float>) {
+    const std::optional<double> value = parse_decimal(text, 0.0, kThresholdMax);
+    if (!value || !(*value > 0.0))
+      throw InputError(flag + " \"" + text + "\": expected a decimal number above 0 and at most 1e6");
+    return static_cast<float>(*value);
   } else if constexpr (std::is_same_v<T, Effects>) {
     return parse_effects(text, flag);
   } else {

@@ -31,6 +31,10 @@ struct CpuKernelVariant {
   // Pixels [x0, x1) x [y0, y1), samples [begin, end), into film (row-major, `width` wide).
   void (*render_tile)(const SceneView& view, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1, uint32_t begin,
                       uint32_t end, FilmSum* film, RayCounts& counts);
+  // Samples [begin, end) of each of `count` pixels (indices y * width + x), into the even
+  // and odd half sums at those indices (adaptive sampling).
+  void (*render_pixels_halves)(const SceneView& view, const uint32_t* pixels, size_t count, uint32_t begin,
+                               uint32_t end, FilmSum* even, FilmSum* odd, RayCounts& counts);
   // trace_closest over t in (0, tmax[i]] (hits), or trace_any (occluded), for every ray.
   void (*trace_closest)(const SceneView& view, const Ray* rays, const float* tmax, size_t count, Hit* hits);
   void (*trace_any)(const SceneView& view, const Ray* rays, const float* tmax, size_t count, uint8_t* occluded);

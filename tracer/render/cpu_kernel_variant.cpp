@@ -51,6 +51,20 @@ void render_tile(const tracer::SceneView& view, uint32_t x0, uint32_t y0, uint32
   store(&counts, 0, c);
 }
 
+void render_pixels_halves(const tracer::SceneView& view, const uint32_t* pixels, size_t count, uint32_t begin,
+                          uint32_t end, tracer::FilmSum* even, tracer::FilmSum* odd, tracer::RayCounts& counts) {
+  const k::SceneView v = view_of(view);
+  k::RayCounts c = load<k::RayCounts>(&counts, 0);
+  for (size_t i = 0; i < count; ++i) {
+    const uint32_t p = pixels[i];
+    k::FilmSum e = load<k::FilmSum>(even, p), o = load<k::FilmSum>(odd, p);
+    k::render_pixel_halves(v, p % v.settings.width, p / v.settings.width, begin, end, e, o, c);
+    store(even, p, e);
+    store(odd, p, o);
+  }
+  store(&counts, 0, c);
+}
+
 void trace_closest(const tracer::SceneView& view, const tracer::Ray* rays, const float* tmax, size_t count,
                    tracer::Hit* hits) {
   const k::SceneView v = view_of(view);
@@ -69,10 +83,10 @@ namespace tracer {
 
 const CpuKernelVariant& TRACER_VARIANT() {
   using namespace k;  // the FeatureBit names in TRACER_KERNEL_FEATURES
-  static const CpuKernelVariant variant = {
-      TRACER_VARIANT_ISA, TRACER_VARIANT_SET, TRACER_KERNEL_FEATURES, sizeof(k::SceneView),
-      sizeof(k::Ray),     sizeof(k::Hit),     sizeof(k::FilmSum),     render_tile,
-      trace_closest,      trace_any};
+  static const CpuKernelVariant variant = {TRACER_VARIANT_ISA,   TRACER_VARIANT_SET, TRACER_KERNEL_FEATURES,
+                                           sizeof(k::SceneView), sizeof(k::Ray),     sizeof(k::Hit),
+                                           sizeof(k::FilmSum),   render_tile,        render_pixels_halves,
+                                           trace_closest,        trace_any};
   return variant;
 }
 

@@ -42,6 +42,23 @@ RenderSettings read_settings(const Json* render, const Json& film, const std::st
   if ((rs.sampler == SamplerKind::Grid || rs.sampler == SamplerKind::Stratified) && !square)
     throw InputError(where("spp") + ": the " + enum_name(rs.sampler) +
                      " sampler needs a square spp (1, 4, 9, 16, ...), got " + std::to_string(rs.spp));
+  if (rs.noise_threshold == 0.0f && (overrides.has("min_spp") || from_file.has("min_spp")))
+    throw InputError(where("min_spp") + ": min_spp is adaptive sampling's minimum; it needs noise_threshold");
+  if (rs.noise_threshold > 0.0f) {  // adaptive sampling (docs/path.md)
+    if (rs.sampler == SamplerKind::Center || rs.sampler == SamplerKind::Grid || rs.sampler == SamplerKind::Stratified)
+      throw InputError(where("noise_threshold") +
+                       ": adaptive sampling needs a sampler whose every prefix of samples "
+                       "covers the whole pixel (stochastic or sobol), not " +
+                       enum_name(rs.sampler));
+    if (rs.min_spp < 2)
+      throw InputError(where("min_spp") + ": adaptive sampling estimates the error from two halves: at least 2, got " +
+                       std::to_string(rs.min_spp));
+    if (overrides.has("min_spp") || from_file.has("min_spp")) {
+      if (rs.min_spp > rs.spp)
+        throw InputError(where("min_spp") + ": " + std::to_string(rs.min_spp) + " is above spp " +
+                         std::to_string(rs.spp) + ", the most samples a pixel takes");
+    }
+  }
   return rs;
 }
 

@@ -36,4 +36,13 @@ TRACER_HD FilmSum render_pixel(const SceneView& scene, uint32_t px, uint32_t py,
   return sum;
 }
 
+// Samples [sample_begin, sample_end) of pixel (px, py), even samples added into `even` and
+// odd ones into `odd` (adaptive sampling's half sums). Their sum is render_pixel's unless a
+// half stays inside the film's range where the whole would leave it (sums near 2^62 units).
+TRACER_HD void render_pixel_halves(const SceneView& scene, uint32_t px, uint32_t py, uint32_t sample_begin,
+                                   uint32_t sample_end, FilmSum& even, FilmSum& odd, RayCounts& counts) {
+  for (uint32_t s = sample_begin; s < sample_end; ++s)
+    film_add(s % 2u == 0u ? even : odd, render_sample(scene, px, py, s, counts));
+}
+
 }  // namespace tracer

@@ -46,7 +46,12 @@ enum Effects : uint32_t {
   X(grid_resolution, uint32_t, 0u, render, UnlessDefault,                                                           \
     "grid: cells along the longest axis (default 0: about 3 per primitive)")                                        \
   X(effects, Effects, kEffectAll, render, UnlessDefault,                                                            \
-    "Whitted effects to trace: all (default), none, or a list of shadows,reflections,refractions")
+    "Whitted effects to trace: all (default), none, or a list of shadows,reflections,refractions")                  \
+  X(noise_threshold, float, 0.0f, render, UnlessDefault,                                                            \
+    "adaptive sampling: a pixel stops once its estimated relative error is below this (default: off, every pixel "  \
+    "takes spp)")                                                                                                   \
+  X(min_spp, uint32_t, 16u, render, UnlessDefault,                                                                  \
+    "adaptive sampling: the samples every pixel takes before it may stop (default 16, or spp if less)")
 
 struct RenderSettings {
 #define TRACER_SETTING_FIELD(name, Type, default_value, ...) Type name = default_value;

@@ -1,0 +1,97 @@
+// Adaptive sampling's options through the CLI and the scene file: every bad value or
+// combination exits 2 with a message naming the key or flag, and writes nothing; a good
+// one writes the image and the sample map.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "test_util.h"
+
+namespace tracer {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string scene_text(const std::string& render) {
+  return R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 3], "to": [0, 0, 0], "vfov": 40},
+    "film": {"width": 8, "height": 6}, "render": {"integrator": "path", "spp": 64, )" +
+         render + R"(}, "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
+    "background": {"type": "constant", "radiance": [1, 1, 1]},
+    "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]})";
+}
+
+class AdaptiveOptions : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = test::temp_dir("adaptive-options"); }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string scene(const std::string& render) {
+    std::ofstream(dir_ / "s.json", std::ios::binary) << scene_text(render);
+    return (dir_ / "s.json").string();
+  }
+  std::string out() const { return " -o " + (dir_ / "out.exr").string(); }
+
+  void expect_refused(const std::string& args, const std::string& expected) {
+    std::string output;
+    EXPECT_EQ(test::run_tracer(args, &output), 2) << args << "\n" << output;
+    EXPECT_NE(output.find(expected), std::string::npos) << args << "\n" << output;
+    EXPECT_FALSE(fs::exists(dir_ / "out.exr")) << args;
+    EXPECT_FALSE(fs::exists(dir_ / "out.partial")) << args;
+    EXPECT_FALSE(fs::exists(dir_ / "map.exr")) << args;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(AdaptiveOptions, BadThresholdsAreRefused) {
+  const std::string s = scene(R"("sampler": "sobol")");
+  for (const char* bad : {"-0.1", "0", "0.0", "nan", "inf", "1e999", "''", "' 0.1'", "0x1p-3", "1e-3", "2000000"})
+    expect_refused("render " + s + " --noise-threshold " + bad + out(), "--noise-threshold");
+  for (const char* bad : {"0", "-1", "\"0.1\"", "true", "1e7"})
+    expect_refused("render " + scene(std::string(R"("noise_threshold": )") + bad) + out(), "render.noise_threshold");
+}
+
+TEST_F(AdaptiveOptions, BadMinimumsAreRefused) {
+  expect_refused("render " + scene(R"("noise_threshold": 0.1, "min_spp": 128)") + out(), "render.min_spp");
+  expect_refused("render " + scene(R"("noise_threshold": 0.1)") + " --min-spp 65" + out(), "--min-spp");
+  expect_refused("render " + scene(R"("noise_threshold": 0.1)") + " --min-spp 1" + out(), "at least 2");
+  expect_refused("render " + scene(R"("min_spp": 8)") + out(), "needs noise_threshold");
+}
+
+TEST_F(AdaptiveOptions, CombinationsThatCannotBeAdaptiveAreRefused) {
+  expect_refused("render " + scene(R"("noise_threshold": 0.1, "sampler": "stratified")") + out(),
+                 "stochastic or sobol");
+  expect_refused("render " + scene(R"("noise_threshold": 0.1, "sampler": "grid")") + out(), "stochastic or sobol");
+  expect_refused(
+      "render " + scene(R"("noise_threshold": 0.1)") + " --samples 0:32 -o " + (dir_ / "out.partial").string(),
+      "cannot be split into sample ranges");
+  expect_refused("render " + scene("\"seed\": 1") + " --sample-map " + (dir_ / "map.exr").string() + out(),
+                 "only an adaptive render");
+  expect_refused(
+      "slurm submit " + scene(R"("noise_threshold": 0.1)") + " --parts 2 --dir " + (dir_ / "job").string() + out(),
+      "tracer slurm cannot split it");
+  EXPECT_FALSE(fs::exists(dir_ / "job"));
+  const std::string s = scene(R"("noise_threshold": 0.1)");
+  const std::string before = test::read_file(s);
+  expect_refused("render " + s + " --sample-map " + s + out(), "--sample-map");
+  EXPECT_EQ(test::read_file(s), before);
+}
+
+TEST_F(AdaptiveOptions, AnAdaptiveRenderWritesItsImageAndSampleMap) {
+  std::string output;
+  ASSERT_EQ(test::run_tracer("render " + scene(R"("noise_threshold": 0.05, "min_spp": 4)") + " --sample-map " +
+                                 (dir_ / "map.exr").string() + " --stats " + (dir_ / "stats.json").string() + out(),
+                             &output),
+            0)
+      << output;
+  EXPECT_TRUE(fs::exists(dir_ / "out.exr"));
+  EXPECT_TRUE(fs::exists(dir_ / "map.exr"));
+  const std::string stats = test::read_file(dir_ / "stats.json");
+  EXPECT_NE(stats.find("\"checkpoints\": [\n      4,\n      8,\n      16,\n      32,\n      64\n    ]"),
+            std::string::npos)
+      << stats;
+  EXPECT_NE(output.find("spp on average"), std::string::npos) << output;
+}
+
+}  // namespace
+}  // namespace tracer

@@ -1,0 +1,36 @@
+// Adaptive sampling's per-pixel decision (docs/path.md, "Adaptive sampling"). A pixel's
+// samples are kept in two exact fixed-point sums, of its even and of its odd samples
+// (film.h). Their means differ by about twice the standard error of the whole mean (for
+// halves of n/2 samples, Var(even - odd) = 4 sigma^2 / n), so half their difference,
+// averaged over the channels and divided by the mean's channel average, estimates the
+// pixel's relative error. Only integer sums enter it, converted and divided in IEEE double
+// (correctly rounded on every CPU and on CUDA), so the estimate, the pixels that stop and
+// the image do not depend on threads, tiles, structures, instruction sets or the device.
+#pragma once
+#include "kernel/base/film.h"
+
+namespace tracer {
+
+// The relative error estimate of a pixel holding `samples` samples (at least 2): the even
+// ones in `even`, the odd ones in `odd`. 0 for a pixel whose samples are all zero; a
+// pixel whose channels average 0 or less but differ between the halves never converges.
+TRACER_HD double pixel_relative_error(const FilmSum& even, const FilmSum& odd, uint32_t samples) {
+  const double n_even = static_cast<double>((samples + 1u) / 2u), n_odd = static_cast<double>(samples / 2u);
+  double difference = 0.0, level = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const double e = static_cast<double>(even.rgb[c]), o = static_cast<double>(odd.rgb[c]);
+    const double d = e / n_even - o / n_odd;
+    difference += d < 0.0 ? -d : d;
+    level += (e + o) / static_cast<double>(samples);
+  }
+  if (difference == 0.0) return 0.0;
+  if (!(level > 0.0)) return kInfinity;
+  return 0.5 * difference / level;
+}
+
+// Whether a pixel may stop: its estimate is below the threshold.
+TRACER_HD bool pixel_converged(const FilmSum& even, const FilmSum& odd, uint32_t samples, float threshold) {
+  return pixel_relative_error(even, odd, samples) < static_cast<double>(threshold);
+}
+
+}  // namespace tracer
