@@ -113,5 +113,33 @@ TEST(AdaptiveSampling, APixelThatNeverStopsEqualsTheUniformRender) {
   }
 }
 
+// Stopping a pixel early must not move its expectation: over every pixel and channel of the
+// Cornell box, the adaptive render's difference from the uniform render (the same seed)
+// sums to within five standard errors of zero. The pixels are independent (each draws its
+// own numbers), so under that hypothesis the sum of the differences has the variance the
+// sum of their squares estimates.
+TEST(AdaptiveSampling, AdaptiveRenderHasTheUniformRendersExpectation) {
+  RenderOverrides ov;
+  ov.width = 96;
+  ov.height = 72;
+  ov.spp = 64;
+  const Scene uniform_scene = load_scene(test::source_path("scenes/cornell-box-path.json"), ov);
+  RenderStats stats;
+  const Image uniform = render_cpu(uniform_scene, 0, stats);
+  ov.noise_threshold = 0.1f;
+  ov.min_spp = 8;
+  const AdaptiveFilm film =
+      render_cpu_adaptive(load_scene(test::source_path("scenes/cornell-box-path.json"), ov), 0, stats);
+  const Image adaptive = resolve_adaptive(film);
+  double sum = 0, squares = 0, samples = 0;
+  for (size_t i = 0; i < adaptive.rgb.size(); ++i) {
+    const double d = double(adaptive.rgb[i]) - uniform.rgb[i];
+    sum += d, squares += d * d;
+  }
+  for (const uint32_t n : film.samples) samples += n;
+  EXPECT_LT(samples, 0.75 * 64.0 * film.samples.size()) << "the threshold should stop many pixels early";
+  EXPECT_LT(std::abs(sum), 5.0 * std::sqrt(squares)) << "z = " << sum / std::sqrt(squares);
+}
+
 }  // namespace
 }  // namespace tracer

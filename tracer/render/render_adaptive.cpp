@@ -41,10 +41,10 @@ std::vector<uint32_t> adaptive_checkpoints(uint32_t min_spp, uint32_t spp) {
   return points;
 }
 
-AdaptiveFilm render_cpu_adaptive(const Scene& scene, int threads, RenderStats& stats,
-                                 const ProgressCallback& progress) {
+AdaptiveFilm render_cpu_adaptive(const Scene& scene, int threads, RenderStats& stats, const ProgressCallback& progress,
+                                 const CpuKernelVariant* kernel) {
   const SceneView view = scene.view();
-  const CpuKernelVariant& variant = cpu_kernel_for(view.features);
+  const CpuKernelVariant& variant = kernel ? *kernel : cpu_kernel_for(view.features);
   const RenderSettings& rs = view.settings;
   const size_t n = static_cast<size_t>(rs.width) * rs.height;
   AdaptiveFilm film;

@@ -24,9 +24,10 @@ std::vector<uint32_t> adaptive_checkpoints(uint32_t min_spp, uint32_t spp);
 // Renders every pixel to its first checkpoint, then continues only the pixels whose
 // relative error estimate is not yet below settings.noise_threshold, to spp at most.
 // `progress` gets (pixel-samples settled, width x height x spp): a stopped pixel's
-// remaining samples count as settled.
+// remaining samples count as settled. `kernel` (optional) overrides the variant chosen for
+// the scene's features.
 AdaptiveFilm render_cpu_adaptive(const Scene& scene, int threads, RenderStats& stats,
-                                 const ProgressCallback& progress = {});
+                                 const ProgressCallback& progress = {}, const CpuKernelVariant* kernel = nullptr);
 
 // Each pixel's mean over its own samples, rounded once.
 Image resolve_adaptive(const AdaptiveFilm& film);
