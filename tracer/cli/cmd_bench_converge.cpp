@@ -1,9 +1,11 @@
 // `tracer bench converge SCENE --spp 1,4,16,...`: error against time as the sample count
 // grows, for the scene's settings, for NEE+MIS and the plain estimator side by side, or for
 // several samplers side by side; a table, a CSV file and a log-log plot of RMSE against seconds.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <sstream>
 
 #include "bench/bench_common.h"
@@ -19,8 +21,8 @@
 namespace tracer {
 
 struct BenchConvergeCommand {
-  std::string scene, ref, csv, plot, spp = "1,4,16,64,256", nee = "scene", samplers;
-  uint32_t ref_spp = 0, width = 0, height = 0;
+  std::string scene, ref, csv, plot, spp = "1,4,16,64,256", nee = "scene", samplers, thresholds;
+  uint32_t ref_spp = 0, width = 0, height = 0, min_spp = 0, adaptive_spp = 0;
   int threads = 0;
 };
 namespace {
@@ -42,6 +44,10 @@ struct Point {
 double seconds_to_reach(const std::vector<Point>& series, double ImageError::*metric, double power, double target,
                         bool& extrapolated) {
   extrapolated = false;
+  if (series.front().error.*metric <= target) {  // already there at the first point: scale back from it
+    extrapolated = true;
+    return series.front().seconds * std::pow(series.front().error.*metric / target, 2.0 / power);
+  }
   for (size_t i = 1; i < series.size(); ++i) {
     const double a = series[i - 1].error.*metric, b = series[i].error.*metric;
     if (b <= target && a >= target) {
@@ -54,6 +60,15 @@ double seconds_to_reach(const std::vector<Point>& series, double ImageError::*me
   const Point& last = series.back();
   return last.seconds * std::pow(last.error.*metric / target, 2.0 / power);
 }
+
+// The error metrics compared between series; `power` 1 for an RMSE, 2 for a mean squared error.
+const struct {
+  const char* name;
+  double ImageError::*metric;
+  double power;
+} kMetrics[] = {{"RMSE", &ImageError::rmse, 1},
+                {"display RMSE", &ImageError::display_rmse, 1},
+                {"relMSE", &ImageError::rel_mse, 2}};
 
 // Series i against series 0 (the first sampler listed): RMSE at each equal spp as a ratio,
 // and the time series i needs to reach series 0's RMSE at its largest spp.
@@ -86,6 +101,17 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
   if (!samplers.empty() && cmd.nee == "both")
     throw InputError("--samplers: compares samplers with one estimator; give --nee scene, on or off with it");
   if (samplers.size() == 1) throw InputError("--samplers: give two or more samplers to compare");
+  std::vector<float> thresholds;
+  std::stringstream threshold_texts(cmd.thresholds);
+  for (std::string text; std::getline(threshold_texts, text, ',');) {
+    RenderOptions o;
+    parse_option_text("noise_threshold", text, "--thresholds: ", o);
+    thresholds.push_back(*o.noise_threshold);
+  }
+  if (!thresholds.empty() && (cmd.nee == "both" || !samplers.empty()))
+    throw InputError(
+        "--thresholds: compares adaptive with uniform sampling alone; give it without --samplers or "
+        "--nee both");
   const std::string stem = std::filesystem::path(cmd.scene).stem().string();
   const std::string csv = cmd.csv.empty() ? stem + "-converge.csv" : cmd.csv;
   const std::string plot = cmd.plot.empty() ? stem + "-converge.png" : cmd.plot;
@@ -150,22 +176,49 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
     }
     lines.push_back(line);
   }
+  if (!thresholds.empty()) {  // adaptive: one point per threshold
+    RenderOverrides ov = base;
+    ov.spp = cmd.adaptive_spp ? cmd.adaptive_spp : 4 * max_spp;
+    if (cmd.min_spp) ov.min_spp = cmd.min_spp;
+    results.emplace_back();
+    PlotSeries line{"adaptive", {}, {}};
+    std::sort(thresholds.begin(), thresholds.end(), std::greater<float>());  // cheapest first
+    for (float threshold : thresholds) {
+      ov.noise_threshold = threshold;
+      const Scene scene = load_scene(cmd.scene, ov);
+      const TimedRender r = timed_render(scene, cmd.threads);
+      const ImageError e = image_error(r.image, ref);
+      results.back().push_back({*ov.spp, r.seconds, e});
+      line.x.push_back(r.seconds);
+      line.y.push_back(e.rmse);
+      std::printf("%-10s %8s %10.3f %12.6g %13.6g %12.6g  (threshold %g)\n", "adaptive", "", r.seconds, e.rmse,
+                  e.display_rmse, e.rel_mse, static_cast<double>(threshold));
+      out << "adaptive " << threshold << "," << *ov.spp << "," << r.seconds << "," << e.rmse << "," << e.display_rmse
+          << "," << e.rel_mse << "\n";
+    }
+    lines.push_back(line);
+  }
   OutputBatch outputs;
   outputs.add(csv, out.str());
   add_loglog_plot(outputs, plot, {"RMSE against render time: " + stem, "seconds", "RMSE"}, lines);
   outputs.commit();
   if (!samplers.empty()) {
     for (size_t i = 1; i < results.size(); ++i) compare_with_baseline(series_setups, results, i);
+  } else if (!thresholds.empty()) {
+    const Point& uniform = results[0].back();
+    for (const auto& m : kMetrics) {
+      bool extrapolated = false;
+      const double target = uniform.error.*m.metric;
+      const double t = seconds_to_reach(results[1], m.metric, m.power, target, extrapolated);
+      std::printf(
+          "adaptive (at most %u spp) reaches the uniform render's %s at %u spp (%.6g, %.3f s) in %.3f s%s: "
+          "time to equal %s %.3fx\n",
+          results[1].back().spp, m.name, uniform.spp, target, uniform.seconds, t, extrapolated ? " (extrapolated)" : "",
+          m.name, t / uniform.seconds);
+    }
   } else if (results.size() == 2) {
     const Point& plain = results[1].back();
-    const struct {
-      const char* name;
-      double ImageError::*metric;
-      double power;
-    } metrics[] = {{"RMSE", &ImageError::rmse, 1},
-                   {"display RMSE", &ImageError::display_rmse, 1},
-                   {"relMSE", &ImageError::rel_mse, 2}};
-    for (const auto& m : metrics) {
+    for (const auto& m : kMetrics) {
       bool extrapolated = false;
       const double target = plain.error.*m.metric;
       const double t = seconds_to_reach(results[0], m.metric, m.power, target, extrapolated);
@@ -189,6 +242,14 @@ const RegisterCommand kBenchConvergeCommand(
        app.add_option("--samplers", cmd->samplers,
                       "comma-separated samplers side by side (e.g. stochastic,stratified,sobol); ratios against the "
                       "first");
+       app.add_option("--thresholds", cmd->thresholds,
+                      "comma-separated noise thresholds: an adaptive series (at most --adaptive-spp) against "
+                      "the uniform one");
+       app.add_option("--adaptive-spp", cmd->adaptive_spp,
+                      "the adaptive series' most spp (default 4 x the largest --spp)")
+           ->check(count_in(2, UINT32_MAX));
+       app.add_option("--min-spp", cmd->min_spp, "the adaptive series' min_spp (default the scene's)")
+           ->check(count_in(2, UINT32_MAX));
        app.add_option("--ref", cmd->ref, "reference image (EXR); default: render one at --ref-spp");
        app.add_option("--ref-spp", cmd->ref_spp, "reference samples per pixel (default 8 x the largest --spp)")
            ->check(count_in(1, UINT32_MAX));

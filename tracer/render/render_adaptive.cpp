@@ -53,6 +53,7 @@ AdaptiveFilm render_cpu_adaptive(const Scene& scene, int threads, RenderStats& s
   film.even.assign(n, FilmSum{{0, 0, 0}, 0u, 0u});
   film.odd.assign(n, FilmSum{{0, 0, 0}, 0u, 0u});
   film.samples.assign(n, 0u);
+  std::vector<uint8_t> unconverged(n);  // at the last checkpoint, per pixel
   std::vector<uint32_t> running(n);
   for (size_t i = 0; i < n; ++i) running[i] = static_cast<uint32_t>(i);
 
@@ -76,10 +77,16 @@ AdaptiveFilm render_cpu_adaptive(const Scene& scene, int threads, RenderStats& s
       if (progress && omp_get_thread_num() == 0) progress(done, total);
     }
     // The decision, in pixel order on one thread: the kept list is the same for any thread count.
-    std::vector<uint32_t> kept;
+    std::fill(unconverged.begin(), unconverged.end(), 0);
     for (const uint32_t p : running) {
       film.samples[p] = checkpoint;
-      if (checkpoint < rs.spp && !pixel_converged(film.even[p], film.odd[p], checkpoint, rs.noise_threshold))
+      unconverged[p] =
+          checkpoint < rs.spp && !pixel_converged(film.even[p], film.odd[p], checkpoint, rs.noise_threshold);
+    }
+    std::vector<uint32_t> kept;
+    for (const uint32_t p : running) {
+      if (checkpoint < rs.spp &&
+          neighbourhood_unconverged(unconverged.data(), rs.width, rs.height, p % rs.width, p / rs.width))
         kept.push_back(p);
       else
         settled.fetch_add(rs.spp - checkpoint);

@@ -28,7 +28,8 @@ using ProgressCallback = std::function<void(uint64_t done, uint64_t total)>;
 FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, RenderStats& stats,
                            const ProgressCallback& progress = {}, const CpuKernelVariant* kernel = nullptr);
 
-// All samples, resolved to an image.
+// All samples, resolved to an image; adaptively (render_adaptive.h) when the scene sets
+// noise_threshold.
 Image render_cpu(const Scene& scene, int threads, RenderStats& stats, const ProgressCallback& progress = {});
 
 }  // namespace tracer

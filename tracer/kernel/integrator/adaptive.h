@@ -33,4 +33,18 @@ TRACER_HD bool pixel_converged(const FilmSum& even, const FilmSum& odd, uint32_t
   return pixel_relative_error(even, odd, samples) < static_cast<double>(threshold);
 }
 
+// Whether pixel (x, y) keeps sampling: it or one of its eight neighbours is not yet
+// converged (`unconverged`: one byte per pixel, row-major, `width` x `height`). Spreading the
+// decision to neighbours, as Cycles does, keeps a pixel whose first samples all missed a rare
+// contribution (a caustic, a small light) running while the pixels around it find it.
+TRACER_HD bool neighbourhood_unconverged(const uint8_t* unconverged, uint32_t width, uint32_t height, uint32_t x,
+                                         uint32_t y) {
+  const uint32_t x0 = x > 0u ? x - 1u : 0u, x1 = x + 1u < width ? x + 1u : x;
+  const uint32_t y0 = y > 0u ? y - 1u : 0u, y1 = y + 1u < height ? y + 1u : y;
+  for (uint32_t j = y0; j <= y1; ++j)
+    for (uint32_t i = x0; i <= x1; ++i)
+      if (unconverged[static_cast<size_t>(j) * width + i]) return true;
+  return false;
+}
+
 }  // namespace tracer
