@@ -78,13 +78,18 @@ TEST(AdaptiveSampling, CheckpointsDoubleFromTheMinimumToTheMaximum) {
   EXPECT_EQ(adaptive_checkpoints(16, 8), (std::vector<uint32_t>{8}));
 }
 
+// Every sample of the white furnace is 1: every pixel stops at min_spp, by the per-pixel
+// threshold and by the image's target error alike.
 TEST(AdaptiveSampling, ZeroVarianceFurnaceStopsEveryPixelAtMinSpp) {
-  RenderOverrides ov;
-  ov.noise_threshold = 0.001f;
-  ov.min_spp = 8;
-  const AdaptiveFilm film = render_adaptive(white_furnace(), ov);
-  for (const uint32_t n : film.samples) ASSERT_EQ(n, 8u);
-  for (float v : resolve_adaptive(film).rgb) ASSERT_NEAR(v, 1.0f, 1e-6);
+  for (const bool per_pixel : {true, false}) {
+    RenderOverrides ov;
+    (per_pixel ? ov.noise_threshold : ov.target_error) = 0.001f;
+    ov.min_spp = 8;
+    const AdaptiveFilm film = render_adaptive(white_furnace(), ov);
+    for (const uint32_t n : film.samples) ASSERT_EQ(n, 8u) << per_pixel;
+    for (float v : resolve_adaptive(film).rgb) ASSERT_NEAR(v, 1.0f, 1e-6);
+    EXPECT_EQ(film.image_error, 0.0);
+  }
 }
 
 TEST(AdaptiveSampling, HalfNoisySceneSpendsItsSamplesOnTheNoisyHalf) {
@@ -120,6 +125,34 @@ TEST(AdaptiveSampling, APixelThatNeverStopsEqualsTheUniformRender) {
     }
     EXPECT_GT(full, film.samples.size() / 4) << sampler;  // most of the lit half
   }
+}
+
+// target_error renders every pixel to the same checkpoint, so the image is the uniform
+// render at that spp bit for bit; the estimate there is below the target and at the
+// checkpoint before it was not.
+TEST(AdaptiveSampling, TargetErrorStopsAtTheFirstCheckpointBelowIt) {
+  RenderOverrides ov;
+  ov.width = 64;
+  ov.height = 48;
+  ov.spp = 1024;
+  ov.target_error = 0.05f;
+  ov.min_spp = 4;
+  RenderStats stats;
+  const std::string path = test::source_path("scenes/cornell-box-path.json");
+  const AdaptiveFilm film = render_cpu_adaptive(load_scene(path, ov), 0, stats);
+  const uint32_t reached = film.samples[0];
+  for (const uint32_t n : film.samples) ASSERT_EQ(n, reached);
+  EXPECT_GT(reached, 4u);
+  EXPECT_LT(reached, 1024u);
+  EXPECT_LT(film.image_error, 0.05);
+  ov.target_error.reset();
+  ov.min_spp.reset();
+  ov.spp = reached;
+  EXPECT_EQ(resolve_adaptive(film).rgb, render_cpu(load_scene(path, ov), 0, stats).rgb);
+  ov.target_error = 0.05f;
+  ov.min_spp = reached / 2;
+  ov.spp = reached / 2;  // the checkpoint before: not yet below the target
+  EXPECT_GE(render_cpu_adaptive(load_scene(path, ov), 0, stats).image_error, 0.05);
 }
 
 // Stopping a pixel on an estimate from its own samples biases it (optional stopping): a pixel

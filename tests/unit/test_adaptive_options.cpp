@@ -47,6 +47,8 @@ TEST_F(AdaptiveOptions, BadThresholdsAreRefused) {
   const std::string s = scene(R"("sampler": "sobol")");
   for (const char* bad : {"-0.1", "0", "0.0", "nan", "inf", "1e999", "''", "' 0.1'", "0x1p-3", "1e-3", "2000000"})
     expect_refused("render " + s + " --noise-threshold " + bad + out(), "--noise-threshold");
+  for (const char* bad : {"-0.1", "0", "nan", "1e999", "''"})
+    expect_refused("render " + s + " --target-error " + bad + out(), "--target-error");
   for (const char* bad : {"0", "-1", "\"0.1\"", "true", "1e7"})
     expect_refused("render " + scene(std::string(R"("noise_threshold": )") + bad) + out(), "render.noise_threshold");
 }

@@ -41,7 +41,8 @@ nlohmann::json changed_options() {
           {"grid_resolution", 12},
           {"effects", "shadows,reflections"},
           {"noise_threshold", 0.25},  // exact in float, so the JSON round trip is exact
-          {"min_spp", 2}};
+          {"min_spp", 2},
+          {"target_error", 0.5}};
 }
 
 TEST(RenderOptions, EveryOptionIsCoveredByThisTest) {

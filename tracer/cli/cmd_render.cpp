@@ -89,15 +89,16 @@ static int run_render(const RenderCommand& cmd) {
   const double build_s = scene.report.build_seconds;
 
   const RenderSettings& rs = scene.settings;
-  const bool adaptive = rs.noise_threshold > 0.0f;
+  const bool adaptive = adaptive_render(rs);
   if (adaptive && partial)
     throw InputError(cmd.scene +
-                     ": --samples: an adaptive render (noise_threshold) decides each pixel's samples "
+                     ": --samples: an adaptive render (noise_threshold, target_error) decides its samples "
                      "from all of them, so it cannot be split into sample ranges; render it whole");
   if (adaptive && cmd.device == "cuda")
-    throw InputError(cmd.scene + ": --device cuda: adaptive sampling (noise_threshold) runs on the CPU only so far");
+    throw InputError(cmd.scene +
+                     ": --device cuda: adaptive sampling (noise_threshold, target_error) runs on the CPU only so far");
   if (!cmd.sample_map.empty() && !adaptive)
-    throw InputError(cmd.scene + ": --sample-map: only an adaptive render (noise_threshold) has one");
+    throw InputError(cmd.scene + ": --sample-map: only an adaptive render (noise_threshold, target_error) has one");
   if (!cmd.sample_map.empty()) {
     check_image_output(cmd.sample_map, "--sample-map");
     refuse_outputs_naming_inputs({{output, "-o"}, {cmd.stats, "--stats"}, {cmd.sample_map, "--sample-map"}},
@@ -175,10 +176,10 @@ static int run_render(const RenderCommand& cmd) {
                  {"total", rays}};
     j["mrays_per_second"] = mrays;
     if (adaptive)
-      j["adaptive"] = {{"noise_threshold", rs.noise_threshold},
-                       {"checkpoints", adaptive_checkpoints(rs.min_spp, rs.spp)},
-                       {"samples_taken", samples_taken},
-                       {"mean_spp", mean_spp}};
+      j["adaptive"] = {
+          {"noise_threshold", rs.noise_threshold},    {"target_error", rs.target_error},
+          {"image_error", adaptive_film.image_error}, {"checkpoints", adaptive_checkpoints(rs.min_spp, rs.spp)},
+          {"samples_taken", samples_taken},           {"mean_spp", mean_spp}};
     j["nonfinite_samples"] = stats.nonfinite_samples;
     j["overflow_samples"] = stats.overflow_samples;
     j["degenerate_triangles"] = scene.report.degenerate_triangles;
@@ -193,9 +194,14 @@ static int run_render(const RenderCommand& cmd) {
   if (!cmd.quiet && cmd.device == "cuda")
     std::fprintf(stderr, "%s: kernel %.6f s, upload %.3f s, download %.3f s\n", cuda.device.c_str(),
                  cuda.kernel_seconds, cuda.upload_seconds, cuda.download_seconds);
-  if (!cmd.quiet && adaptive)
+  if (!cmd.quiet && rs.noise_threshold > 0.0f)
     std::fprintf(stderr, "adaptive: noise threshold %g, %.1f spp on average (from %u to %u)\n",
                  static_cast<double>(rs.noise_threshold), mean_spp, std::min(rs.min_spp, rs.spp), rs.spp);
+  if (!cmd.quiet && rs.target_error > 0.0f)
+    std::fprintf(
+        stderr, "target error %g: estimated relative RMS error %.4g at %.0f spp%s\n",
+        static_cast<double>(rs.target_error), adaptive_film.image_error, mean_spp,
+        adaptive_film.image_error < static_cast<double>(rs.target_error) ? "" : " (the most spp: not reached)");
   if (!cmd.quiet)
     std::fprintf(stderr, "%ux%u, %u spp, %.3f s, %.2fM rays, %.2f Mrays/s, %llu NaN/inf samples\n", rs.width, rs.height,
                  rs.spp, render_s, static_cast<double>(rays) / 1e6, mrays,

@@ -16,6 +16,7 @@
 #include "image/image_io.h"
 #include "io/input_error.h"
 #include "io/output_paths.h"
+#include "render/render_adaptive.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
@@ -100,9 +101,9 @@ int run_submit(const SlurmSubmitCommand& cmd) {
   namespace fs = std::filesystem;
   const Scene scene =
       load_scene(cmd.render.scene, scene_overrides(cmd.render));  // bad input fails here, not on the cluster
-  if (scene.settings.noise_threshold > 0.0f)
+  if (adaptive_render(scene.settings))
     throw InputError(cmd.render.scene +
-                     ": noise_threshold: an adaptive render decides each pixel's samples from all "
+                     ": noise_threshold, target_error: an adaptive render decides each pixel's samples from all "
                      "of them, so tracer slurm cannot split it into sample ranges; render it whole");
   SlurmJob job;
   job.dir = fs::absolute(cmd.dir).lexically_normal().string();

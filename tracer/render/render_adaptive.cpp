@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 
 #include "kernel/integrator/adaptive.h"
 #include "render/cpu_kernel.h"
@@ -78,11 +79,13 @@ AdaptiveFilm render_cpu_adaptive(const Scene& scene, int threads, RenderStats& s
     }
     // The decision, in pixel order on one thread: the kept list is the same for any thread count.
     std::fill(unconverged.begin(), unconverged.end(), 0);
-    for (const uint32_t p : running) {
-      film.samples[p] = checkpoint;
+    for (const uint32_t p : running) film.samples[p] = checkpoint;
+    if (rs.target_error > 0.0f) film.image_error = image_relative_error(film);
+    const bool image_done = rs.target_error > 0.0f && film.image_error < static_cast<double>(rs.target_error);
+    for (const uint32_t p : running)
       unconverged[p] =
-          checkpoint < rs.spp && !pixel_converged(film.even[p], film.odd[p], checkpoint, rs.noise_threshold);
-    }
+          checkpoint < rs.spp && !image_done &&
+          (rs.noise_threshold == 0.0f || !pixel_converged(film.even[p], film.odd[p], checkpoint, rs.noise_threshold));
     std::vector<uint32_t> kept;
     for (const uint32_t p : running) {
       if (checkpoint < rs.spp &&
@@ -104,6 +107,17 @@ AdaptiveFilm render_cpu_adaptive(const Scene& scene, int threads, RenderStats& s
   }
   stats.cpu_kernel = cpu_kernel_name(variant);
   return film;
+}
+
+double image_relative_error(const AdaptiveFilm& film) {
+  double errors = 0.0, levels = 0.0;
+  for (size_t i = 0; i < film.samples.size(); ++i) {
+    const PixelErrorTerms t = pixel_error_terms(film.even[i], film.odd[i], film.samples[i]);
+    errors += t.standard_error * t.standard_error;
+    levels += t.level * t.level;
+  }
+  if (errors == 0.0) return 0.0;
+  return levels > 0.0 ? std::sqrt(errors / levels) : static_cast<double>(kInfinity);
 }
 
 Image resolve_adaptive(const AdaptiveFilm& film) {

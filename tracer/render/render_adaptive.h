@@ -16,13 +16,23 @@ struct AdaptiveFilm {
   uint32_t width = 0, height = 0;
   std::vector<FilmSum> even, odd;  // per pixel, row-major: the sums of its even and odd samples
   std::vector<uint32_t> samples;   // per pixel: how many it took
+  double image_error = 0;          // target_error: the image's estimate at the last checkpoint
 };
+
+// Whether the settings ask for adaptive sampling: per pixel (noise_threshold) or for the
+// whole image (target_error).
+inline bool adaptive_render(const RenderSettings& rs) { return rs.noise_threshold > 0.0f || rs.target_error > 0.0f; }
+
+// The whole image's estimated relative RMS error from its pixels' half sums: the RMS of the
+// pixels' standard errors over the RMS of their means (kernel/integrator/adaptive.h).
+double image_relative_error(const AdaptiveFilm& film);
 
 // The checkpoints: min(min_spp, spp), then doubling, the last one spp.
 std::vector<uint32_t> adaptive_checkpoints(uint32_t min_spp, uint32_t spp);
 
 // Renders every pixel to its first checkpoint, then continues only the pixels whose
-// relative error estimate is not yet below settings.noise_threshold, to spp at most.
+// relative error estimate is not yet below settings.noise_threshold (or, with target_error,
+// every pixel until the image's estimate is below it), to spp at most.
 // `progress` gets (pixel-samples settled, width x height x spp): a stopped pixel's
 // remaining samples count as settled. `kernel` (optional) overrides the variant chosen for
 // the scene's features.

@@ -54,7 +54,7 @@ FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, R
 }
 
 Image render_cpu(const Scene& scene, int threads, RenderStats& stats, const ProgressCallback& progress) {
-  if (scene.settings.noise_threshold > 0.0f)
+  if (adaptive_render(scene.settings))
     return resolve_adaptive(render_cpu_adaptive(scene, threads, stats, progress));
   const uint32_t spp = scene.settings.spp;
   return resolve_film(render_cpu_film(scene, {0, spp}, threads, stats, progress), spp);

@@ -29,7 +29,7 @@ FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, R
                            const ProgressCallback& progress = {}, const CpuKernelVariant* kernel = nullptr);
 
 // All samples, resolved to an image; adaptively (render_adaptive.h) when the scene sets
-// noise_threshold.
+// noise_threshold or target_error.
 Image render_cpu(const Scene& scene, int threads, RenderStats& stats, const ProgressCallback& progress = {});
 
 }  // namespace tracer

@@ -42,9 +42,13 @@ RenderSettings read_settings(const Json* render, const Json& film, const std::st
   if ((rs.sampler == SamplerKind::Grid || rs.sampler == SamplerKind::Stratified) && !square)
     throw InputError(where("spp") + ": the " + enum_name(rs.sampler) +
                      " sampler needs a square spp (1, 4, 9, 16, ...), got " + std::to_string(rs.spp));
-  if (rs.noise_threshold == 0.0f && (overrides.has("min_spp") || from_file.has("min_spp")))
-    throw InputError(where("min_spp") + ": min_spp is adaptive sampling's minimum; it needs noise_threshold");
-  if (rs.noise_threshold > 0.0f) {  // adaptive sampling (docs/path.md)
+  const bool adaptive = rs.noise_threshold > 0.0f || rs.target_error > 0.0f;
+  if (!adaptive && (overrides.has("min_spp") || from_file.has("min_spp")))
+    throw InputError(where("min_spp") +
+                     ": min_spp is adaptive sampling's minimum; it needs noise_threshold or "
+                     "target_error");
+  const std::string key = rs.noise_threshold > 0.0f ? "noise_threshold" : "target_error";
+  if (adaptive) {  // adaptive sampling (docs/path.md)
     if (rs.sampler == SamplerKind::Center || rs.sampler == SamplerKind::Grid || rs.sampler == SamplerKind::Stratified)
       throw InputError(where("noise_threshold") +
                        ": adaptive sampling needs a sampler whose every prefix of samples "

@@ -11,10 +11,14 @@
 
 namespace tracer {
 
-// The relative error estimate of a pixel holding `samples` samples (at least 2): the even
-// ones in `even`, the odd ones in `odd`. 0 for a pixel whose samples are all zero; a
-// pixel whose channels average 0 or less but differ between the halves never converges.
-TRACER_HD double pixel_relative_error(const FilmSum& even, const FilmSum& odd, uint32_t samples) {
+// A pixel's error terms from its `samples` samples (at least 2), the even ones in `even`,
+// the odd ones in `odd`: the estimated standard error of its mean (half the halves' mean
+// difference) and the mean itself, each averaged over the channels.
+struct PixelErrorTerms {
+  double standard_error, level;
+};
+
+TRACER_HD PixelErrorTerms pixel_error_terms(const FilmSum& even, const FilmSum& odd, uint32_t samples) {
   const double n_even = static_cast<double>((samples + 1u) / 2u), n_odd = static_cast<double>(samples / 2u);
   double difference = 0.0, level = 0.0;
   for (int c = 0; c < 3; ++c) {
@@ -23,9 +27,16 @@ TRACER_HD double pixel_relative_error(const FilmSum& even, const FilmSum& odd, u
     difference += d < 0.0 ? -d : d;
     level += (e + o) / static_cast<double>(samples);
   }
-  if (difference == 0.0) return 0.0;
-  if (!(level > 0.0)) return kInfinity;
-  return 0.5 * difference / level;
+  return {0.5 * difference / 3.0, level / 3.0};
+}
+
+// The pixel's relative error estimate: 0 for a pixel whose halves agree exactly; a pixel
+// whose channels average 0 or less but differ between the halves never converges.
+TRACER_HD double pixel_relative_error(const FilmSum& even, const FilmSum& odd, uint32_t samples) {
+  const PixelErrorTerms t = pixel_error_terms(even, odd, samples);
+  if (t.standard_error == 0.0) return 0.0;
+  if (!(t.level > 0.0)) return kInfinity;
+  return t.standard_error / t.level;
 }
 
 // Whether a pixel may stop: its estimate is below the threshold.

@@ -51,7 +51,10 @@ enum Effects : uint32_t {
     "adaptive sampling: a pixel stops once its estimated relative error is below this (default: off, every pixel "  \
     "takes spp)")                                                                                                   \
   X(min_spp, uint32_t, 16u, render, UnlessDefault,                                                                  \
-    "adaptive sampling: the samples every pixel takes before it may stop (default 16, or spp if less)")
+    "adaptive sampling: the samples every pixel takes before it may stop (default 16, or spp if less)")              \
+  X(target_error, float, 0.0f, render, UnlessDefault,                                                               \
+    "stop the render at the first checkpoint (min_spp, doubling) where the image's estimated relative RMS error "  \
+    "is below this, or at spp (default: off)")
 
 struct RenderSettings {
 #define TRACER_SETTING_FIELD(name, Type, default_value, ...) Type name = default_value;
