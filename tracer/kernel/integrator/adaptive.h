@@ -44,7 +44,13 @@ TRACER_HD bool pixel_converged(const FilmSum& even, const FilmSum& odd, uint32_t
   return pixel_relative_error(even, odd, samples) < static_cast<double>(threshold);
 }
 
-// Whether pixel (x, y) keeps sampling: it or one of its eight neighbours is not yet
+// The decision's first step, for each running pixel: whether it is not yet converged at
+// `samples`; with threshold 0 (no per-pixel rule: target_error alone) every pixel runs on.
+TRACER_HD uint8_t pixel_unconverged(const FilmSum& even, const FilmSum& odd, uint32_t samples, float threshold) {
+  return threshold == 0.0f || !pixel_converged(even, odd, samples, threshold) ? 1u : 0u;
+}
+
+// The second step: whether pixel (x, y) keeps sampling: it or one of its eight neighbours is not yet
 // converged (`unconverged`: one byte per pixel, row-major, `width` x `height`). Spreading the
 // decision to neighbours, as Cycles does, keeps a pixel whose first samples all missed a rare
 // contribution (a caustic, a small light) running while the pixels around it find it.
