@@ -36,4 +36,13 @@ inline std::string describe_cuda_device(const cudaDeviceProp& prop) {
   return text;
 }
 
+// DeviceUnavailable naming `label` when `bytes` exceed the device's free memory.
+inline void require_free_device_memory(size_t bytes, const std::string& label, const std::string& device) {
+  size_t free_bytes = 0, total_bytes = 0;
+  TRACER_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
+  if (bytes > free_bytes)
+    throw DeviceUnavailable(label + ": the scene needs " + std::to_string(bytes >> 20) + " MiB of device memory; " +
+                            device + " has " + std::to_string(free_bytes >> 20) + " MiB free");
+}
+
 }  // namespace tracer

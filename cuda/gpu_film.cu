@@ -59,16 +59,12 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
                            const std::string& label) {
   const cudaDeviceProp prop = select_cuda_device();
   GpuFilm r;
-  r.device = describe_cuda_device(prop);
+  r.run.device = describe_cuda_device(prop);
   const RenderSettings& rs = view.settings;
   const size_t pixels = static_cast<size_t>(rs.width) * rs.height;
-  r.device_bytes = scene_array_bytes(arrays) + pixels * sizeof(FilmSum) + kCounterCount * sizeof(unsigned long long);
-  size_t free_bytes = 0, total_bytes = 0;
-  TRACER_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
-  if (r.device_bytes > free_bytes)
-    throw DeviceUnavailable(label + ": the scene needs " + std::to_string(r.device_bytes >> 20) +
-                            " MiB of device memory; " + r.device + " has " + std::to_string(free_bytes >> 20) +
-                            " MiB free");
+  r.run.device_bytes =
+      scene_array_bytes(arrays) + pixels * sizeof(FilmSum) + kCounterCount * sizeof(unsigned long long);
+  require_free_device_memory(r.run.device_bytes, label, r.run.device);
 
   auto t = std::chrono::steady_clock::now();
   const DeviceScene device_scene(arrays, view);
@@ -76,7 +72,7 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
   DeviceBuffer<unsigned long long> counters(kCounterCount);
   counters.zero();
   TRACER_CUDA_CHECK(cudaDeviceSynchronize());
-  r.upload_seconds = seconds_since(t);
+  r.run.upload_seconds = seconds_since(t);
 
   const CudaEvent start, stop;
   const dim3 block(16, 16), grid((rs.width + 15) / 16, (rs.height + 15) / 16);
@@ -84,7 +80,7 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
   render_kernel<<<grid, block>>>(device_scene.view(), range, film.get(), counters.get());
   TRACER_CUDA_CHECK(cudaGetLastError());
   TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
-  r.kernel_seconds = seconds_between(start, stop);
+  r.run.kernel_seconds = seconds_between(start, stop);
 
   t = std::chrono::steady_clock::now();
   r.film.width = rs.width;
@@ -92,7 +88,7 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
   r.film.range = range;
   r.film.pixels = film.download();
   const std::vector<unsigned long long> c = counters.download();
-  r.download_seconds = seconds_since(t);
+  r.run.download_seconds = seconds_since(t);
   r.rays = {c[kCamera], c[kSecondary], c[kShadow]};
   r.nonfinite = c[kNonfinite];
   r.overflow = c[kOverflow];

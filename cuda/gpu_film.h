@@ -5,6 +5,7 @@
 #pragma once
 #include <string>
 
+#include "gpu_run.h"
 #include "kernel/integrator/ray_counts.h"
 #include "render/film_buffer.h"
 #include "scene/scene_arrays.h"
@@ -15,9 +16,7 @@ struct GpuFilm {
   FilmBuffer film;
   RayCounts rays{};
   uint64_t nonfinite = 0, overflow = 0;
-  std::string device;       // "NVIDIA H100 80GB HBM3 (sm_90, 79.1 GiB)"
-  size_t device_bytes = 0;  // scene arrays + film + counters on the device
-  double upload_seconds = 0, kernel_seconds = 0, download_seconds = 0;
+  GpuRun run;
 };
 
 // The render kernel on this device: registers and local memory per thread (ptxas's

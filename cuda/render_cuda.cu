@@ -2,6 +2,7 @@
 // the self-contained runner launches too. With the strict flags of DESIGN.md rule 1 the
 // pixels equal the CPU's bit for bit.
 #include "cuda_device.h"
+#include "gpu_adaptive.h"
 #include "gpu_film.h"
 #include "render/render_cuda.h"
 
@@ -9,20 +10,38 @@ namespace tracer {
 
 std::string cuda_device_description() { return describe_cuda_device(select_cuda_device()); }
 
+namespace {
+
+void report_run(const GpuRun& run, CudaRunInfo& info) {
+  info.device = run.device;
+  info.device_bytes = run.device_bytes;
+  info.upload_seconds = run.upload_seconds;
+  info.kernel_seconds = run.kernel_seconds;
+  info.download_seconds = run.download_seconds;
+}
+
+}  // namespace
+
 FilmBuffer render_cuda_film(const Scene& scene, SampleRange range, RenderStats& stats, CudaRunInfo& info) {
   GpuFilm r = render_film_on_gpu(scene, scene.view(), range, scene.file);
-  info.device = r.device;
-  info.device_bytes = r.device_bytes;
-  info.upload_seconds = r.upload_seconds;
-  info.kernel_seconds = r.kernel_seconds;
-  info.download_seconds = r.download_seconds;
+  report_run(r.run, info);
   stats.rays = r.rays;
   stats.nonfinite_samples = r.nonfinite;
   stats.overflow_samples = r.overflow;
   return std::move(r.film);
 }
 
+AdaptiveFilm render_cuda_adaptive(const Scene& scene, RenderStats& stats, CudaRunInfo& info) {
+  GpuAdaptiveFilm r = render_adaptive_on_gpu(scene, scene.view(), scene.file);
+  report_run(r.run, info);
+  stats.rays = r.rays;
+  stats.nonfinite_samples = adaptive_nonfinite_samples(r.film);
+  stats.overflow_samples = adaptive_overflow_samples(r.film);
+  return std::move(r.film);
+}
+
 Image render_cuda(const Scene& scene, RenderStats& stats, CudaRunInfo& info) {
+  if (adaptive_render(scene.settings)) return resolve_adaptive(render_cuda_adaptive(scene, stats, info));
   const uint32_t spp = scene.settings.spp;
   return resolve_film(render_cuda_film(scene, {0, spp}, stats, info), spp);
 }

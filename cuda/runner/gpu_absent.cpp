@@ -1,5 +1,6 @@
 // The GPU entry points of a runner built without nvcc: each says so, and the runner's
 // `--device cpu` still runs every bundle and parity case.
+#include "gpu_adaptive.h"
 #include "gpu_film.h"
 #include "lbvh_gpu.h"
 #include "parity/parity_gpu.h"
@@ -14,6 +15,7 @@ namespace {
 }  // namespace
 
 GpuFilm render_film_on_gpu(const SceneArrays&, const SceneView&, SampleRange, const std::string&) { no_cuda(); }
+GpuAdaptiveFilm render_adaptive_on_gpu(const SceneArrays&, const SceneView&, const std::string&) { no_cuda(); }
 GpuLbvh build_lbvh_on_gpu(const LbvhInput&) { no_cuda(); }
 std::string describe_render_kernel() { no_cuda(); }
 

@@ -7,11 +7,14 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "bundle/scene_bundle.h"
 #include "bundle/sha1.h"
+#include "cpu_adaptive.h"
 #include "cpu_film.h"
+#include "gpu_adaptive.h"
 #include "gpu_film.h"
 #include "image/pixel_hash.h"
 #include "io/out_of_memory.h"
@@ -84,21 +87,43 @@ Options parse(int argc, char** argv) {
 }
 
 struct Rendered {
-  FilmBuffer film;
+  FilmBuffer film;                       // a uniform render's
+  std::optional<AdaptiveFilm> adaptive;  // an adaptive render's (render.noise_threshold, target_error)
   RayCounts rays{};
   uint64_t nonfinite = 0, overflow = 0;
   double best_seconds = 0;  // the fastest of the repeats: the kernel's (CUDA events) or the CPU's wall time
   std::string hash;
+  std::string sample_map_hash;  // an adaptive render's: its sample map's pixel hash
 };
+
+// An adaptive bundle: the film of render/adaptive_schedule.h's loop on the device asked for.
+void render_adaptive_bundle(const SceneBundle& b, const Options& o, const std::string& label, Rendered& r,
+                            double& seconds) {
+  const SceneView view = b.view();
+  if (o.device == "cuda") {
+    GpuAdaptiveFilm g = render_adaptive_on_gpu(b.arrays, view, label);
+    seconds = g.run.kernel_seconds;
+    r.adaptive = std::move(g.film), r.rays = g.rays;
+  } else {
+    const auto t = std::chrono::steady_clock::now();
+    CpuAdaptiveFilm c = render_adaptive_on_cpu(view, o.threads);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    r.adaptive = std::move(c.film), r.rays = c.rays;
+  }
+  r.nonfinite = adaptive_nonfinite_samples(*r.adaptive);
+  r.overflow = adaptive_overflow_samples(*r.adaptive);
+}
 
 Rendered render_bundle_unguarded(const SceneBundle& b, const Options& o, const std::string& label) {
   const SceneView view = b.view();
   Rendered r;
   for (uint32_t i = 0; i < o.repeat; ++i) {
     double seconds = 0;
-    if (o.device == "cuda") {
+    if (adaptive_render(view.settings)) {
+      render_adaptive_bundle(b, o, label, r, seconds);
+    } else if (o.device == "cuda") {
       GpuFilm g = render_film_on_gpu(b.arrays, view, b.range, label);
-      seconds = g.kernel_seconds;
+      seconds = g.run.kernel_seconds;
       r.film = std::move(g.film), r.rays = g.rays, r.nonfinite = g.nonfinite, r.overflow = g.overflow;
     } else {
       const auto t = std::chrono::steady_clock::now();
@@ -109,7 +134,10 @@ Rendered render_bundle_unguarded(const SceneBundle& b, const Options& o, const s
     if (i == 0 || seconds < r.best_seconds) r.best_seconds = seconds;
   }
   // A whole render's image hashes as the golden manifest does; a part's hash is of its film sums.
-  if (b.range.begin == 0 && b.range.end == b.scalars.settings.spp) {
+  if (r.adaptive) {
+    r.hash = pixel_hash(resolve_adaptive(*r.adaptive));
+    r.sample_map_hash = pixel_hash(adaptive_sample_map(*r.adaptive));
+  } else if (b.range.begin == 0 && b.range.end == b.scalars.settings.spp) {
     r.hash = pixel_hash(resolve_film(r.film, b.scalars.settings.spp));
   } else {
     Sha1 sha;
@@ -141,12 +169,16 @@ double mrays_per_second(const Rendered& r) {
 
 int run_render(const Options& o) {
   const SceneBundle b = read_scene_bundle(o.input);
+  const RenderSettings& rs = b.scalars.settings;
+  if (!o.output.empty() && adaptive_render(rs))
+    throw InputError("-o " + o.output + ": " + o.input +
+                     " is an adaptive render, whose film (half sums and sample counts) is not a film part");
   const Rendered r = render_bundle(b, o, o.input);
   if (!o.output.empty()) write_film(o.output, r);
+  if (r.adaptive) std::printf("%s sample map\n", r.sample_map_hash.c_str());
   std::printf("%s %s: %ux%u, samples [%u, %u), %.6f s, %.1f Mrays/s, %llu NaN/inf, %llu overflow\n", r.hash.c_str(),
-              o.input.c_str(), r.film.width, r.film.height, b.range.begin, b.range.end, r.best_seconds,
-              mrays_per_second(r), static_cast<unsigned long long>(r.nonfinite),
-              static_cast<unsigned long long>(r.overflow));
+              o.input.c_str(), rs.width, rs.height, b.range.begin, b.range.end, r.best_seconds, mrays_per_second(r),
+              static_cast<unsigned long long>(r.nonfinite), static_cast<unsigned long long>(r.overflow));
   if (!o.expect.empty() && o.expect != r.hash) {
     std::printf("FAIL: expected %s\n", o.expect.c_str());
     return 1;
@@ -189,13 +221,14 @@ int run_parity(const Options& o) {
   return pass ? 0 : 1;
 }
 
-// DIR/pack.tsv: one line per entry, "golden NAME FILE sha1:HASH" or "parity NAME FILE -".
+// DIR/pack.tsv: one line per entry, "golden NAME FILE sha1:HASH" (the image's hash),
+// "sample-map NAME FILE sha1:HASH" (an adaptive render's sample map) or "parity NAME FILE -".
 int run_pack(const Options& o) {
   const std::string dir = o.input + "/";
   std::istringstream list(read_text_file(dir + "pack.tsv", "pack list", 1u << 20));
   std::string device = "cpu (" + std::to_string(o.threads) + " threads)";
   if (o.device == "cuda") device = parity::gpu_device();
-  std::printf("tracer-gpu pack %s on %s\n%-7s %-36s %-5s %s\n", o.input.c_str(), device.c_str(), "kind", "name",
+  std::printf("tracer-gpu pack %s on %s\n%-10s %-36s %-5s %s\n", o.input.c_str(), device.c_str(), "kind", "name",
               "result", "detail");
   size_t passed = 0, total = 0;
   for (std::string line; std::getline(list, line);) {
@@ -207,13 +240,16 @@ int run_pack(const Options& o) {
     bool pass = false;
     std::string detail;
     try {
-      if (kind == "golden") {
+      if (kind == "golden" || kind == "sample-map") {
         const SceneBundle b = read_scene_bundle(dir + file);
         const Rendered r = render_bundle(b, o, dir + file);
-        pass = r.hash == expected;
+        const std::string& got = kind == "golden" ? r.hash : r.sample_map_hash;
+        pass = got == expected;
         char text[160];
         std::snprintf(text, sizeof text, "%.6f s, %.1f Mrays/s", r.best_seconds, mrays_per_second(r));
-        detail = pass ? text : "got " + r.hash + ", expected " + expected;
+        detail = pass                             ? text
+                 : r.adaptive || kind == "golden" ? "got " + got + ", expected " + expected
+                                                  : "a sample map needs an adaptive render; the bundle is uniform";
       } else if (kind == "parity") {
         pass = check_parity(dir + file, o, detail);
       } else {
@@ -223,7 +259,7 @@ int run_pack(const Options& o) {
       detail = std::string("error: ") + e.what();
     }
     passed += pass;
-    std::printf("%-7s %-36s %-5s %s\n", kind.c_str(), name.c_str(), pass ? "PASS" : "FAIL", detail.c_str());
+    std::printf("%-10s %-36s %-5s %s\n", kind.c_str(), name.c_str(), pass ? "PASS" : "FAIL", detail.c_str());
     std::fflush(stdout);
   }
   std::printf("%zu of %zu passed on %s\n", passed, total, device.c_str());

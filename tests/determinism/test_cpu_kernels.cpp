@@ -10,6 +10,7 @@
 #include "image/pixel_hash.h"
 #include "kernel/accel/trace.h"
 #include "render/cpu_kernel.h"
+#include "render/render_adaptive.h"
 #include "render/render_cpu.h"
 #include "scene/scene_loader.h"
 #include "test_util.h"
@@ -81,7 +82,13 @@ TEST(CpuKernels, EveryVariantRendersEveryGolden) {
     for (const CpuKernelVariant* v : variants_for(scene.features)) {
       RenderStats stats;
       const uint32_t spp = scene.settings.spp;
-      const Image image = resolve_film(render_cpu_film(scene, {0, spp}, 0, stats, {}, v), spp);
+      Image image;
+      if (adaptive_render(scene.settings)) {
+        const AdaptiveFilm film = render_cpu_adaptive(scene, 0, stats, {}, v);
+        image = entry.image == GoldenImage::SampleMap ? adaptive_sample_map(film) : resolve_adaptive(film);
+      } else {
+        image = resolve_film(render_cpu_film(scene, {0, spp}, 0, stats, {}, v), spp);
+      }
       EXPECT_EQ(pixel_hash(image), entry.hash) << entry.name << " with " << cpu_kernel_name(*v);
       ++renders;
     }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include "accel/lbvh_builder.h"
@@ -41,7 +42,7 @@ TEST(GpuPack, RunnerOnTheCpuReproducesEveryGoldenHashAndParityAnswer) {
   const GoldenManifest manifest = read_manifest(TRACER_SOURCE_DIR);
   for (const GoldenEntry& e : manifest.entries) {
     std::ostringstream row;
-    row << "golden  " << e.name;
+    row << std::left << std::setw(10) << (e.image == GoldenImage::SampleMap ? "sample-map" : "golden") << " " << e.name;
     const size_t at = out.find(row.str() + " ");
     ASSERT_NE(at, std::string::npos) << e.name << " has no row:\n" << out;
     EXPECT_NE(out.substr(at, 60).find("PASS"), std::string::npos) << out.substr(at, 200);
@@ -84,7 +85,7 @@ TEST(GpuPack, AWrongGoldenHashFailsItsRowAndThePack) {
   spill(dir / "pack.tsv", list);
   std::string out;
   EXPECT_EQ(test::run_command((dir / "run.sh").string() + " --device cpu", &out), 1) << out;
-  const size_t refraction = out.find("golden  refraction "), shadows = out.find("golden  shadows ");
+  const size_t refraction = out.find("golden     refraction "), shadows = out.find("golden     shadows ");
   ASSERT_NE(refraction, std::string::npos) << out;
   ASSERT_NE(shadows, std::string::npos) << out;
   EXPECT_NE(out.substr(refraction, 60).find("FAIL"), std::string::npos) << out;

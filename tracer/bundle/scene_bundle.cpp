@@ -53,6 +53,18 @@ SceneBundle decode_scene_bundle(const BundleFile& file, const std::string& path)
   if (b.range.begin >= b.range.end || b.range.end > rs.spp)
     throw InputError(path + ": bundle sample range [" + std::to_string(b.range.begin) + ", " +
                      std::to_string(b.range.end) + ") is not inside [0, " + std::to_string(rs.spp) + ")");
+  // An adaptive render (render/adaptive_film.h) as the scene loader admits it: whole, with
+  // thresholds of 0 (off) or positive and finite, and at least two samples per half decision.
+  const auto admissible = [](float v) { return v == 0.0f || (v > 0.0f && v <= 1e6f); };
+  if (!admissible(rs.noise_threshold) || !admissible(rs.target_error))
+    throw InputError(path + ": the bundle's render settings: noise_threshold " + std::to_string(rs.noise_threshold) +
+                     ", target_error " + std::to_string(rs.target_error) + ": expected 0 (off) or from above 0 to 1e6");
+  if (adaptive_render(rs) && (rs.min_spp < 2 || rs.min_spp > rs.spp))
+    throw InputError(path + ": the bundle's render settings: min_spp " + std::to_string(rs.min_spp) +
+                     ": an adaptive render needs from 2 to spp (" + std::to_string(rs.spp) + ")");
+  if (adaptive_render(rs) && (b.range.begin != 0 || b.range.end != rs.spp))
+    throw InputError(path + ": an adaptive render (noise_threshold, target_error) is rendered whole, not samples [" +
+                     std::to_string(b.range.begin) + ", " + std::to_string(b.range.end) + ")");
   return b;
 }
 

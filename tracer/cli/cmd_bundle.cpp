@@ -25,6 +25,10 @@ static int run_bundle(const RenderCommand& cmd) {
   const Scene scene = load_scene_text(text, cmd.scene, scene_overrides(cmd));
   refuse_outputs_naming_inputs({{cmd.output, "-o"}}, scene.files_read());
   const uint32_t spp = scene.settings.spp;
+  if (!cmd.samples.empty() && adaptive_render(scene.settings))
+    throw InputError(cmd.scene +
+                     ": --samples: an adaptive render (noise_threshold, target_error) decides its samples "
+                     "from all of them, so it cannot be split into sample ranges; bundle it whole");
   const SampleRange range = cmd.samples.empty() ? SampleRange{0, spp} : parse_sample_range(cmd.samples, spp);
   const SceneBundle bundle = make_scene_bundle(scene, scene.view(), range, cmd.scene);
   const std::string bytes = encode_bundle(encode_scene_bundle(bundle));

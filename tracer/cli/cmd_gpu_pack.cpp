@@ -182,7 +182,7 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
     const std::string file = "bundles/" + e.name + ".bundle";
     write_bundle((out / file).string(),
                  encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, e.scene)));
-    list += "golden " + e.name + " " + file + " " + e.hash + "\n";
+    list += (e.image == GoldenImage::SampleMap ? "sample-map " : "golden ") + e.name + " " + file + " " + e.hash + "\n";
   }
   const unsigned threads = cmd.threads > 0 ? static_cast<unsigned>(cmd.threads) : default_thread_count();
   for (const ParityCase& c : parity_cases(manifest)) {

@@ -16,6 +16,7 @@
 #include "io/output_batch.h"
 #include "io/output_paths.h"
 #include "io/text_file.h"
+#include "options/number_text.h"
 #include "options/render_options.h"
 #include "render/partial_file.h"
 #include "render/progress.h"
@@ -94,9 +95,6 @@ static int run_render(const RenderCommand& cmd) {
     throw InputError(cmd.scene +
                      ": --samples: an adaptive render (noise_threshold, target_error) decides its samples "
                      "from all of them, so it cannot be split into sample ranges; render it whole");
-  if (adaptive && cmd.device == "cuda")
-    throw InputError(cmd.scene +
-                     ": --device cuda: adaptive sampling (noise_threshold, target_error) runs on the CPU only so far");
   if (!cmd.sample_map.empty() && !adaptive)
     throw InputError(cmd.scene + ": --sample-map: only an adaptive render (noise_threshold, target_error) has one");
   if (!cmd.sample_map.empty()) {
@@ -112,7 +110,9 @@ static int run_render(const RenderCommand& cmd) {
   const auto t_render = Clock::now();
   const std::string film_size = std::to_string(rs.width) + "x" + std::to_string(rs.height);
   naming_file_when_out_of_memory(cmd.scene, "allocating its " + film_size + " film", [&] {
-    if (cmd.device == "cuda") {
+    if (cmd.device == "cuda" && adaptive) {
+      adaptive_film = render_cuda_adaptive(scene, stats, cuda);
+    } else if (cmd.device == "cuda") {
       part.film = render_cuda_film(scene, range, stats, cuda);  // one launch: no progress to draw
     } else if (adaptive) {
       ProgressBar bar(static_cast<uint64_t>(rs.width) * rs.height * rs.spp, !cmd.quiet);
@@ -176,10 +176,12 @@ static int run_render(const RenderCommand& cmd) {
                  {"total", rays}};
     j["mrays_per_second"] = mrays;
     if (adaptive)
-      j["adaptive"] = {
-          {"noise_threshold", rs.noise_threshold},    {"target_error", rs.target_error},
-          {"image_error", adaptive_film.image_error}, {"checkpoints", adaptive_checkpoints(rs.min_spp, rs.spp)},
-          {"samples_taken", samples_taken},           {"mean_spp", mean_spp}};
+      j["adaptive"] = {{"noise_threshold", shortest_decimal(rs.noise_threshold)},
+                       {"target_error", shortest_decimal(rs.target_error)},
+                       {"image_error", adaptive_film.image_error},
+                       {"checkpoints", adaptive_checkpoints(rs.min_spp, rs.spp)},
+                       {"samples_taken", samples_taken},
+                       {"mean_spp", mean_spp}};
     j["nonfinite_samples"] = stats.nonfinite_samples;
     j["overflow_samples"] = stats.overflow_samples;
     j["degenerate_triangles"] = scene.report.degenerate_triangles;

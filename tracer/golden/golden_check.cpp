@@ -9,6 +9,7 @@
 #include "image/image_io.h"
 #include "image/pixel_hash.h"
 #include "io/input_error.h"
+#include "render/render_adaptive.h"
 #include "render/render_cpu.h"
 #include "render/render_cuda.h"
 #include "scene/scene_loader.h"
@@ -33,7 +34,14 @@ GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& en
   const Scene scene = load_scene(scene_path, RenderOverrides{entry.options});
   GoldenRender r;
   RenderStats stats;
-  if (device == GoldenDevice::Cuda) {
+  if (entry.image == GoldenImage::SampleMap) {
+    if (!adaptive_render(scene.settings))
+      throw InputError(manifest.path + ": goldens." + entry.name +
+                       ".image: a sample map is an adaptive render's; set noise_threshold or target_error");
+    CudaRunInfo info;
+    r.image = adaptive_sample_map(device == GoldenDevice::Cuda ? render_cuda_adaptive(scene, stats, info)
+                                                               : render_cpu_adaptive(scene, threads, stats));
+  } else if (device == GoldenDevice::Cuda) {
     CudaRunInfo info;
     r.image = render_cuda(scene, stats, info);
   } else {

@@ -57,6 +57,10 @@ GoldenEntry read_entry(const std::string& name, const Json& value, const std::st
   const Json empty = Json::object();
   const Json* options = obj.find("options");
   e.options = read_entry_options(options ? *options : empty, obj.child("options"), file);
+  const std::string image = obj.string_or("image", "render");
+  if (image != "render" && image != "sample-map")
+    obj.fail("image", "expected \"render\" (the default) or \"sample-map\", got \"" + image + "\"");
+  e.image = image == "sample-map" ? GoldenImage::SampleMap : GoldenImage::Render;
   e.hash = obj.string_or("hash", "");
   if (!e.hash.empty() && (e.hash.rfind("sha1:", 0) != 0 || e.hash.size() != 45))
     obj.fail("hash", "expected \"sha1:\" and 40 hex digits, got \"" + e.hash + "\"");
@@ -113,6 +117,7 @@ void add_manifest(OutputBatch& outputs, const GoldenManifest& manifest) {
     nlohmann::ordered_json entry;
     entry["scene"] = e.scene;
     entry["options"] = e.options.to_json();
+    if (e.image == GoldenImage::SampleMap) entry["image"] = "sample-map";
     if (!e.hash.empty()) entry["hash"] = e.hash;
     if (e.tolerance)
       entry["compare"] = {

@@ -1,6 +1,7 @@
 // golden/manifest.json: the list of golden images (docs/golden.md). Each entry names a
 // scene file (relative to the source root, the parent of golden/), the render options
-// that override the scene's own, the pixel hash of its reference image golden/NAME.exr,
+// that override the scene's own, which image of the render it keeps (the render, or an
+// adaptive render's sample map), the pixel hash of its reference image golden/NAME.exr,
 // and how it is compared: exactly (the default) or, where the entry says why, within a
 // metric tolerance.
 #pragma once
@@ -22,10 +23,15 @@ struct GoldenTolerance {
   std::string why;
 };
 
+// Which image a golden keeps: the rendered image, or an adaptive render's per-pixel sample
+// counts (render/adaptive_film.h), "image": "sample-map" in the manifest.
+enum class GoldenImage { Render, SampleMap };
+
 struct GoldenEntry {
   std::string name;   // [a-z0-9-]+: the test and the file name
   std::string scene;  // relative to the source root
   RenderOptions options;
+  GoldenImage image = GoldenImage::Render;
   std::string hash;                          // pixel_hash of the reference; empty for a new entry
   std::optional<GoldenTolerance> tolerance;  // nullopt: exact
 };
@@ -41,7 +47,7 @@ struct GoldenManifest {
 };
 
 std::string manifest_path(const std::string& root);
-GoldenManifest read_manifest(const std::string& root);  // InputError naming file and key
+GoldenManifest read_manifest(const std::string& root);                    // InputError naming file and key
 void add_manifest(OutputBatch& outputs, const GoldenManifest& manifest);  // in a stable layout, on commit
 
 }  // namespace tracer

@@ -39,4 +39,12 @@ std::string count_range(uint64_t min, uint64_t max) {
   return "a whole number from " + std::to_string(min) + " to " + std::to_string(max);
 }
 
+double shortest_decimal(float value) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, value).ptr;  // shortest round trip (C++17)
+  double result = 0.0;
+  std::from_chars(text, end, result);
+  return result;
+}
+
 }  // namespace tracer

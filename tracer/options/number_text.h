@@ -15,4 +15,8 @@ std::optional<double> parse_decimal(std::string_view text, double min, double ma
 
 std::string count_range(uint64_t min, uint64_t max);  // "a whole number from MIN to MAX"
 
+// The double nearest the shortest decimal that reads back as `value`: a float threshold of
+// 0.2 is written to JSON as 0.2, not as its exact 0.20000000298023224.
+double shortest_decimal(float value);
+
 }  // namespace tracer

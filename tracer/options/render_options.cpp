@@ -40,8 +40,10 @@ T value_from_json(const Json& v, const std::string& path, const std::string& fil
 
 template <class T>
 nlohmann::ordered_json value_to_json(T value) {
-  if constexpr (std::is_same_v<T, uint32_t> || std::is_same_v<T, uint64_t> || std::is_same_v<T, float>)
+  if constexpr (std::is_same_v<T, uint32_t> || std::is_same_v<T, uint64_t>)
     return value;
+  else if constexpr (std::is_same_v<T, float>)
+    return shortest_decimal(value);
   else if constexpr (std::is_same_v<T, Switch>)
     return value == Switch::On;
   else if constexpr (std::is_same_v<T, Effects>)

@@ -19,10 +19,6 @@ struct AdaptiveFilm {
   double image_error = 0;          // target_error: the image's estimate at the last checkpoint
 };
 
-// Whether the settings ask for adaptive sampling: per pixel (noise_threshold) or for the
-// whole image (target_error).
-inline bool adaptive_render(const RenderSettings& rs) { return rs.noise_threshold > 0.0f || rs.target_error > 0.0f; }
-
 // The checkpoints: min(min_spp, spp), then doubling, the last one spp.
 std::vector<uint32_t> adaptive_checkpoints(uint32_t min_spp, uint32_t spp);
 

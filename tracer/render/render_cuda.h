@@ -6,6 +6,7 @@
 #include <string>
 
 #include "image/image.h"
+#include "render/adaptive_film.h"
 #include "render/render_cpu.h"
 #include "scene/scene.h"
 
@@ -24,7 +25,11 @@ std::string cuda_device_description();
 // memory) or std::runtime_error naming the failing CUDA call.
 FilmBuffer render_cuda_film(const Scene& scene, SampleRange range, RenderStats& stats, CudaRunInfo& info);
 
-// All samples, resolved to an image.
+// An adaptive render (render.noise_threshold, render.target_error) on the GPU: the film of
+// the CPU's render_cpu_adaptive, bit for bit.
+AdaptiveFilm render_cuda_adaptive(const Scene& scene, RenderStats& stats, CudaRunInfo& info);
+
+// All samples, resolved to an image; adaptively when the scene asks.
 Image render_cuda(const Scene& scene, RenderStats& stats, CudaRunInfo& info);
 
 }  // namespace tracer

@@ -14,6 +14,8 @@ std::string cuda_device_description() { no_cuda(); }
 
 FilmBuffer render_cuda_film(const Scene&, SampleRange, RenderStats&, CudaRunInfo&) { no_cuda(); }
 
+AdaptiveFilm render_cuda_adaptive(const Scene&, RenderStats&, CudaRunInfo&) { no_cuda(); }
+
 Image render_cuda(const Scene&, RenderStats&, CudaRunInfo&) { no_cuda(); }
 
 }  // namespace tracer

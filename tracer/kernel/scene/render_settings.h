@@ -63,4 +63,8 @@ struct RenderSettings {
   uint32_t grid_n = 1;  // sqrt(spp) for the grid and stratified samplers (derived from spp)
 };
 
+// Whether the settings ask for adaptive sampling (docs/path.md): per pixel (noise_threshold)
+// or for the whole image (target_error).
+inline bool adaptive_render(const RenderSettings& rs) { return rs.noise_threshold > 0.0f || rs.target_error > 0.0f; }
+
 }  // namespace tracer

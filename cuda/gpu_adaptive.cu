@@ -1,0 +1,136 @@
+#include <chrono>
+
+#include "cuda_device.h"
+#include "cuda_event.h"
+#include "device_scene.h"
+#include "gpu_adaptive.h"
+#include "kernel/integrator/adaptive.h"
+#include "kernel/integrator/render_pixel.h"
+#include "render/adaptive_schedule.h"
+
+namespace tracer {
+namespace {
+
+constexpr uint32_t kBlock = 128;
+
+enum Counter { kCamera, kSecondary, kShadow, kCounterCount };
+
+uint32_t blocks_for(size_t n) { return static_cast<uint32_t>((n + kBlock - 1) / kBlock); }
+
+// One thread per running pixel: samples [begin, end) into its even and odd sums.
+__global__ void adaptive_pass_kernel(const SceneView scene, const uint32_t* running, size_t count, uint32_t begin,
+                                     uint32_t end, FilmSum* even, FilmSum* odd, unsigned long long* counters) {
+  const size_t i = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (i >= count) return;
+  const uint32_t p = running[i];
+  RayCounts counts = {0, 0, 0};
+  render_pixel_halves(scene, p % scene.settings.width, p / scene.settings.width, begin, end, even[p], odd[p], counts);
+  atomicAdd(&counters[kCamera], static_cast<unsigned long long>(counts.camera));
+  atomicAdd(&counters[kSecondary], static_cast<unsigned long long>(counts.secondary));
+  atomicAdd(&counters[kShadow], static_cast<unsigned long long>(counts.shadow));
+}
+
+// The decision's first step over the running pixels (the map's other pixels are 0).
+__global__ void mark_unconverged_kernel(const uint32_t* running, size_t count, const FilmSum* even, const FilmSum* odd,
+                                        uint32_t samples, float threshold, uint8_t* unconverged) {
+  const size_t i = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (i < count) unconverged[running[i]] = pixel_unconverged(even[running[i]], odd[running[i]], samples, threshold);
+}
+
+// The second step: each running pixel keeps sampling while it or a neighbour is unconverged.
+__global__ void keep_kernel(const uint32_t* running, size_t count, const uint8_t* unconverged, uint32_t width,
+                            uint32_t height, uint8_t* keep) {
+  const size_t i = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (i < count)
+    keep[i] = neighbourhood_unconverged(unconverged, width, height, running[i] % width, running[i] / width) ? 1u : 0u;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+struct GpuBackend {
+  SceneView scene;  // pointing at device arrays
+  DeviceBuffer<FilmSum> even, odd;
+  DeviceBuffer<uint32_t> running;
+  DeviceBuffer<uint8_t> unconverged, keep_flags;
+  DeviceBuffer<unsigned long long> counters;
+  double kernel_seconds = 0, transfer_seconds = 0;
+
+  GpuBackend(const SceneView& device_view, size_t pixels)
+      : scene(device_view),
+        even(pixels),
+        odd(pixels),
+        running(pixels),
+        unconverged(pixels),
+        keep_flags(pixels),
+        counters(kCounterCount) {
+    even.zero(), odd.zero(), counters.zero();
+  }
+
+  void upload_running(const std::vector<uint32_t>& list) {
+    const auto t = std::chrono::steady_clock::now();
+    TRACER_CUDA_CHECK(cudaMemcpy(running.get(), list.data(), list.size() * sizeof(uint32_t), cudaMemcpyHostToDevice));
+    transfer_seconds += seconds_since(t);
+  }
+
+  void render(AdaptiveFilm&, const std::vector<uint32_t>& list, uint32_t begin, uint32_t end, uint64_t) {
+    upload_running(list);
+    const CudaEvent start, stop;
+    TRACER_CUDA_CHECK(cudaEventRecord(start.event));
+    adaptive_pass_kernel<<<blocks_for(list.size()), kBlock>>>(scene, running.get(), list.size(), begin, end, even.get(),
+                                                              odd.get(), counters.get());
+    TRACER_CUDA_CHECK(cudaGetLastError());
+    TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
+    kernel_seconds += seconds_between(start, stop);
+  }
+
+  void read_sums(AdaptiveFilm& film) {
+    const auto t = std::chrono::steady_clock::now();
+    film.even = even.download();
+    film.odd = odd.download();
+    transfer_seconds += seconds_since(t);
+  }
+
+  std::vector<uint8_t> keep(AdaptiveFilm& film, const std::vector<uint32_t>& list, uint32_t checkpoint,
+                            float threshold) {
+    unconverged.zero();
+    mark_unconverged_kernel<<<blocks_for(list.size()), kBlock>>>(running.get(), list.size(), even.get(), odd.get(),
+                                                                 checkpoint, threshold, unconverged.get());
+    TRACER_CUDA_CHECK(cudaGetLastError());
+    keep_kernel<<<blocks_for(list.size()), kBlock>>>(running.get(), list.size(), unconverged.get(), film.width,
+                                                     film.height, keep_flags.get());
+    TRACER_CUDA_CHECK(cudaGetLastError());
+    std::vector<uint8_t> flags(list.size());
+    TRACER_CUDA_CHECK(cudaMemcpy(flags.data(), keep_flags.get(), flags.size(), cudaMemcpyDeviceToHost));
+    return flags;
+  }
+};
+
+}  // namespace
+
+GpuAdaptiveFilm render_adaptive_on_gpu(const SceneArrays& arrays, const SceneView& view, const std::string& label) {
+  const cudaDeviceProp prop = select_cuda_device();
+  GpuAdaptiveFilm r;
+  r.run.device = describe_cuda_device(prop);
+  const RenderSettings& rs = view.settings;
+  const size_t pixels = static_cast<size_t>(rs.width) * rs.height;
+  r.run.device_bytes = scene_array_bytes(arrays) + pixels * (2 * sizeof(FilmSum) + sizeof(uint32_t) + 2) +
+                       kCounterCount * sizeof(unsigned long long);
+  require_free_device_memory(r.run.device_bytes, label, r.run.device);
+
+  auto t = std::chrono::steady_clock::now();
+  const DeviceScene device_scene(arrays, view);
+  GpuBackend backend(device_scene.view(), pixels);
+  TRACER_CUDA_CHECK(cudaDeviceSynchronize());
+  r.run.upload_seconds = seconds_since(t);
+
+  r.film = schedule_adaptive(rs, backend);
+  const std::vector<unsigned long long> c = backend.counters.download();
+  r.rays = {c[kCamera], c[kSecondary], c[kShadow]};
+  r.run.kernel_seconds = backend.kernel_seconds;
+  r.run.download_seconds = backend.transfer_seconds;
+  return r;
+}
+
+}  // namespace tracer
