@@ -4,6 +4,7 @@
 #pragma once
 #include "kernel/base/detmath.h"
 #include "kernel/base/philox.h"
+#include "kernel/integrator/adaptive.h"
 #include "kernel/integrator/render_pixel.h"
 
 namespace tracer::parity {
@@ -82,6 +83,24 @@ TRACER_HD SampleAnswer eval_sample(const SceneView& scene, uint32_t pixel_index)
   a.pixel = render_pixel(scene, pixel_index % scene.settings.width, pixel_index / scene.settings.width, 0u,
                          scene.settings.spp, a.counts);
   return a;
+}
+
+struct AdaptiveQuery {
+  FilmSum even, odd;
+  uint32_t samples;
+  float threshold;
+};
+
+struct AdaptiveAnswer {
+  double relative_error;
+  uint32_t unconverged, zero;  // `zero` keeps the answer's bytes defined for hashing
+};
+
+// Adaptive sampling's per-pixel decision from a pixel's half sums (the estimate in IEEE
+// double and the first step of the keep rule; the second step is integer only).
+TRACER_HD AdaptiveAnswer eval_adaptive(const AdaptiveQuery& q) {
+  return {pixel_relative_error(q.even, q.odd, q.samples),
+          static_cast<uint32_t>(pixel_unconverged(q.even, q.odd, q.samples, q.threshold)), 0u};
 }
 
 }  // namespace tracer::parity

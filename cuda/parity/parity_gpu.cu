@@ -30,6 +30,11 @@ __global__ void shape_kernel(const ShapeQuery* q, ShapeAnswer* out, size_t n) {
   if (i < n) out[i] = eval_shape(q[i]);
 }
 
+__global__ void adaptive_kernel(const AdaptiveQuery* q, AdaptiveAnswer* out, size_t n) {
+  const size_t i = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (i < n) out[i] = eval_adaptive(q[i]);
+}
+
 __global__ void trace_kernel(const SceneView scene, const Ray* rays, TraceAnswer* out, size_t n) {
   const size_t i = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (i < n) out[i] = eval_trace(scene, rays[i]);
@@ -67,6 +72,15 @@ std::vector<ShapeAnswer> gpu_shapes(const std::vector<ShapeQuery>& queries) {
   const DeviceBuffer<ShapeQuery> q(queries);
   DeviceBuffer<ShapeAnswer> out(queries.size());
   shape_kernel<<<blocks_for(queries.size()), kBlock>>>(q.get(), out.get(), queries.size());
+  finish_launch();
+  return out.download();
+}
+
+std::vector<AdaptiveAnswer> gpu_adaptive(const std::vector<AdaptiveQuery>& queries) {
+  select_cuda_device();
+  const DeviceBuffer<AdaptiveQuery> q(queries);
+  DeviceBuffer<AdaptiveAnswer> out(queries.size());
+  adaptive_kernel<<<blocks_for(queries.size()), kBlock>>>(q.get(), out.get(), queries.size());
   finish_launch();
   return out.download();
 }

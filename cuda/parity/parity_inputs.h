@@ -145,6 +145,38 @@ inline std::vector<Ray> ray_inputs(uint64_t seed, uint32_t count, Vec3 lo, Vec3 
   return rays;
 }
 
+// Half sums of pixels: sample counts from 2 to 2^20 (odd ones too), per-sample means of
+// 0 to 2^8 film units scaled to the count, halves that agree exactly, sums of zero, of
+// opposite signs and near the film's 2^62 limit, thresholds from 2^-20 to 1e6 and 0 (no
+// per-pixel rule).
+inline std::vector<AdaptiveQuery> adaptive_inputs(uint64_t seed, uint32_t count) {
+  Inputs in{seed};
+  std::vector<AdaptiveQuery> q;
+  const float thresholds[] = {0.0f, 0x1p-20f, 0.01f, 0.05f, 0.1f, 0.25f, 1.0f, 1e6f};
+  for (uint32_t i = 0; i < count; ++i) {
+    AdaptiveQuery a{};
+    a.samples = 2u + static_cast<uint32_t>(in.next() % (i % 3 == 0 ? 64u : (1u << 20) - 1u));
+    const double n_even = static_cast<double>((a.samples + 1u) / 2u), n_odd = static_cast<double>(a.samples / 2u);
+    for (int c = 0; c < 3; ++c) {
+      const double mean = static_cast<double>(in.next() >> 40) * kFilmUnits * 0x1p-16;  // 0 .. 2^8 per sample
+      const double wobble = 1.0 + (static_cast<double>(in.next() >> 11) * 0x1p-53 - 0.5) * 0.5;
+      a.even.rgb[c] = static_cast<int64_t>(mean * n_even);
+      a.odd.rgb[c] = static_cast<int64_t>(mean * wobble * n_odd);
+      switch (i % 8) {
+        case 1: a.odd.rgb[c] = static_cast<int64_t>(static_cast<double>(a.even.rgb[c]) / n_even * n_odd); break;
+        case 2: a.even.rgb[c] = a.odd.rgb[c] = 0; break;
+        case 3: a.odd.rgb[c] = -a.odd.rgb[c]; break;
+        case 4: a.even.rgb[c] = kFilmSumLimit - static_cast<int64_t>(in.next() >> 40); break;
+        case 5: a.even.rgb[c] = -a.even.rgb[c], a.odd.rgb[c] = -a.odd.rgb[c]; break;
+        default: break;
+      }
+    }
+    a.threshold = i % 5 == 4 ? in.uniform(0.0f, 0.5f) : thresholds[in.next() % 8];
+    q.push_back(a);
+  }
+  return q;
+}
+
 // Boxes of `count` small random triangles in the unit cube (edges up to 2^-8, every tenth
 // sharing its centroid with the one before, so Morton codes tie): an LBVH build's input.
 inline LbvhInput lbvh_inputs(uint64_t seed, uint32_t count) {

@@ -125,6 +125,13 @@ ParityAnswers evaluate_parity_case(const ParityCase& c, bool on_gpu, unsigned th
       set_answers(r, words);
       break;
     }
+    case ParityKind::Adaptive: {
+      const std::vector<AdaptiveQuery> q = adaptive_inputs(s.seed, s.count);
+      r.inputs = q.size(), r.inputs_sha1 = sha1_of(q);
+      set_answers(r,
+                  timed([&] { return on_gpu ? gpu_adaptive(q) : on_cpu<AdaptiveAnswer>(q, threads, eval_adaptive); }));
+      break;
+    }
     default: throw InputError(c.name + ": unknown parity case kind " + std::to_string(static_cast<uint32_t>(s.kind)));
   }
   return r;
@@ -175,11 +182,11 @@ StoredParityCase read_parity_case(const std::string& path) {
   s.inputs_sha1 = text("inputs_sha1");
   s.answers_sha1 = text("answers_sha1");
   const ParitySpec& spec = s.parity.spec;
-  if (static_cast<uint32_t>(spec.kind) > static_cast<uint32_t>(ParityKind::Lbvh) ||
+  if (static_cast<uint32_t>(spec.kind) > static_cast<uint32_t>(ParityKind::Adaptive) ||
       spec.function >= kMathFunctionCount || spec.count > kMaxParityInputs)
     throw InputError(path + ": parity case " + s.parity.name + " has kind " +
                      std::to_string(static_cast<uint32_t>(spec.kind)) + ", function " + std::to_string(spec.function) +
-                     ", count " + std::to_string(spec.count) + " (kinds 0-5, functions 0-8, counts up to 2^24)");
+                     ", count " + std::to_string(spec.count) + " (kinds 0-6, functions 0-8, counts up to 2^24)");
   if (s.parity.spec.kind == ParityKind::Trace || s.parity.spec.kind == ParityKind::Sample)
     s.parity.scene = decode_scene_bundle(file, path);
   return s;

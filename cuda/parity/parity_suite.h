@@ -11,7 +11,7 @@
 
 namespace tracer::parity {
 
-enum class ParityKind : uint32_t { Math, Philox, Shapes, Trace, Sample, Lbvh };
+enum class ParityKind : uint32_t { Math, Philox, Shapes, Trace, Sample, Lbvh, Adaptive };
 
 struct ParitySpec {
   ParityKind kind;
@@ -19,7 +19,7 @@ struct ParitySpec {
   uint64_t seed;
   uint32_t count;  // Math: random pairs (and half as many domain points); Philox: queries;
                    // Shapes: spheres and triangles each; Trace: rays; Sample: unused;
-                   // Lbvh: triangles, built into nodes and leaf order
+                   // Lbvh: triangles, built into nodes and leaf order; Adaptive: pixels
   uint32_t reserved;
   Vec3 lo, hi;  // Trace: the box the ray origins are drawn from
 };

@@ -118,6 +118,32 @@ TEST(CudaParity, BvhTraversal) {
   }
 }
 
+TEST(CudaParity, AdaptiveSamplingDecisions) {
+  const std::vector<AdaptiveQuery> q = adaptive_inputs(19, 1u << 20);
+  std::vector<AdaptiveAnswer> cpu(q.size());
+  size_t unconverged = 0, zero_error = 0, infinite_error = 0;
+  for (size_t i = 0; i < q.size(); ++i) {
+    cpu[i] = eval_adaptive(q[i]);
+    unconverged += cpu[i].unconverged;
+    zero_error += cpu[i].relative_error == 0.0;
+    infinite_error += std::isinf(cpu[i].relative_error);
+    ASSERT_EQ(cpu[i].unconverged,
+              q[i].threshold == 0.0f || !(cpu[i].relative_error < static_cast<double>(q[i].threshold)))
+        << "input " << i;
+  }
+  // Both answers and the estimate's special values are among the inputs.
+  EXPECT_GT(unconverged, q.size() / 8);
+  EXPECT_LT(unconverged, q.size() - q.size() / 8);
+  EXPECT_GE(zero_error, q.size() / 8) << "the all-zero pixels";
+  EXPECT_GT(infinite_error, 0u) << "the pixels whose mean is 0 or less but whose halves differ";
+  SKIP_WITHOUT_GPU();
+  expect_same_bits(cpu, gpu_adaptive(q), [&](size_t i) {
+    char text[96];
+    std::snprintf(text, sizeof text, "error %a, unconverged %u", cpu[i].relative_error, cpu[i].unconverged);
+    return std::string(text);
+  });
+}
+
 TEST(CudaParity, WholePixelsOfEveryGolden) {
   const GoldenManifest manifest = read_manifest(TRACER_SOURCE_DIR);
   std::vector<Scene> scenes;

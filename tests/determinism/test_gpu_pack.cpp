@@ -49,7 +49,7 @@ TEST(GpuPack, RunnerOnTheCpuReproducesEveryGoldenHashAndParityAnswer) {
   }
   for (const char* c :
        {"math-sin", "math-pow", "philox", "shapes", "trace-mesh-bvh", "trace-mesh-lbvh", "trace-mesh-kdtree",
-        "trace-mesh-grid", "trace-mesh-none", "lbvh-build-1m", "sample-cornell-box"})
+        "trace-mesh-grid", "trace-mesh-none", "adaptive-decision", "lbvh-build-1m", "sample-cornell-box"})
     EXPECT_NE(out.find(std::string(c) + " "), std::string::npos) << c << " missing:\n" << out;
   EXPECT_EQ(out.find("FAIL"), std::string::npos) << out;
 }

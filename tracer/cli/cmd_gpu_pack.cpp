@@ -78,6 +78,7 @@ std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
                        make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, label)});
     }
   }
+  cases.push_back({"adaptive-decision", {ParityKind::Adaptive, 0, 19, 1u << 20, 0, {}, {}}, {}});
   cases.push_back({"lbvh-build-1m", {ParityKind::Lbvh, 0, 17, 1u << 20, 0, {}, {}}, {}});
   const Scene sample = golden_scene(manifest, "cornell-box", std::nullopt);
   cases.push_back({"sample-cornell-box",
