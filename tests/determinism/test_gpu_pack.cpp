@@ -10,6 +10,8 @@
 
 #include "accel/lbvh_builder.h"
 #include "golden/golden_manifest.h"
+#include "image/image_io.h"
+#include "image/pixel_hash.h"
 #include "parity/parallel_for.h"
 #include "parity/parity_inputs.h"
 #include "test_util.h"
@@ -207,6 +209,31 @@ TEST_F(BundleInput, TheRunnerRendersItAndAWrongExpectedHashFails) {
   EXPECT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu --expect " + hash, &out), 0) << out;
   EXPECT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu --expect sha1:0", &out), 1) << out;
   EXPECT_NE(out.find("FAIL"), std::string::npos) << out;
+}
+
+// An adaptive bundle (8 spp, below the default min_spp of 16, which the render takes as
+// min(min_spp, spp)): the runner's image and sample map hash as the tracer's own render.
+TEST_F(BundleInput, TheRunnerRendersAnAdaptiveBundleAsTheTracerDoes) {
+  const std::string scene = test::source_path("scenes/cornell-box-path.json"),
+                    options = " --width 32 --height 24 --spp 8 --noise-threshold 0.3 --sampler sobol",
+                    bundle = (dir_ / "adaptive.bundle").string(), image = (dir_ / "adaptive.exr").string(),
+                    map = (dir_ / "map.exr").string();
+  std::string out;
+  ASSERT_EQ(test::run_tracer("bundle " + scene + options + " -o " + bundle, &out), 0) << out;
+  ASSERT_EQ(test::run_tracer("render " + scene + options + " --quiet -o " + image + " --sample-map " + map, &out), 0)
+      << out;
+  ASSERT_EQ(test::run_command(runner() + " render " + bundle + " --device cpu", &out), 0) << out;
+  EXPECT_NE(out.find(pixel_hash(read_image(map)) + " sample map"), std::string::npos) << out;
+  EXPECT_NE(out.find(pixel_hash(read_image(image)) + " " + bundle), std::string::npos) << out;
+  EXPECT_EQ(test::run_command(runner() + " render " + bundle + " --device cpu -o " + (dir_ / "a.film").string(), &out),
+            2)
+      << out;
+  EXPECT_NE(out.find("is an adaptive render"), std::string::npos) << out;
+  EXPECT_EQ(
+      test::run_tracer("bundle " + scene + options + " --samples 0:4 -o " + (dir_ / "part.bundle").string(), &out), 2)
+      << out;
+  EXPECT_NE(out.find("cannot be split into sample ranges"), std::string::npos) << out;
+  EXPECT_FALSE(fs::exists(dir_ / "part.bundle"));
 }
 
 TEST_F(BundleInput, TruncatedCorruptedOrForeignFilesAreRefused) {

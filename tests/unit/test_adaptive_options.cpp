@@ -3,8 +3,11 @@
 // one writes the image and the sample map.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 
+#include "image/image_io.h"
 #include "test_util.h"
 
 namespace tracer {
@@ -93,6 +96,24 @@ TEST_F(AdaptiveOptions, AnAdaptiveRenderWritesItsImageAndSampleMap) {
             std::string::npos)
       << stats;
   EXPECT_NE(output.find("spp on average"), std::string::npos) << output;
+  // The EXR map holds the counts; a PNG map the counts over spp, so that it shows.
+  const Image map = read_image((dir_ / "map.exr").string());
+  ASSERT_EQ(test::run_tracer("render " + scene(R"("noise_threshold": 0.05, "min_spp": 4)") + " --quiet --sample-map " +
+                                 (dir_ / "map.png").string() + out(),
+                             &output),
+            0)
+      << output;
+  const Image png = read_image((dir_ / "map.png").string());
+  ASSERT_EQ(png.rgb.size(), map.rgb.size());
+  float fewest = 64.0f, most = 0.0f;
+  for (size_t i = 0; i < map.rgb.size(); ++i) {
+    fewest = std::min(fewest, map.rgb[i]), most = std::max(most, map.rgb[i]);
+    const float expected = map.rgb[i] / 64.0f,
+                srgb = expected <= 0.0031308f ? 12.92f * expected : 1.055f * std::pow(expected, 1 / 2.4f) - 0.055f;
+    EXPECT_NEAR(png.rgb[i], srgb, 0.5f / 255.0f + 1e-6f) << "value " << i << ": " << map.rgb[i] << " samples";
+  }
+  EXPECT_EQ(fewest, 4.0f) << "some pixels stop at min_spp";
+  EXPECT_EQ(most, 64.0f) << "some pixels run to spp";
 }
 
 }  // namespace

@@ -59,9 +59,9 @@ SceneBundle decode_scene_bundle(const BundleFile& file, const std::string& path)
   if (!admissible(rs.noise_threshold) || !admissible(rs.target_error))
     throw InputError(path + ": the bundle's render settings: noise_threshold " + std::to_string(rs.noise_threshold) +
                      ", target_error " + std::to_string(rs.target_error) + ": expected 0 (off) or from above 0 to 1e6");
-  if (adaptive_render(rs) && (rs.min_spp < 2 || rs.min_spp > rs.spp))
+  if (adaptive_render(rs) && rs.min_spp < 2)  // above spp is the loader's default for spp < 16: min(min_spp, spp)
     throw InputError(path + ": the bundle's render settings: min_spp " + std::to_string(rs.min_spp) +
-                     ": an adaptive render needs from 2 to spp (" + std::to_string(rs.spp) + ")");
+                     ": an adaptive render estimates its error from two halves: at least 2");
   if (adaptive_render(rs) && (b.range.begin != 0 || b.range.end != rs.spp))
     throw InputError(path + ": an adaptive render (noise_threshold, target_error) is rendered whole, not samples [" +
                      std::to_string(b.range.begin) + ", " + std::to_string(b.range.end) + ")");

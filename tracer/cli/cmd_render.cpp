@@ -139,7 +139,13 @@ static int run_render(const RenderCommand& cmd) {
     outputs.add(output, encode_partial(part));
   } else if (adaptive) {
     add_image(outputs, resolve_adaptive(adaptive_film), output);
-    if (!cmd.sample_map.empty()) add_image(outputs, adaptive_sample_map(adaptive_film), cmd.sample_map);
+    if (!cmd.sample_map.empty()) {
+      Image map = adaptive_sample_map(adaptive_film);
+      // An 8-bit image holds [0, 1]: there each count is its fraction of spp (spp is white).
+      if (!is_float_format(cmd.sample_map))
+        for (float& v : map.rgb) v /= static_cast<float>(rs.spp);
+      add_image(outputs, map, cmd.sample_map);
+    }
   } else {
     add_image(outputs, resolve_film(part.film, rs.spp), output);
   }
@@ -220,20 +226,20 @@ static int run_render(const RenderCommand& cmd) {
   return 0;
 }
 
-const RegisterCommand kRenderCommand({"", "render", "render a scene to an image", [](CLI::App& app) {
-                                        auto cmd = std::make_shared<RenderCommand>();
-                                        add_scene_options(app, *cmd);
-                                        app.add_option(
-                                            "-o,--output", cmd->output,
-                                            "output image (.exr linear float, .png sRGB, ...); default SCENE.png");
-                                        add_threads_option(app, cmd->threads);
-                                        app.add_option("--device", cmd->device, "cpu or cuda");
-                                        app.add_option("--stats", cmd->stats, "write timings and ray counts as JSON");
-                                        app.add_option(
-                                            "--sample-map", cmd->sample_map,
-                                            "adaptive sampling: write each pixel's sample count as an image");
-                                        app.add_flag("--quiet", cmd->quiet, "no progress bar or summary");
-                                        return [cmd] { return run_render(*cmd); };
-                                      }});
+const RegisterCommand kRenderCommand(
+    {"", "render", "render a scene to an image", [](CLI::App& app) {
+       auto cmd = std::make_shared<RenderCommand>();
+       add_scene_options(app, *cmd);
+       app.add_option("-o,--output", cmd->output,
+                      "output image (.exr linear float, .png sRGB, ...); default SCENE.png");
+       add_threads_option(app, cmd->threads);
+       app.add_option("--device", cmd->device, "cpu or cuda");
+       app.add_option("--stats", cmd->stats, "write timings and ray counts as JSON");
+       app.add_option("--sample-map", cmd->sample_map,
+                      "adaptive sampling: write each pixel's sample count as an image (.exr: the counts; "
+                      ".png: count / spp, sRGB-encoded, spp white)");
+       app.add_flag("--quiet", cmd->quiet, "no progress bar or summary");
+       return [cmd] { return run_render(*cmd); };
+     }});
 
 }  // namespace tracer
