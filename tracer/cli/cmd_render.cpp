@@ -46,8 +46,9 @@ void check_output_path(const std::string& path, bool partial) {
 }
 
 // The output and the stats file may name no file the render reads, nor each other.
-void refuse_overwriting_inputs(const Scene& scene, const std::string& output, const std::string& stats) {
-  refuse_outputs_naming_inputs({{output, "-o"}, {stats, "--stats"}}, scene.files_read());
+void refuse_overwriting_inputs(const Scene& scene, const std::string& output, const RenderCommand& cmd) {
+  refuse_outputs_naming_inputs({{output, "-o"}, {cmd.stats, "--stats"}, {cmd.sample_map, "--sample-map"}},
+                               scene.files_read());
 }
 
 // What makes two partial files parts of one render: every option its identity records.
@@ -86,7 +87,7 @@ static int run_render(const RenderCommand& cmd) {
   const std::string scene_text = read_text_file(cmd.scene, "scene file");
   const Scene scene = load_scene_text(scene_text, cmd.scene, overrides);  // loading includes the BVH build
   const double load_build_s = seconds_since(t_load);
-  refuse_overwriting_inputs(scene, output, cmd.stats);
+  refuse_overwriting_inputs(scene, output, cmd);
   const double build_s = scene.report.build_seconds;
 
   const RenderSettings& rs = scene.settings;
@@ -97,11 +98,7 @@ static int run_render(const RenderCommand& cmd) {
                      "from all of them, so it cannot be split into sample ranges; render it whole");
   if (!cmd.sample_map.empty() && !adaptive)
     throw InputError(cmd.scene + ": --sample-map: only an adaptive render (noise_threshold, target_error) has one");
-  if (!cmd.sample_map.empty()) {
-    check_image_output(cmd.sample_map, "--sample-map");
-    refuse_outputs_naming_inputs({{output, "-o"}, {cmd.stats, "--stats"}, {cmd.sample_map, "--sample-map"}},
-                                 scene.files_read());
-  }
+  if (!cmd.sample_map.empty()) check_image_output(cmd.sample_map, "--sample-map");
   const SampleRange range = partial ? parse_sample_range(cmd.samples, rs.spp) : SampleRange{0, rs.spp};
   AdaptiveFilm adaptive_film;
   RenderStats stats;
