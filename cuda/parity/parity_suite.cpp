@@ -3,7 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "bundle/sha1.h"
+#include "io/sha1.h"
 #include "lbvh_gpu.h"
 #include "parallel_for.h"
 #include "parity_gpu.h"

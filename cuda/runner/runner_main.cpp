@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "bundle/scene_bundle.h"
-#include "bundle/sha1.h"
+#include "io/sha1.h"
 #include "cpu_adaptive.h"
 #include "cpu_film.h"
 #include "gpu_adaptive.h"

@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "bundle/scene_bundle.h"
-#include "bundle/sha1.h"
+#include "io/sha1.h"
 #include "image/image_io.h"
 #include "scene/scene_loader.h"
 #include "test_util.h"

@@ -3,7 +3,7 @@
 #include "io/out_of_memory.h"
 #include "io/output_batch.h"
 #include "io/text_file.h"
-#include "sha1.h"
+#include "io/sha1.h"
 
 namespace tracer {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "bundle_file.h"
-#include "render/film_buffer.h"
+#include "kernel/base/sample_range.h"
 #include "scene/scene_arrays.h"
 
 namespace tracer {

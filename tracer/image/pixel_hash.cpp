@@ -1,6 +1,6 @@
 #include "image/pixel_hash.h"
 
-#include "bundle/sha1.h"
+#include "io/sha1.h"
 
 namespace tracer {
 

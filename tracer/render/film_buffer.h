@@ -5,12 +5,9 @@
 
 #include "image/image.h"
 #include "kernel/base/film.h"
+#include "kernel/base/sample_range.h"
 
 namespace tracer {
-
-struct SampleRange {
-  uint32_t begin = 0, end = 0;  // samples [begin, end) of every pixel
-};
 
 struct FilmBuffer {
   uint32_t width = 0, height = 0;

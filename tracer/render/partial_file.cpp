@@ -2,7 +2,7 @@
 
 #include <cstring>
 
-#include "bundle/sha1.h"
+#include "io/sha1.h"
 #include "io/input_error.h"
 #include "io/out_of_memory.h"
 #include "io/text_file.h"
