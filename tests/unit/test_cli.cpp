@@ -123,6 +123,20 @@ TEST_P(CliBadInput, ExitsWithCode2NamesTheKeyAndWritesNothing) {
 INSTANTIATE_TEST_SUITE_P(AllBadInputs, CliBadInput, ::testing::ValuesIn(bad_inputs()),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// `tracer --version` names the build: version, the commit of the source tree (as git
+// says, when it can), the compiler, the CPU kernels compiled in and whether CUDA was built.
+TEST(Cli, VersionNamesTheBuild) {
+  std::string out;
+  ASSERT_EQ(test::run_tracer("--version", &out), 0) << out;
+  for (const char* line : {"tracer 0.", "\ncommit: ", "\ncompiler: ", "\nCPU kernels: x86-64/generic",
+                           "\nthis CPU runs: x86-64", "\nCUDA renderer: "})
+    EXPECT_NE(out.find(line), std::string::npos) << line << " missing:\n" << out;
+  std::string head;
+  if (test::run_command("git -C " + test::source_path("") + " rev-parse --short=12 HEAD 2>/dev/null", &head) == 0 &&
+      head.size() >= 12)
+    EXPECT_NE(out.find("commit: " + head.substr(0, 12)), std::string::npos) << out;
+}
+
 TEST(Cli, RenderWritesImageAndStats) {
   const auto dir = test::temp_dir("cli-render");
   std::ofstream(dir / "s.json") << kGoodScene;

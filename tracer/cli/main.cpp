@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cli/command_registry.h"
+#include "cli/version_text.h"
 
 namespace tracer {
 
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
   using namespace tracer;
   CLI::App app{"tracer: a deterministic ray tracer"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", [] { return version_text(); });
   const std::map<std::string, std::string> group_help = {
       {"golden", "golden-image regression checks (docs/golden.md)"},
       {"bench", "benchmarks: speed against a baseline measured in the same run"},
