@@ -17,6 +17,21 @@ std::string chromium(const std::filesystem::path& profile) {
          profile.string() + " --virtual-time-budget=10000 ";
 }
 
+// One failing check with --report leaves a page that exists and shows it, as it says.
+TEST(GoldenReport, ACheckAloneLeavesTheReportItNames) {
+  const test::GoldenSandbox box("report-one");
+  box.move_ball();
+  const auto report = box.root / "report";
+  std::string output;
+  ASSERT_EQ(test::run_tracer(box.check_args("ball", report.string()), &output), 1) << output;
+  const std::string index = (std::filesystem::absolute(report) / "index.html").string();
+  EXPECT_NE(output.find("report: " + index), std::string::npos) << output;
+  ASSERT_TRUE(std::filesystem::exists(index)) << output;
+  const std::string page = test::read_file(index);
+  EXPECT_NE(page.find("<tr class=\"fail\" id=\"ball\">"), std::string::npos) << page;
+  EXPECT_NE(page.find("1 differ"), std::string::npos) << page;
+}
+
 TEST(GoldenReport, OpensInHeadlessChromiumWithEveryImage) {
   if (test::run_command("command -v chromium") != 0)
     GTEST_SKIP() << "chromium is not installed; ci/install-deps.sh installs it";

@@ -64,7 +64,10 @@ static int run_golden_check(const GoldenCheckCommand& cmd) {
   } catch (const InputError& e) {
     outcome = golden_error(entry, e.what());
   }
-  if (!cmd.report.empty()) write_report_row(cmd.report, manifest, entry, render ? &*render : nullptr, outcome);
+  if (!cmd.report.empty()) {  // the row, and the page of every row so far: the report opens after any check
+    write_report_row(cmd.report, manifest, entry, render ? &*render : nullptr, outcome);
+    assemble_report(cmd.report);
+  }
   const char* verdicts[] = {"PASS", "FAIL", "ERROR", "SKIPPED"};
   const char* verdict = verdicts[static_cast<int>(outcome.status)];
   // The verdict goes to stdout, except an error, which goes to stderr as every command's errors do.
