@@ -1,7 +1,8 @@
 // The HTML report opens as a page in a real browser: headless Chromium (Debian's
 // `chromium`, installed by ci/install-deps.sh) loads a report with one failing and one
 // passing golden, every image in it loads, the failing row comes first with its update
-// command, and a screenshot of the page is a picture rather than a blank canvas.
+// command and a flip view at a whole-pixel zoom that shows the reference when asked, and a screenshot of the page is a
+// picture rather than a blank canvas.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -60,6 +61,24 @@ TEST(GoldenReport, OpensInHeadlessChromiumWithEveryImage) {
     EXPECT_NE(ball_html.find(std::string("<img src=\"") + img), std::string::npos) << img;
   EXPECT_NE(ball_html.find("golden update --filter '^ball$'"), std::string::npos) << ball_html;
   EXPECT_NE(ball_html.find("PSNR"), std::string::npos);
+
+  // The flip view: the new image at a whole-pixel zoom (24 pixels wide: x21, 504 px), the
+  // reference once shown (here through the page's #show=reference, which pins it as a click does).
+  const size_t flip = ball_html.find("<img class=\"flip\"");
+  ASSERT_NE(flip, std::string::npos) << ball_html;
+  const std::string flip_html = ball_html.substr(flip, ball_html.find('>', flip) - flip);
+  for (const char* attribute : {"src=\"ball/new.png\"", "data-showing=\"new\"", "data-zoom=\"21\"", "width: 504px"})
+    EXPECT_NE(flip_html.find(attribute), std::string::npos) << attribute << " missing: " << flip_html;
+  std::string flipped;
+  ASSERT_EQ(test::run_command(
+                chromium(box.root / "profile-flip") + "--dump-dom '" + page + "#show=reference' 2>/dev/null", &flipped),
+            0)
+      << flipped;
+  const size_t flipped_at = flipped.find("<img class=\"flip\"");
+  ASSERT_NE(flipped_at, std::string::npos) << flipped;
+  const std::string flipped_html = flipped.substr(flipped_at, flipped.find('>', flipped_at) - flipped_at);
+  for (const char* attribute : {"src=\"ball/reference.png\"", "data-showing=\"reference\"", "width: 504px"})
+    EXPECT_NE(flipped_html.find(attribute), std::string::npos) << attribute << " missing: " << flipped_html;
 
   const auto shot = box.root / "screenshot.png";
   ASSERT_EQ(test::run_command(chromium(box.root / "profile-shot") +

@@ -81,6 +81,19 @@ std::string image_cell(const Json& row, const char* key, const std::string& capt
          caption + "</div></td>";
 }
 
+// The view image-diff tools have: one image that shows the new image and, while the pointer
+// is over it (or after a click, until the next), the reference, at a whole-pixel zoom.
+std::string flip_cell(const Json& row) {
+  const Json& images = row["images"];
+  if (!images.contains("new") || !images.contains("reference")) return "";
+  const std::string fresh = html_escape(images["new"].get<std::string>()),
+                    reference = html_escape(images["reference"].get<std::string>());
+  return "<td class=\"image flip\"><img class=\"flip\" src=\"" + fresh + "\" data-new=\"" + fresh +
+         "\" data-reference=\"" + reference +
+         "\" data-showing=\"new\" alt=\"new, reference on hover or click\"><div>flip: new; hover or click for the "
+         "reference</div></td>";
+}
+
 std::string row_html(const Json& row) {
   const std::string status = row["status"].get<std::string>();
   std::ostringstream s;
@@ -89,12 +102,12 @@ std::string row_html(const Json& row) {
     << status << "</span><br><small>" << html_escape(row["scene"].get<std::string>()) << "<br>"
     << html_escape(row["options"].get<std::string>()) << "</small></td>";
   if (status == "pass" || status == "skipped") {
-    s << "<td colspan=\"4\" class=\"message\">" << html_escape(row["message"].get<std::string>());
+    s << "<td colspan=\"5\" class=\"message\">" << html_escape(row["message"].get<std::string>());
     if (status == "pass") s << " in " << row["seconds"].get<double>() << " s";
     s << "</td>";
   } else {
     const double scale = row["amplification"].get<double>();
-    s << image_cell(row, "new", "new") << image_cell(row, "reference", "reference")
+    s << flip_cell(row) << image_cell(row, "new", "new") << image_cell(row, "reference", "reference")
       << image_cell(row, "difference", scale > 0 ? "difference &times; " + format_scale(scale) : "difference")
       << "<td class=\"message\"><p>" << html_escape(row["message"].get<std::string>()) << "</p>" << metric_cell(row);
     if (status == "fail")
@@ -113,18 +126,36 @@ tr.fail .badge,tr.error .badge{background:#c62828;color:#fff}tr.pass .badge{back
 tr.skipped .badge{background:#757575;color:#fff}
 .badge{padding:0 .4em;border-radius:.3em;text-transform:uppercase;font-size:.8em}
 td.image img{width:256px;image-rendering:pixelated;border:1px solid #999;background:#000}
+td.image img.flip{width:auto;cursor:pointer}
 td.image div{font-size:.8em;color:#555}td.message{font-size:.9em}
 table.metrics th{text-align:left;font-weight:normal;color:#555;padding-right:1em}
 pre{background:#eee;padding:.4em;white-space:pre-wrap;word-break:break-all}
 #broken{color:#c62828;font-weight:bold})";
 
 // Marks the page with the number of images that failed to load, for people and for the
-// headless-browser test that opens the report.
+// headless-browser test that opens the report. Sizes each flip view to the largest whole
+// multiple of its image's width up to 512 pixels (nearest-neighbour, so pixels stay square
+// blocks) and wires it: the reference while the pointer is over it, a click pins the other
+// image; index.html#show=reference opens every flip view on its reference.
 constexpr const char* kScript = R"(<script>
+function showFlip(img, which) {
+  img.setAttribute('data-showing', which);
+  img.src = img.getAttribute(which === 'reference' ? 'data-reference' : 'data-new');
+}
 window.addEventListener('load', function () {
   var broken = Array.prototype.filter.call(document.images, function (i) { return !i.complete || i.naturalWidth === 0; });
   document.body.setAttribute('data-broken-images', String(broken.length));
   if (broken.length) { var p = document.getElementById('broken'); p.hidden = false; p.textContent = broken.length + ' image(s) failed to load'; }
+  Array.prototype.forEach.call(document.querySelectorAll('img.flip'), function (img) {
+    var zoom = Math.max(1, Math.floor(512 / img.naturalWidth));
+    img.style.width = (img.naturalWidth * zoom) + 'px';
+    img.setAttribute('data-zoom', String(zoom));
+    var pinned = 'new';
+    img.addEventListener('mouseenter', function () { showFlip(img, pinned === 'new' ? 'reference' : 'new'); });
+    img.addEventListener('mouseleave', function () { showFlip(img, pinned); });
+    img.addEventListener('click', function () { pinned = pinned === 'new' ? 'reference' : 'new'; showFlip(img, pinned); });
+    if (location.hash === '#show=reference') { pinned = 'reference'; showFlip(img, 'reference'); }
+  });
 });
 </script>)";
 
