@@ -1,29 +1,23 @@
-// A plain three-component float vector for kernel code. Every operation is one IEEE
-// operation per component, so results match bit for bit on the host and on CUDA.
+// The kernel's three-component float vector is GLM's glm::vec3 (host and CUDA: GLM marks its
+// functions __host__ __device__ under nvcc). Its operators are one IEEE operation per
+// component, and glm::dot and glm::cross round as the project's own did ((x*x + y*y) + z*z;
+// each component a difference of two products), so results match bit for bit on the host and
+// on CUDA. Where GLM's formula rounds differently or has other NaN semantics the project keeps
+// its own function: length and normalize (GLM's normalize multiplies by inversesqrt, a
+// reciprocal and a multiply; ours divides by det_sqrt) and min_of/max_of (the GPU's min/max
+// rules, platform.h).
 #pragma once
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+
 #include "kernel/base/platform.h"
 
 namespace tracer {
 
-struct Vec3 {
-  float x, y, z;
-  TRACER_HD float operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
-  TRACER_HD float& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
-};
+using Vec3 = glm::vec3;
 
-TRACER_HD Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-TRACER_HD Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-TRACER_HD Vec3 operator-(Vec3 a) { return {-a.x, -a.y, -a.z}; }
-TRACER_HD Vec3 operator*(Vec3 a, Vec3 b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
-TRACER_HD Vec3 operator*(Vec3 a, float s) { return {a.x * s, a.y * s, a.z * s}; }
-TRACER_HD Vec3 operator*(float s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
-TRACER_HD Vec3 operator/(Vec3 a, float s) { return {a.x / s, a.y / s, a.z / s}; }
-TRACER_HD Vec3& operator+=(Vec3& a, Vec3 b) { return a = a + b; }
-TRACER_HD Vec3& operator*=(Vec3& a, Vec3 b) { return a = a * b; }
-TRACER_HD bool operator==(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
-
-TRACER_HD float dot(Vec3 a, Vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-TRACER_HD Vec3 cross(Vec3 a, Vec3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+TRACER_HD float dot(Vec3 a, Vec3 b) { return glm::dot(a, b); }
+TRACER_HD Vec3 cross(Vec3 a, Vec3 b) { return glm::cross(a, b); }
 TRACER_HD float length(Vec3 a) { return det_sqrt(dot(a, a)); }
 TRACER_HD Vec3 normalize(Vec3 a) { return a / length(a); }
 TRACER_HD Vec3 min_of(Vec3 a, Vec3 b) { return {min_of(a.x, b.x), min_of(a.y, b.y), min_of(a.z, b.z)}; }
