@@ -1,17 +1,18 @@
 #include "scene/transform.h"
 
+#include <glm/gtc/matrix_access.hpp>
+#include <glm/matrix.hpp>
+
 #include "kernel/base/detmath.h"
 
 namespace tracer {
 
-Vec3 Transform::vector(Vec3 v) const {
-  return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z, m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
-          m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z};
-}
+Vec3 Transform::vector(Vec3 v) const { return m * v; }  // each row's products summed left to right
 
 Vec3 Transform::normal(Vec3 n) const {
-  // cofactor matrix = det * inverse transpose; dividing by |det| keeps the orientation
-  const Vec3 r0 = {m[0][0], m[0][1], m[0][2]}, r1 = {m[1][0], m[1][1], m[1][2]}, r2 = {m[2][0], m[2][1], m[2][2]};
+  // cofactor matrix = det * inverse transpose; dividing by |det| keeps the orientation (our
+  // own: glm::inverseTranspose divides each entry by the determinant, which rounds otherwise)
+  const Vec3 r0 = glm::row(m, 0), r1 = glm::row(m, 1), r2 = glm::row(m, 2);
   const Vec3 c0 = cross(r1, r2), c1 = cross(r2, r0), c2 = cross(r0, r1);
   const float det = dot(r0, c0);
   const Vec3 out = c0 * n.x + c1 * n.y + c2 * n.z;
@@ -20,8 +21,7 @@ Vec3 Transform::normal(Vec3 n) const {
 
 Transform Transform::then(const Transform& next) const {
   Transform r;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) r.m[i][j] = next.m[i][0] * m[0][j] + next.m[i][1] * m[1][j] + next.m[i][2] * m[2][j];
+  r.m = next.m * m;
   r.t = next.point(t);
   r.uniform_scale = uniform_scale && next.uniform_scale;
   r.scale = scale * next.scale;
@@ -36,9 +36,7 @@ Transform Transform::translation(Vec3 d) {
 
 Transform Transform::scaling(Vec3 s) {
   Transform r;
-  r.m[0][0] = s.x;
-  r.m[1][1] = s.y;
-  r.m[2][2] = s.z;
+  r.m = glm::mat3(glm::vec3(s.x, 0.0f, 0.0f), glm::vec3(0.0f, s.y, 0.0f), glm::vec3(0.0f, 0.0f, s.z));
   r.uniform_scale = s.x == s.y && s.y == s.z;
   r.scale = abs_of(s.x);
   return r;
@@ -48,16 +46,12 @@ Transform Transform::rotation(Vec3 axis, float degrees) {
   const Vec3 k = normalize(axis);
   const float rad = degrees * (kPi / 180.0f);
   const float c = det_cos(rad), s = det_sin(rad), one_c = 1.0f - c;
+  // Our own, not glm::rotate: its sin and cos are the machine's libm.
   Transform r;
-  r.m[0][0] = c + k.x * k.x * one_c;
-  r.m[0][1] = k.x * k.y * one_c - k.z * s;
-  r.m[0][2] = k.x * k.z * one_c + k.y * s;
-  r.m[1][0] = k.y * k.x * one_c + k.z * s;
-  r.m[1][1] = c + k.y * k.y * one_c;
-  r.m[1][2] = k.y * k.z * one_c - k.x * s;
-  r.m[2][0] = k.z * k.x * one_c - k.y * s;
-  r.m[2][1] = k.z * k.y * one_c + k.x * s;
-  r.m[2][2] = c + k.z * k.z * one_c;
+  const glm::vec3 row0(c + k.x * k.x * one_c, k.x * k.y * one_c - k.z * s, k.x * k.z * one_c + k.y * s);
+  const glm::vec3 row1(k.y * k.x * one_c + k.z * s, c + k.y * k.y * one_c, k.y * k.z * one_c - k.x * s);
+  const glm::vec3 row2(k.z * k.x * one_c - k.y * s, k.z * k.y * one_c + k.x * s, c + k.z * k.z * one_c);
+  r.m = glm::transpose(glm::mat3(row0, row1, row2));  // columns given as rows, then transposed
   return r;
 }
 

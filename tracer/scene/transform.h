@@ -2,12 +2,14 @@
 // the order listed and baked into the geometry at load time. Rotations use the
 // deterministic sin/cos, so goldens do not depend on the machine's libm.
 #pragma once
+#include <glm/mat3x3.hpp>
+
 #include "kernel/base/vec3.h"
 
 namespace tracer {
 
 struct Transform {
-  float m[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  glm::mat3 m = glm::mat3(1.0f);  // GLM's column-major: m[column][row]
   Vec3 t = {0, 0, 0};
   bool uniform_scale = true;  // false once a non-uniform scale was applied
   float scale = 1.0f;         // the product of uniform scale factors
