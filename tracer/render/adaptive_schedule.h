@@ -37,13 +37,16 @@ AdaptiveFilm schedule_adaptive(const RenderSettings& rs, Backend& backend,
   const uint64_t total = static_cast<uint64_t>(n) * rs.spp;
   uint64_t settled = 0;
   uint32_t begin = 0;
+  bool sums_read = false;  // the film's sums are the backend's (a GPU backend downloads them)
   for (const uint32_t checkpoint : adaptive_checkpoints(rs.min_spp, rs.spp)) {
     backend.render(film, running, begin, checkpoint, settled);
+    sums_read = false;
     settled += static_cast<uint64_t>(running.size()) * (checkpoint - begin);
     for (const uint32_t p : running) film.samples[p] = checkpoint;
     bool image_done = false;
     if (rs.target_error > 0.0f) {
       backend.read_sums(film);
+      sums_read = true;
       film.image_error = image_relative_error(film);
       image_done = film.image_error < static_cast<double>(rs.target_error);
     }
@@ -62,7 +65,7 @@ AdaptiveFilm schedule_adaptive(const RenderSettings& rs, Backend& backend,
     if (progress) progress(settled, total);
     if (running.empty()) break;
   }
-  backend.read_sums(film);
+  if (!sums_read) backend.read_sums(film);
   if (progress) progress(total, total);
   return film;
 }
