@@ -7,8 +7,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <glm/geometric.hpp>  // GLM (the kernel's Vec3) at global scope; GLM_FORCE_INLINE keeps each
-#include <glm/vec3.hpp>       // variant's uses inside its own instruction set (CMakeLists.txt)
+#include <glm/geometric.hpp>  // GLM (the kernel's Vec3 and frames) at global scope; GLM_FORCE_INLINE
+#include <glm/mat3x3.hpp>     // keeps each variant's uses inside its own instruction set
+#include <glm/vec3.hpp>       // (CMakeLists.txt)
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif

@@ -2,6 +2,8 @@
 
 namespace tracer {
 
+// The basis of glm::lookAt (w opposite the view, u = up x w, v = w x u), built here: lookAt
+// normalizes through inversesqrt (a reciprocal and a multiply) where ours divides by the length.
 Camera make_camera(const CameraSpec& spec, uint32_t width, uint32_t height) {
   const Vec3 w = normalize(spec.from - spec.to);  // camera looks along -w
   const Vec3 u = normalize(cross(spec.up, w));

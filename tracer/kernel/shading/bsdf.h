@@ -28,7 +28,8 @@ struct BsdfSample {
   bool specular;
 };
 
-TRACER_HD float luminance(Vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+// Rec. 709 luminance weights.
+TRACER_HD float luminance(Vec3 c) { return dot(Vec3{0.2126f, 0.7152f, 0.0722f}, c); }
 
 TRACER_HD float metal_exponent(float roughness) { return 2.0f / (roughness * roughness) - 2.0f; }
 

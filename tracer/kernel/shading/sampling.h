@@ -1,16 +1,19 @@
 // Warps of uniform numbers in [0,1)^2 to directions and points, with their densities.
 // Each is checked by a chi-square goodness-of-fit test (tests/analytic/test_sampling_chi2.cpp).
 #pragma once
+#include <glm/mat3x3.hpp>
+
 #include "kernel/base/detmath.h"
 #include "kernel/base/vec3.h"
 
 namespace tracer {
 
 // An orthonormal frame around unit n (Duff et al., "Building an Orthonormal Basis,
-// Revisited", JCGT 2017), branch-free but for the sign.
+// Revisited", JCGT 2017), branch-free but for the sign. to_world is the matrix with columns
+// t, b, n times v (GLM sums (t v.x + b v.y) + n v.z per component).
 struct Frame {
   Vec3 t, b, n;
-  TRACER_HD Vec3 to_world(Vec3 v) const { return t * v.x + b * v.y + n * v.z; }
+  TRACER_HD Vec3 to_world(Vec3 v) const { return glm::mat3(t, b, n) * v; }
 };
 
 TRACER_HD Frame frame_around(Vec3 n) {

@@ -142,7 +142,7 @@ TRACER_HD Material material_at(const SceneView& scene, Surface& s) {
     local = {-0.5f * hu, -0.5f * hv, 1.0f};
   }
   if (local.x == 0.0f && local.y == 0.0f && local.z > 0.0f) return m;
-  const Vec3 n = t * local.x + b * local.y + s.ns * local.z;
+  const Vec3 n = glm::mat3(t, b, s.ns) * local;  // tangent space to world
   const float len = length(n);
   if (len > 0.0f && dot(n, s.ng) * dot(s.ns, s.ng) > 0.0f) s.ns = n / len;  // stays on the shading side
   return m;
