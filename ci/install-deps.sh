@@ -1,23 +1,33 @@
 #!/usr/bin/env bash
-# Installs every Debian 12 package the build and the tests need. Idempotent: when all
-# packages are present it changes nothing and does not touch the network. Run as root.
+# Installs the Debian 12 packages the project needs. Idempotent: when all are present it
+# changes nothing and does not touch the network. Run as root.
+#   bash ci/install-deps.sh build   what building and running the renderer needs (ci/quickstart.sh)
+#   bash ci/install-deps.sh         that, and what the tests and the extra CI jobs need (ci/test.sh)
 set -euo pipefail
-packages=(
+build_packages=(
   cmake g++ make
-  libopenimageio-dev openimageio-tools   # image I/O and comparison (iv, idiff, oiiotool)
+  libopenimageio-dev                      # image I/O and comparison
   libtinyobjloader-dev                    # OBJ meshes
-  libglm-dev                              # vector maths on the host side
+  libglm-dev                              # the kernel's vectors and matrices
   nlohmann-json3-dev                      # scene files
   libcli11-dev                            # the command line
-  libgtest-dev                            # the test suite
+  libgtest-dev                            # the test suite (configuring the build asks for it)
+  git                                     # the commit `tracer --version` names; golden update's check for uncommitted edits
+)
+test_packages=(
+  openimageio-tools                       # iv, idiff, oiiotool (docs and by hand)
   chromium                                # opens the golden report headless in a test
-  git                                     # golden update's check for uncommitted edits
   strace                                  # stops a command at its Nth rename with a signal (commit tests)
   python3                                 # ci/mutation.py, the mutation campaign
   fonts-dejavu-core                       # the font of the bench converge plot
   libembree-dev                           # the Embree row of bench rays (benchmark only)
   clang libomp-dev libclang-rt-14-dev     # the second compiler, its OpenMP runtime, libFuzzer and sanitizers (ci/extra.sh)
 )
+case "${1:-all}" in
+  build) packages=("${build_packages[@]}") ;;
+  all) packages=("${build_packages[@]}" "${test_packages[@]}") ;;
+  *) echo "usage: ci/install-deps.sh [build|all]" >&2; exit 2 ;;
+esac
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

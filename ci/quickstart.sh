@@ -3,6 +3,6 @@
 # builds those), and render the default scene.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash ci/install-deps.sh
+bash ci/install-deps.sh build
 bash ci/build.sh --target tracer
 ./build/tracer render scenes/cornell-box.json -o build/cornell-box.png
