@@ -6,7 +6,7 @@
 set -euo pipefail
 build_packages=(
   cmake g++ make
-  libopenimageio-dev                      # image I/O and comparison
+  libopenimageio-dev openimageio-tools    # image I/O and comparison (OIIO's CMake package names the tools)
   libtinyobjloader-dev                    # OBJ meshes
   libglm-dev                              # the kernel's vectors and matrices
   nlohmann-json3-dev                      # scene files
@@ -15,7 +15,6 @@ build_packages=(
   git                                     # the commit `tracer --version` names; golden update's check for uncommitted edits
 )
 test_packages=(
-  openimageio-tools                       # iv, idiff, oiiotool (docs and by hand)
   chromium                                # opens the golden report headless in a test
   strace                                  # stops a command at its Nth rename with a signal (commit tests)
   python3                                 # ci/mutation.py, the mutation campaign
