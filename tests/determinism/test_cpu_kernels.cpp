@@ -13,19 +13,13 @@
 #include "render/render_adaptive.h"
 #include "render/render_cpu.h"
 #include "scene/scene_loader.h"
+#include "cpu_variants.h"
 #include "test_util.h"
 
 namespace tracer {
 namespace {
 
-// Every variant this CPU runs that may render a scene using `features`.
-std::vector<const CpuKernelVariant*> variants_for(uint32_t features) {
-  std::vector<const CpuKernelVariant*> list;
-  for (const CpuKernelVariant* generic : cpu_kernels_per_isa(features, true))
-    for (const CpuKernelVariant* v : cpu_kernel_variants())
-      if (v->isa == std::string(generic->isa) && (v->features & features) == features) list.push_back(v);
-  return list;
-}
+using test::variants_for;
 
 TEST(CpuKernels, TheBuildHasAGenericBaselineAndTheChoiceHoldsTheScene) {
   const std::vector<const CpuKernelVariant*> per_isa = cpu_kernels_per_isa(0u, true);

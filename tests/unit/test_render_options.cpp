@@ -42,7 +42,9 @@ nlohmann::json changed_options() {
           {"effects", "shadows,reflections"},
           {"noise_threshold", 0.25},  // exact in float, so the JSON round trip is exact
           {"min_spp", 2},
-          {"target_error", 0.5}};
+          {"target_error", 0.5},
+          {"schedule", "stream"},
+          {"stream_width", 1000}};
 }
 
 TEST(RenderOptions, EveryOptionIsCoveredByThisTest) {
@@ -114,6 +116,10 @@ TEST(RenderOptions, RecordedWhenTheyDecideThePixels) {
   EXPECT_TRUE(p.nee && p.rr_depth && p.grid_resolution);
   EXPECT_FALSE(p.sky_sampling);
   EXPECT_TRUE(recorded_options(path, BackgroundKind::Cubemap).sky_sampling);
+  path.schedule = Schedule::Stream;  // how the pixels are computed, not what they are
+  path.stream_width = 7;
+  const RenderOptions s = recorded_options(path, BackgroundKind::Constant);
+  EXPECT_FALSE(s.schedule || s.stream_width);
 }
 
 // Command-line numbers are decimal digits that fit; anything else names the flag.

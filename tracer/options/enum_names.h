@@ -40,6 +40,11 @@ struct EnumNames<Switch> {
   static constexpr const char* names[] = {"off", "on"};
 };
 template <>
+struct EnumNames<Schedule> {
+  static constexpr const char* kind = "schedule";
+  static constexpr const char* names[] = {"megakernel", "stream"};
+};
+template <>
 struct EnumNames<BackgroundKind> {
   static constexpr const char* kind = "background";
   static constexpr const char* names[] = {"constant", "gradient", "cubemap"};

@@ -167,6 +167,7 @@ RenderOptions recorded_options(const RenderSettings& settings, BackgroundKind ba
       case Record::PathTracer: return path;
       case Record::PathTracerUnderCubemap: return path && background == BackgroundKind::Cubemap;
       case Record::UnlessDefault: return !at_default;
+      case Record::Never: return false;
     }
     return true;
   };

@@ -27,7 +27,7 @@ struct CpuKernelVariant {
   const char* isa;          // "x86-64", "avx2", "avx512" or "native"
   const char* feature_set;  // "generic" or a set of TRACER_CPU_FEATURE_SETS
   uint32_t features;        // the FeatureBit mask compiled in
-  size_t view_bytes, ray_bytes, hit_bytes, film_sum_bytes;
+  size_t view_bytes, ray_bytes, hit_bytes, film_sum_bytes, stream_states_bytes, whitted_vertex_bytes;
   // Pixels [x0, x1) x [y0, y1), samples [begin, end), into film (row-major, `width` wide).
   void (*render_tile)(const SceneView& view, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1, uint32_t begin,
                       uint32_t end, FilmSum* film, RayCounts& counts);
@@ -38,6 +38,10 @@ struct CpuKernelVariant {
   // trace_closest over t in (0, tmax[i]] (hits), or trace_any (occluded), for every ray.
   void (*trace_closest)(const SceneView& view, const Ray* rays, const float* tmax, size_t count, Hit* hits);
   void (*trace_any)(const SceneView& view, const Ray* rays, const float* tmax, size_t count, uint8_t* occluded);
+  // The stream schedule's `stage` (kernel/integrator/stream.h's StreamStage) for the states
+  // queue[begin, end) of `states` (a StreamStates).
+  void (*stream_stage)(const SceneView& view, uint32_t stage, const void* states, const uint32_t* queue, size_t begin,
+                       size_t end, RayCounts& counts);
 };
 
 // Every variant in this binary.

@@ -6,6 +6,7 @@
 #include "io/input_error.h"
 #include "kernel/accel/trace.h"
 #include "kernel/base/film.h"
+#include "kernel/integrator/stream.h"
 #include "render/cpu_kernel.h"
 
 namespace tracer {
@@ -56,7 +57,8 @@ const std::vector<const CpuKernelVariant*>& cpu_kernel_variants() {
     };
     for (const CpuKernelVariant* v : list)
       if (v->view_bytes != sizeof(SceneView) || v->ray_bytes != sizeof(Ray) || v->hit_bytes != sizeof(Hit) ||
-          v->film_sum_bytes != sizeof(FilmSum))
+          v->film_sum_bytes != sizeof(FilmSum) || v->stream_states_bytes != sizeof(StreamStates) ||
+          v->whitted_vertex_bytes != sizeof(WhittedVertex))
         throw std::logic_error("CPU kernel " + cpu_kernel_name(*v) + " was compiled with other kernel types");
     return list;
   }();

@@ -19,6 +19,7 @@
 namespace TRACER_VARIANT {
 #include "kernel/accel/trace.h"
 #include "kernel/integrator/render_pixel.h"
+#include "kernel/integrator/stream.h"
 }  // namespace TRACER_VARIANT
 
 namespace {
@@ -80,16 +81,35 @@ void trace_any(const tracer::SceneView& view, const tracer::Ray* rays, const flo
   for (size_t i = 0; i < count; ++i) occluded[i] = k::trace_any(v, load<k::Ray>(rays, i), tmax[i]) ? 1 : 0;
 }
 
+void stream_stage(const tracer::SceneView& view, uint32_t stage, const void* states, const uint32_t* queue,
+                  size_t begin, size_t end, tracer::RayCounts& counts) {
+  const k::SceneView v = view_of(view);
+  const k::StreamStates st = load<k::StreamStates>(states, 0);
+  k::RayCounts c = load<k::RayCounts>(&counts, 0);
+  for (size_t q = begin; q < end; ++q) k::stream_stage(v, static_cast<k::StreamStage>(stage), st, queue[q], c);
+  store(&counts, 0, c);
+}
+
 }  // namespace
 
 namespace tracer {
 
 const CpuKernelVariant& TRACER_VARIANT() {
   using namespace k;  // the FeatureBit names in TRACER_KERNEL_FEATURES
-  static const CpuKernelVariant variant = {TRACER_VARIANT_ISA,   TRACER_VARIANT_SET, TRACER_KERNEL_FEATURES,
-                                           sizeof(k::SceneView), sizeof(k::Ray),     sizeof(k::Hit),
-                                           sizeof(k::FilmSum),   render_tile,        render_pixels_halves,
-                                           trace_closest,        trace_any};
+  static const CpuKernelVariant variant = {TRACER_VARIANT_ISA,
+                                           TRACER_VARIANT_SET,
+                                           TRACER_KERNEL_FEATURES,
+                                           sizeof(k::SceneView),
+                                           sizeof(k::Ray),
+                                           sizeof(k::Hit),
+                                           sizeof(k::FilmSum),
+                                           sizeof(k::StreamStates),
+                                           sizeof(k::WhittedVertex),
+                                           render_tile,
+                                           render_pixels_halves,
+                                           trace_closest,
+                                           trace_any,
+                                           stream_stage};
   return variant;
 }
 

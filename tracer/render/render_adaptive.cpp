@@ -7,6 +7,7 @@
 
 #include "render/adaptive_schedule.h"
 #include "render/cpu_kernel.h"
+#include "render/render_stream.h"
 
 namespace tracer {
 namespace {
@@ -20,9 +21,21 @@ struct OpenMpBackend {
   const ProgressCallback& progress;
   uint64_t total;
   uint64_t camera = 0, secondary = 0, shadow = 0;
+  StreamStats stream;
 
   void render(AdaptiveFilm& film, const std::vector<uint32_t>& running, uint32_t begin, uint32_t end,
               uint64_t settled_before) {
+    if (view.settings.schedule == Schedule::Stream) {
+      RayCounts counts{};
+      const StreamTarget target = {running.data(), running.size(),   begin,          end,
+                                   nullptr,        film.even.data(), film.odd.data()};
+      const auto batch_done = [&](uint64_t done, uint64_t) {
+        if (progress) progress(settled_before + done, total);
+      };
+      render_stream(view, variant, target, threads, counts, stream, batch_done);
+      camera += counts.camera, secondary += counts.secondary, shadow += counts.shadow;
+      return;
+    }
     const int64_t chunks = static_cast<int64_t>((running.size() + kChunk - 1) / kChunk);
     std::atomic<uint64_t> settled{settled_before};
     uint64_t c_camera = 0, c_secondary = 0, c_shadow = 0;
@@ -63,6 +76,7 @@ AdaptiveFilm render_cpu_adaptive(const Scene& scene, int threads, RenderStats& s
   stats.nonfinite_samples = adaptive_nonfinite_samples(film);
   stats.overflow_samples = adaptive_overflow_samples(film);
   stats.cpu_kernel = cpu_kernel_name(backend.variant);
+  stats.stream = backend.stream;
   return film;
 }
 

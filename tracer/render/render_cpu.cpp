@@ -6,6 +6,7 @@
 
 #include "render/cpu_kernel.h"
 #include "render/render_adaptive.h"
+#include "render/render_stream.h"
 
 namespace tracer {
 
@@ -25,6 +26,19 @@ FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, R
   std::atomic<uint64_t> tiles_done{0};
   uint64_t camera = 0, secondary = 0, shadow = 0, nonfinite = 0, overflow = 0;
   const int nthreads = threads > 0 ? threads : omp_get_max_threads();
+  stats.cpu_kernel = cpu_kernel_name(variant);
+  if (view.settings.schedule == Schedule::Stream) {
+    RayCounts counts{};
+    const StreamTarget target = {nullptr, film.pixels.size(), range.begin, range.end, film.pixels.data(), nullptr,
+                                 nullptr};
+    render_stream(view, variant, target, nthreads, counts, stats.stream, progress);
+    stats.rays = counts;
+    for (const FilmSum& sum : film.pixels) {
+      stats.nonfinite_samples += sum.nonfinite;
+      stats.overflow_samples += sum.overflow;
+    }
+    return film;
+  }
 
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : camera, secondary, shadow, nonfinite, overflow)
   for (int64_t tile = 0; tile < tile_count; ++tile) {
@@ -49,13 +63,11 @@ FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, R
   stats.rays = {camera, secondary, shadow};
   stats.nonfinite_samples = nonfinite;
   stats.overflow_samples = overflow;
-  stats.cpu_kernel = cpu_kernel_name(variant);
   return film;
 }
 
 Image render_cpu(const Scene& scene, int threads, RenderStats& stats, const ProgressCallback& progress) {
-  if (adaptive_render(scene.settings))
-    return resolve_adaptive(render_cpu_adaptive(scene, threads, stats, progress));
+  if (adaptive_render(scene.settings)) return resolve_adaptive(render_cpu_adaptive(scene, threads, stats, progress));
   const uint32_t spp = scene.settings.spp;
   return resolve_film(render_cpu_film(scene, {0, spp}, threads, stats, progress), spp);
 }

@@ -9,6 +9,7 @@
 #include "kernel/integrator/ray_counts.h"
 #include "render/cpu_kernel.h"
 #include "render/film_buffer.h"
+#include "render/render_stream.h"
 #include "scene/scene.h"
 
 namespace tracer {
@@ -18,12 +19,13 @@ struct RenderStats {
   uint64_t nonfinite_samples = 0;  // rejected by the film: a NaN or inf component
   uint64_t overflow_samples = 0;   // rejected by the film: a component, or the pixel's sum, of 2^30 or more
   std::string cpu_kernel;          // the CPU kernel variant that rendered (render/cpu_kernel.h)
+  StreamStats stream;              // the stream schedule's queues and memory (zero for the megakernel)
 };
 
 using ProgressCallback = std::function<void(uint64_t done, uint64_t total)>;
 
 // Samples `range` of every pixel. `threads` 0 uses OpenMP's default; `progress` (optional)
-// is called from one thread with the number of finished tiles and the total. `kernel`
+// is called from one thread with the number of finished tiles (stream: samples) and the total. `kernel`
 // (optional) overrides the variant chosen for the scene's features.
 FilmBuffer render_cpu_film(const Scene& scene, SampleRange range, int threads, RenderStats& stats,
                            const ProgressCallback& progress = {}, const CpuKernelVariant* kernel = nullptr);

@@ -42,6 +42,13 @@ RenderSettings read_settings(const Json* render, const Json& film, const std::st
   if ((rs.sampler == SamplerKind::Grid || rs.sampler == SamplerKind::Stratified) && !square)
     throw InputError(where("spp") + ": the " + enum_name(rs.sampler) +
                      " sampler needs a square spp (1, 4, 9, 16, ...), got " + std::to_string(rs.spp));
+  if (overrides.has("stream_width") || from_file.has("stream_width")) {
+    if (rs.schedule != Schedule::Stream)
+      throw InputError(where("stream_width") + ": stream_width is the stream schedule's; it needs schedule stream");
+    if (rs.stream_width < 1 || rs.stream_width > kMaxStreamWidth)
+      throw InputError(where("stream_width") + ": expected 1 to " + std::to_string(kMaxStreamWidth) +
+                       " samples in flight, got " + std::to_string(rs.stream_width));
+  }
   const bool adaptive = rs.noise_threshold > 0.0f || rs.target_error > 0.0f;
   if (!adaptive && (overrides.has("min_spp") || from_file.has("min_spp")))
     throw InputError(where("min_spp") +

@@ -14,8 +14,8 @@ TRACER_HD Vec3 material_albedo(const Material& m) {
   }
 }
 
-TRACER_HD Vec3 debug_view(const SceneView& scene, const Ray& ray) {
-  const Hit hit = trace_closest(scene, ray, kInfinity);
+// The view of `hit`, the closest hit of `ray`.
+TRACER_HD Vec3 debug_view(const SceneView& scene, const Ray& ray, const Hit& hit) {
   if (hit.prim == kNoHit) return {0.0f, 0.0f, 0.0f};
   switch (scene.settings.integrator) {
     case IntegratorKind::Normals: {

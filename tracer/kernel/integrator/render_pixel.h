@@ -11,20 +11,24 @@
 
 namespace tracer {
 
-// Sample s of pixel (px, py): its film offset and lens point, the camera ray, and the
-// radiance the scene's integrator returns along it.
-TRACER_HD Vec3 render_sample(const SceneView& scene, uint32_t px, uint32_t py, uint32_t s, RayCounts& counts) {
+// The camera ray of sample s of pixel (px, py), through its film offset and lens point.
+TRACER_HD Ray sample_camera_ray(const SceneView& scene, uint32_t px, uint32_t py, uint32_t s, RayCounts& counts) {
   const RenderSettings& rs = scene.settings;
   const uint32_t pixel = py * rs.width + px;
   float ox = 0.5f, oy = 0.5f, lu = 0.5f, lv = 0.5f;
   film_offset(rs.sampler, rs.grid_n, rs.seed, pixel, s, ox, oy);
   if (uses_feature(scene.features, kFeatureThinLens)) draw_uniform2(rs.sampler, rs.seed, pixel, s, kDimLens, lu, lv);
-  const Ray ray = camera_ray(scene.camera, static_cast<float>(px) + ox, static_cast<float>(py) + oy, lu, lv);
   ++counts.camera;
-  switch (rs.integrator) {
+  return camera_ray(scene.camera, static_cast<float>(px) + ox, static_cast<float>(py) + oy, lu, lv);
+}
+
+// Sample s of pixel (px, py): the radiance the scene's integrator returns along its camera ray.
+TRACER_HD Vec3 render_sample(const SceneView& scene, uint32_t px, uint32_t py, uint32_t s, RayCounts& counts) {
+  const Ray ray = sample_camera_ray(scene, px, py, s, counts);
+  switch (scene.settings.integrator) {
     case IntegratorKind::Whitted: return whitted_radiance(scene, ray, counts);
-    case IntegratorKind::Path: return path_radiance(scene, ray, pixel, s, counts);
-    default: return debug_view(scene, ray);
+    case IntegratorKind::Path: return path_radiance(scene, ray, py * scene.settings.width + px, s, counts);
+    default: return debug_view(scene, ray, trace_closest(scene, ray, kInfinity));
   }
 }
 

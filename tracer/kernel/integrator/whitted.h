@@ -56,85 +56,131 @@ TRACER_HD WhittedResponse whitted_response(const Material& m) {
   return w;
 }
 
-// Ambient plus, per point light, diffuse kd I cos and Blinn-Phong specular
-// ks I cos(h, n)^shininess, each times the falloff, for lights not in shadow.
-TRACER_HD Vec3 whitted_local(const SceneView& scene, const WhittedResponse& w, const Surface& s, Vec3 n, Vec3 view_dir,
-                             RayCounts& counts) {
-  Vec3 result = w.ka * scene.ambient;
-  if (!uses_feature(scene.features, kFeaturePointLight)) return result;
-  for (uint32_t i = 0; i < scene.light_count; ++i) {
-    const PointLight& light = scene.lights[i];
-    const Vec3 to_light = light.position - s.p;
-    const float d2 = dot(to_light, to_light);
-    const float d = det_sqrt(d2);
-    const Vec3 l = to_light / d;
-    const float cos_l = dot(n, l);
-    if (!(cos_l > 0.0f)) continue;
-    if (scene.settings.effects & kEffectShadows) {
-      const Vec3 origin = offset_ray_origin(s.p, s.ng, l, scene.offset_scale);
-      ++counts.shadow;
-      if (trace_any(scene, {origin, l}, length(light.position - origin))) continue;
-    }
-    const Vec3 h = normalize(l - view_dir);
-    const float cos_h = max_of(dot(n, h), 0.0f);
-    const Vec3 reflected = w.kd * cos_l + w.ks * det_pow(cos_h, w.shininess);
-    result += light.intensity * reflected * light_falloff(light, d, d2);
-  }
-  return result;
-}
-
 struct WhittedTask {
   Ray ray;
   Vec3 weight;
   uint32_t depth;
 };
 
+// A Whitted sample between steps: the depth-first stack of rays still to trace and the
+// vertex being lit. The megakernel keeps it in registers; the stream schedule in arrays.
+struct WhittedVertex {
+  WhittedTask task;  // the ray that found this vertex
+  Surface s;
+  WhittedResponse w;
+  Vec3 n;          // the shading normal facing the incoming ray
+  Vec3 local;      // ambient plus the lights lit so far
+  uint32_t light;  // the next point light to consider
+  bool front;
+};
+
+// The Whitted shadow ray towards one point light and that light's term if it is unoccluded.
+struct LightQuery {
+  Ray ray;
+  float tmax;
+  Vec3 contribution;
+};
+
+// The vertex `hit` of task.ray: adds its emission, or the background on a miss (false).
+TRACER_HD bool whitted_begin(const SceneView& scene, const WhittedTask& task, const Hit& hit, WhittedVertex& v,
+                             Vec3& radiance) {
+  if (hit.prim == kNoHit) {
+    radiance += task.weight * background_radiance(scene, task.ray.dir);
+    return false;
+  }
+  v.task = task;
+  v.s = surface_at(scene, task.ray, hit);
+  v.w = whitted_response(material_at(scene, v.s));
+  v.front = dot(task.ray.dir, v.s.ng) < 0.0f;
+  v.n = v.front ? v.s.ns : -v.s.ns;
+  if (v.front || v.w.two_sided) radiance += task.weight * v.w.emission;
+  v.local = v.w.ka * scene.ambient;
+  v.light = uses_feature(scene.features, kFeaturePointLight) ? 0u : scene.light_count;
+  return true;
+}
+
+// Local shading, one point light at a time: ambient plus, per light, diffuse kd I cos and
+// Blinn-Phong specular ks I cos(h, n)^shininess, each times the falloff, for lights not in
+// shadow. Adds the lights that need no shadow ray; true with `query` set at the first that
+// does (the caller adds query.contribution to v.local if it is unoccluded, then calls again).
+TRACER_HD bool whitted_next_light(const SceneView& scene, WhittedVertex& v, LightQuery& query, RayCounts& counts) {
+  while (v.light < scene.light_count) {
+    const PointLight& light = scene.lights[v.light++];
+    const Vec3 to_light = light.position - v.s.p;
+    const float d2 = dot(to_light, to_light);
+    const float d = det_sqrt(d2);
+    const Vec3 l = to_light / d;
+    const float cos_l = dot(v.n, l);
+    if (!(cos_l > 0.0f)) continue;
+    const Vec3 h = normalize(l - v.task.ray.dir);
+    const float cos_h = max_of(dot(v.n, h), 0.0f);
+    const Vec3 reflected = v.w.kd * cos_l + v.w.ks * det_pow(cos_h, v.w.shininess);
+    const Vec3 term = light.intensity * reflected * light_falloff(light, d, d2);
+    if (scene.settings.effects & kEffectShadows) {
+      const Vec3 origin = offset_ray_origin(v.s.p, v.s.ng, l, scene.offset_scale);
+      ++counts.shadow;
+      query = {{origin, l}, length(light.position - origin), term};
+      return true;
+    }
+    v.local += term;
+  }
+  return false;
+}
+
+// The lit vertex's share of the radiance, and its reflection and refraction rays pushed
+// (refraction first, so the reflection is traced first).
+TRACER_HD void whitted_finish(const SceneView& scene, const WhittedVertex& v, Vec3& radiance, WhittedTask* stack,
+                              int& top, RayCounts& counts) {
+  const WhittedTask& task = v.task;
+  radiance += task.weight * v.local;
+  if (task.depth >= scene.settings.max_depth) return;
+
+  Vec3 kr = (scene.settings.effects & kEffectReflection) ? v.w.kr : Vec3{0.0f, 0.0f, 0.0f};
+  if ((scene.settings.effects & kEffectRefraction) && max_component(v.w.kt) > 0.0f) {
+    // Snell's law with relative index eta = n_incident / n_transmitted.
+    const float n_in = v.front ? 1.0f : v.w.ior, n_out = v.front ? v.w.ior : 1.0f;
+    Vec3 refracted;
+    float cos_t;
+    if (refract(task.ray.dir, v.n, n_in / n_out, refracted, cos_t)) {
+      const float cos_i = -dot(task.ray.dir, v.n);
+      const float f = dielectric_reflectance(v.w.fresnel, cos_i, cos_t, n_in, n_out);
+      kr += v.w.kt * f;
+      const Vec3 weight = task.weight * v.w.kt * (1.0f - f);
+      if (max_component(weight) > 0.0f) {
+        ++counts.secondary;
+        stack[top++] = {
+            {offset_ray_origin(v.s.p, v.s.ng, refracted, scene.offset_scale), refracted}, weight, task.depth + 1};
+      }
+    } else {
+      kr += v.w.kt;  // total internal reflection
+    }
+  }
+  const Vec3 weight = task.weight * kr;
+  if ((scene.settings.effects & kEffectReflection) && max_component(weight) > 0.0f) {
+    const Vec3 reflected = reflect(task.ray.dir, v.n);
+    ++counts.secondary;
+    stack[top++] = {
+        {offset_ray_origin(v.s.p, v.s.ng, reflected, scene.offset_scale), reflected}, weight, task.depth + 1};
+  }
+}
+
+// The stack's bound: at most one waiting sibling per level, depth-first.
+TRACER_HD uint32_t whitted_stack_size(uint32_t max_depth) { return max_depth + 2u; }
+
+// The megakernel: the whole sample in one call, each shadow ray traced where it is drawn.
 TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, RayCounts& counts) {
-  WhittedTask stack[kMaxDepth + 2];  // depth-first: at most one waiting sibling per level
+  WhittedTask stack[kMaxDepth + 2];
   int top = 0;
   stack[top++] = {camera_ray, {1.0f, 1.0f, 1.0f}, 0};
   Vec3 radiance = {0.0f, 0.0f, 0.0f};
   while (top > 0) {
     const WhittedTask task = stack[--top];
-    const Hit hit = trace_closest(scene, task.ray, kInfinity);
-    if (hit.prim == kNoHit) {
-      radiance += task.weight * background_radiance(scene, task.ray.dir);
-      continue;
-    }
-    Surface s = surface_at(scene, task.ray, hit);
-    const WhittedResponse w = whitted_response(material_at(scene, s));
-    const bool front = dot(task.ray.dir, s.ng) < 0.0f;
-    const Vec3 n = front ? s.ns : -s.ns;  // shading normal facing the incoming ray
-    if (front || w.two_sided) radiance += task.weight * w.emission;
-    radiance += task.weight * whitted_local(scene, w, s, n, task.ray.dir, counts);
-    if (task.depth >= scene.settings.max_depth) continue;
-
-    Vec3 kr = (scene.settings.effects & kEffectReflection) ? w.kr : Vec3{0.0f, 0.0f, 0.0f};
-    if ((scene.settings.effects & kEffectRefraction) && max_component(w.kt) > 0.0f) {
-      // Snell's law with relative index eta = n_incident / n_transmitted.
-      const float n_in = front ? 1.0f : w.ior, n_out = front ? w.ior : 1.0f;
-      Vec3 refracted;
-      float cos_t;
-      if (refract(task.ray.dir, n, n_in / n_out, refracted, cos_t)) {
-        const float cos_i = -dot(task.ray.dir, n);
-        const float f = dielectric_reflectance(w.fresnel, cos_i, cos_t, n_in, n_out);
-        kr += w.kt * f;
-        const Vec3 weight = task.weight * w.kt * (1.0f - f);
-        if (max_component(weight) > 0.0f) {
-          ++counts.secondary;
-          stack[top++] = {
-              {offset_ray_origin(s.p, s.ng, refracted, scene.offset_scale), refracted}, weight, task.depth + 1};
-        }
-      } else {
-        kr += w.kt;  // total internal reflection
-      }
-    }
-    const Vec3 weight = task.weight * kr;
-    if ((scene.settings.effects & kEffectReflection) && max_component(weight) > 0.0f) {
-      const Vec3 reflected = reflect(task.ray.dir, n);
-      ++counts.secondary;
-      stack[top++] = {{offset_ray_origin(s.p, s.ng, reflected, scene.offset_scale), reflected}, weight, task.depth + 1};
-    }
+    WhittedVertex v;
+    if (!whitted_begin(scene, task, trace_closest(scene, task.ray, kInfinity), v, radiance)) continue;
+    LightQuery query;
+    while (whitted_next_light(scene, v, query, counts))
+      if (!trace_any(scene, query.ray, query.tmax)) v.local += query.contribution;
+    whitted_finish(scene, v, radiance, stack, top, counts);
   }
   return radiance;
 }

@@ -15,6 +15,10 @@ enum class AccelKind : uint32_t { Bvh, None, Kdtree, KdtreeMedian, Grid, Lbvh };
 enum class IntegratorKind : uint32_t { Whitted, Normals, Albedo, Depth, Path };
 enum class TriangleTest : uint32_t { Watertight, MollerTrumbore };
 enum class Switch : uint32_t { Off, On };
+// How the CPU or GPU walks the samples (the same image either way): one call per pixel
+// sample (render_pixel.h), or ray states in queues, one stage at a time (stream.h).
+enum class Schedule : uint32_t { Megakernel, Stream };
+constexpr uint32_t kMaxStreamWidth = 1u << 24;  // samples in flight (about 2 to 4 GB of ray states)
 
 // Whitted effects that can be switched off to measure their cost (`--effects`, `tracer
 // bench device`): a mask of these bits. Off, shadows let every light through; reflection and
@@ -29,7 +33,7 @@ enum Effects : uint32_t {
 
 #define TRACER_RENDER_OPTIONS(X)                                                                                    \
   X(integrator, IntegratorKind, IntegratorKind::Whitted, render, Always, "whitted, path, normals, albedo or depth") \
-  X(sampler, SamplerKind, SamplerKind::Sobol, render, Always, "center, grid, stochastic, stratified or sobol") \
+  X(sampler, SamplerKind, SamplerKind::Sobol, render, Always, "center, grid, stochastic, stratified or sobol")      \
   X(spp, uint32_t, 1u, render, Always, "samples per pixel")                                                         \
   X(seed, uint64_t, 0u, render, Always, "64-bit seed")                                                              \
   X(width, uint32_t, 0u, film, Always, "image width in pixels")                                                     \
@@ -51,10 +55,14 @@ enum Effects : uint32_t {
     "adaptive sampling: a pixel stops once its estimated relative error is below this (default: off, every pixel "  \
     "takes spp)")                                                                                                   \
   X(min_spp, uint32_t, 16u, render, UnlessDefault,                                                                  \
-    "adaptive sampling: the samples every pixel takes before it may stop (default 16, or spp if less)")              \
+    "adaptive sampling: the samples every pixel takes before it may stop (default 16, or spp if less)")             \
   X(target_error, float, 0.0f, render, UnlessDefault,                                                               \
-    "stop the render at the first checkpoint (min_spp, doubling) where the image's estimated relative RMS error "  \
-    "is below this, or at spp (default: off)")
+    "stop the render at the first checkpoint (min_spp, doubling) where the image's estimated relative RMS error "   \
+    "is below this, or at spp (default: off)")                                                                      \
+  X(schedule, Schedule, Schedule::Megakernel, render, Never,                                                        \
+    "megakernel (default: a pixel sample per call) or stream (ray states in queues, a stage at a time); the same "  \
+    "image")                                                                                                        \
+  X(stream_width, uint32_t, 1u << 18, render, Never, "stream: the pixel samples in flight (default 262144)")
 
 struct RenderSettings {
 #define TRACER_SETTING_FIELD(name, Type, default_value, ...) Type name = default_value;

@@ -1,0 +1,163 @@
+// The stream schedule (render.schedule stream): the GPU stream ray tracer's design, and
+// pbrt-v4's wavefront integrator. A batch of pixel samples lives as ray states in arrays (a
+// structure of arrays, one entry per sample), and each stage is a function of one state that
+// a scheduler calls over a queue of state indices: the OpenMP loop of
+// tracer/render/render_stream.cpp, or a CUDA grid. The stages call the megakernel's own
+// steps (path_shade, light_visible, whitted_begin, ...) in the megakernel's order for each
+// state, and every random number is a function of (pixel, sample, dimension), so a sample's
+// radiance is the megakernel's bit for bit however the queues are ordered; the host adds the
+// batch's samples to the film in pixel-sample order (film.h's sums saturate near 2^62).
+#pragma once
+#include "kernel/integrator/render_pixel.h"
+
+namespace tracer {
+
+enum class StreamStage : uint32_t {
+  Generate,  // the camera ray of (pixel[i], sample[i]); next = trace
+  Closest,   // hit[i]: the closest hit of the state's ray
+  Shade,     // the integrator's step at hit[i] (or a resumed Whitted vertex): sets next[i]
+  Shadow,    // the shadow ray's visibility; its contribution added if the light is visible
+};
+
+// What a state does next (bits of next[i]): trace its ray, trace its shadow ray, shade again
+// without a new hit (a Whitted vertex with lights left). 0: the sample is done.
+enum StreamNext : uint8_t { kStreamDone = 0u, kStreamTrace = 1u, kStreamShadow = 2u, kStreamResume = 4u };
+
+// The ray states of one batch. Arrays an integrator does not use may be null.
+struct StreamStates {
+  uint32_t* pixel;  // y * width + x
+  uint32_t* sample;
+  Vec3* origin;  // the ray to trace
+  Vec3* dir;
+  Hit* hit;  // its closest hit
+  Vec3* radiance;
+  uint8_t* next;
+  // the path tracer's state between bounces (PathState)
+  Vec3* throughput;
+  Vec3* from;
+  float* bsdf_pdf;
+  uint32_t* depth;
+  uint8_t* specular;
+  // the shadow ray (ShadowQuery, or a Whitted LightQuery with emitter kNoHit)
+  Vec3* shadow_origin;
+  Vec3* shadow_dir;
+  float* shadow_tmax;
+  uint32_t* shadow_emitter;
+  Vec3* shadow_contribution;
+  // Whitted: the vertex being lit and the depth-first stack, stack_size entries per state
+  WhittedVertex* vertex;
+  WhittedTask* stack;
+  uint32_t* top;
+  uint32_t stack_size;
+};
+
+TRACER_HD PathState load_path(const StreamStates& st, uint32_t i) {
+  return {{st.origin[i], st.dir[i]}, st.radiance[i], st.throughput[i], st.from[i], st.bsdf_pdf[i], st.depth[i],
+          st.specular[i] != 0u};
+}
+
+TRACER_HD void store_path(const StreamStates& st, uint32_t i, const PathState& p) {
+  st.origin[i] = p.ray.origin;
+  st.dir[i] = p.ray.dir;
+  st.radiance[i] = p.radiance;
+  st.throughput[i] = p.throughput;
+  st.from[i] = p.from;
+  st.bsdf_pdf[i] = p.bsdf_pdf;
+  st.depth[i] = p.depth;
+  st.specular[i] = p.specular ? 1u : 0u;
+}
+
+TRACER_HD void store_shadow(const StreamStates& st, uint32_t i, const ShadowQuery& q) {
+  st.shadow_origin[i] = q.ray.origin;
+  st.shadow_dir[i] = q.ray.dir;
+  st.shadow_tmax[i] = q.tmax;
+  st.shadow_emitter[i] = q.emitter;
+  st.shadow_contribution[i] = q.contribution;
+}
+
+// The Whitted state's next task popped into its ray, or done when the stack is empty.
+TRACER_HD uint8_t whitted_pop(const StreamStates& st, uint32_t i) {
+  if (st.top[i] == 0u) return kStreamDone;
+  const WhittedTask task = st.stack[i * st.stack_size + --st.top[i]];
+  st.vertex[i].task = task;
+  st.origin[i] = task.ray.origin;
+  st.dir[i] = task.ray.dir;
+  return kStreamTrace;
+}
+
+// A Whitted state from its hit (or resumed after a shadow ray) to its next ray or shadow ray.
+TRACER_HD uint8_t whitted_shade(const SceneView& scene, const StreamStates& st, uint32_t i, RayCounts& counts) {
+  WhittedVertex& v = st.vertex[i];
+  if (!(st.next[i] & kStreamResume) && !whitted_begin(scene, v.task, st.hit[i], v, st.radiance[i]))
+    return whitted_pop(st, i);
+  LightQuery query;
+  if (whitted_next_light(scene, v, query, counts)) {
+    store_shadow(st, i, {query.ray, query.tmax, kNoHit, query.contribution});
+    return kStreamShadow | kStreamResume;
+  }
+  int top = static_cast<int>(st.top[i]);
+  whitted_finish(scene, v, st.radiance[i], st.stack + static_cast<size_t>(i) * st.stack_size, top, counts);
+  st.top[i] = static_cast<uint32_t>(top);
+  return whitted_pop(st, i);
+}
+
+TRACER_HD void stream_generate(const SceneView& scene, const StreamStates& st, uint32_t i, RayCounts& counts) {
+  const uint32_t width = scene.settings.width;
+  const Ray ray = sample_camera_ray(scene, st.pixel[i] % width, st.pixel[i] / width, st.sample[i], counts);
+  st.radiance[i] = {0.0f, 0.0f, 0.0f};
+  st.next[i] = kStreamTrace;
+  switch (scene.settings.integrator) {
+    case IntegratorKind::Path: store_path(st, i, path_start(ray)); break;
+    case IntegratorKind::Whitted:
+      st.top[i] = 0u;
+      st.vertex[i].task = {ray, {1.0f, 1.0f, 1.0f}, 0u};
+      st.origin[i] = ray.origin;
+      st.dir[i] = ray.dir;
+      break;
+    default:
+      st.origin[i] = ray.origin;
+      st.dir[i] = ray.dir;
+      break;
+  }
+}
+
+TRACER_HD void stream_shade(const SceneView& scene, const StreamStates& st, uint32_t i, RayCounts& counts) {
+  switch (scene.settings.integrator) {
+    case IntegratorKind::Path: {
+      PathState p = load_path(st, i);
+      ShadowQuery shadow;
+      const PathStep step = path_shade(scene, st.pixel[i], st.sample[i], st.hit[i], p, shadow, counts);
+      store_path(st, i, p);
+      if (step.shadow) store_shadow(st, i, shadow);
+      st.next[i] = static_cast<uint8_t>((step.shadow ? kStreamShadow : 0u) | (step.alive ? kStreamTrace : 0u));
+      break;
+    }
+    case IntegratorKind::Whitted: st.next[i] = whitted_shade(scene, st, i, counts); break;
+    default:
+      st.radiance[i] = debug_view(scene, {st.origin[i], st.dir[i]}, st.hit[i]);
+      st.next[i] = kStreamDone;
+      break;
+  }
+}
+
+TRACER_HD void stream_shadow(const SceneView& scene, const StreamStates& st, uint32_t i) {
+  const ShadowQuery q = {{st.shadow_origin[i], st.shadow_dir[i]}, st.shadow_tmax[i], st.shadow_emitter[i], {}};
+  if (!light_visible(scene, q)) return;
+  if (scene.settings.integrator == IntegratorKind::Whitted)
+    st.vertex[i].local += st.shadow_contribution[i];
+  else
+    st.radiance[i] += st.shadow_contribution[i];
+}
+
+// One stage for state i: what the schedulers call per queue entry.
+TRACER_HD void stream_stage(const SceneView& scene, StreamStage stage, const StreamStates& st, uint32_t i,
+                            RayCounts& counts) {
+  switch (stage) {
+    case StreamStage::Generate: stream_generate(scene, st, i, counts); break;
+    case StreamStage::Closest: st.hit[i] = trace_closest(scene, {st.origin[i], st.dir[i]}, kInfinity); break;
+    case StreamStage::Shade: stream_shade(scene, st, i, counts); break;
+    case StreamStage::Shadow: stream_shadow(scene, st, i); break;
+  }
+}
+
+}  // namespace tracer
