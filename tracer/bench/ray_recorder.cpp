@@ -1,17 +1,9 @@
 // A copy of the kernel in its own namespace (as tracer/render/cpu_kernel_variant.cpp) with
 // TRACER_TRACE_HOOK appending each query's ray to the recording.
-#include <cmath>
-#include <cstdint>
-#include <cstring>
-#include <glm/geometric.hpp>  // GLM (the kernel's Vec3 and frames) at global scope; GLM_FORCE_INLINE
-#include <glm/mat3x3.hpp>     // keeps each variant's uses inside its own instruction set
-#include <glm/vec3.hpp>       // (CMakeLists.txt)
 #include <vector>
-#if defined(__x86_64__)
-#include <immintrin.h>
-#endif
 
 #include "bench/ray_recorder.h"
+#include "render/cpu_variant_prelude.h"
 
 static tracer::RecordedRays* g_recording = nullptr;  // one recording at a time, on one thread
 

@@ -3,18 +3,9 @@
 // TRACER_VARIANT_ISA, TRACER_VARIANT_SET and TRACER_KERNEL_FEATURES (kernel/base/features.h)
 // defined. The kernel's headers are included inside namespace TRACER_VARIANT, so this copy's
 // inline functions have names of their own; the standard headers they use come first, at
-// global scope, where they belong.
-#include <cmath>
-#include <cstdint>
-#include <cstring>
-#include <glm/geometric.hpp>  // GLM (the kernel's Vec3 and frames) at global scope; GLM_FORCE_INLINE
-#include <glm/mat3x3.hpp>     // keeps each variant's uses inside its own instruction set
-#include <glm/vec3.hpp>       // (CMakeLists.txt)
-#if defined(__x86_64__)
-#include <immintrin.h>
-#endif
-
-#include "render/cpu_kernel.h"
+// global scope, where they belong. The stream schedule's stages are the variant's second file
+// (cpu_stream_variant.cpp): in this one they took GCC's inlining budget from the megakernel.
+#include "render/cpu_variant_prelude.h"
 
 namespace TRACER_VARIANT {
 #include "kernel/accel/trace.h"
@@ -22,28 +13,15 @@ namespace TRACER_VARIANT {
 #include "kernel/integrator/stream.h"
 }  // namespace TRACER_VARIANT
 
+#include "render/cpu_variant_bytes.h"
+
+namespace TRACER_VARIANT {
+// The stream schedule's stages, compiled apart (cpu_stream_variant.cpp).
+void stream_stage(const ::tracer::SceneView& view, uint32_t stage, const void* states, const uint32_t* queue,
+                  size_t begin, size_t end, ::tracer::RayCounts& counts);
+}  // namespace TRACER_VARIANT
+
 namespace {
-
-namespace k = TRACER_VARIANT::tracer;
-
-// The caller's bytes as this variant's types (the layouts are checked by the selection).
-k::SceneView view_of(const tracer::SceneView& view) {
-  k::SceneView v;
-  std::memcpy(static_cast<void*>(&v), &view, sizeof v);
-  return v;
-}
-
-template <typename T>
-T load(const void* array, size_t i) {
-  T value;
-  std::memcpy(&value, static_cast<const unsigned char*>(array) + i * sizeof(T), sizeof(T));
-  return value;
-}
-
-template <typename T>
-void store(void* array, size_t i, const T& value) {
-  std::memcpy(static_cast<unsigned char*>(array) + i * sizeof(T), &value, sizeof(T));
-}
 
 void render_tile(const tracer::SceneView& view, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1, uint32_t begin,
                  uint32_t end, tracer::FilmSum* film, tracer::RayCounts& counts) {
@@ -81,15 +59,6 @@ void trace_any(const tracer::SceneView& view, const tracer::Ray* rays, const flo
   for (size_t i = 0; i < count; ++i) occluded[i] = k::trace_any(v, load<k::Ray>(rays, i), tmax[i]) ? 1 : 0;
 }
 
-void stream_stage(const tracer::SceneView& view, uint32_t stage, const void* states, const uint32_t* queue,
-                  size_t begin, size_t end, tracer::RayCounts& counts) {
-  const k::SceneView v = view_of(view);
-  const k::StreamStates st = load<k::StreamStates>(states, 0);
-  k::RayCounts c = load<k::RayCounts>(&counts, 0);
-  for (size_t q = begin; q < end; ++q) k::stream_stage(v, static_cast<k::StreamStage>(stage), st, queue[q], c);
-  store(&counts, 0, c);
-}
-
 }  // namespace
 
 namespace tracer {
@@ -109,7 +78,7 @@ const CpuKernelVariant& TRACER_VARIANT() {
                                            render_pixels_halves,
                                            trace_closest,
                                            trace_any,
-                                           stream_stage};
+                                           TRACER_VARIANT::stream_stage};
   return variant;
 }
 

@@ -50,13 +50,13 @@ struct StreamArrays {
     hit.resize(width);
     next.resize(width);
     if (path) {
-      for (auto* a : {&throughput, &from}) a->resize(width);
+      for (auto* a : {&throughput, &from, &shadow_contribution}) a->resize(width);
       bsdf_pdf.resize(width);
       depth.resize(width);
       specular.resize(width);
     }
     if (path || whitted) {
-      for (auto* a : {&shadow_origin, &shadow_dir, &shadow_contribution}) a->resize(width);
+      for (auto* a : {&shadow_origin, &shadow_dir}) a->resize(width);
       shadow_tmax.resize(width);
       shadow_emitter.resize(width);
     }
@@ -116,9 +116,9 @@ size_t stream_bytes_per_state(const SceneView& view) {
   size_t bytes = 2 * sizeof(uint32_t) + 3 * sizeof(Vec3) + sizeof(Hit) + sizeof(uint8_t);
   bytes += 2 * sizeof(uint32_t);  // the queues' entries: closest-hit and shade, shadow
   if (integrator == IntegratorKind::Path)
-    bytes += 2 * sizeof(Vec3) + sizeof(float) + sizeof(uint32_t) + sizeof(uint8_t);
+    bytes += 3 * sizeof(Vec3) + sizeof(float) + sizeof(uint32_t) + sizeof(uint8_t);
   if (integrator == IntegratorKind::Path || integrator == IntegratorKind::Whitted)
-    bytes += 3 * sizeof(Vec3) + sizeof(float) + sizeof(uint32_t);
+    bytes += 2 * sizeof(Vec3) + sizeof(float) + sizeof(uint32_t);
   if (integrator == IntegratorKind::Whitted)
     bytes +=
         sizeof(WhittedVertex) + whitted_stack_size(view.settings.max_depth) * sizeof(WhittedTask) + sizeof(uint32_t);

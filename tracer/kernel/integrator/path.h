@@ -64,8 +64,8 @@ TRACER_HD bool light_visible(const SceneView& scene, const ShadowQuery& q) {
 
 // One vertex of the path: `hit` is the closest hit of st.ray. Adds the emission it sees,
 // draws the light sample (into shadow) and the BSDF sample (the next st.ray).
-TRACER_HD PathStep path_shade(const SceneView& scene, uint32_t pixel, uint32_t sample, const Hit& hit, PathState& st,
-                              ShadowQuery& shadow, RayCounts& counts) {
+TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint32_t sample, const Hit& hit,
+                                   PathState& st, ShadowQuery& shadow, RayCounts& counts) {
   const RenderSettings& rs = scene.settings;
   const bool nee = rs.nee == Switch::On && scene.light_entry_count > 0;
   PathStep step = {false, false};

@@ -38,7 +38,7 @@ struct StreamStates {
   float* bsdf_pdf;
   uint32_t* depth;
   uint8_t* specular;
-  // the shadow ray (ShadowQuery, or a Whitted LightQuery with emitter kNoHit)
+  // the shadow ray (ShadowQuery; Whitted's has emitter kNoHit and no contribution)
   Vec3* shadow_origin;
   Vec3* shadow_dir;
   float* shadow_tmax;
@@ -67,12 +67,11 @@ TRACER_HD void store_path(const StreamStates& st, uint32_t i, const PathState& p
   st.specular[i] = p.specular ? 1u : 0u;
 }
 
-TRACER_HD void store_shadow(const StreamStates& st, uint32_t i, const ShadowQuery& q) {
-  st.shadow_origin[i] = q.ray.origin;
-  st.shadow_dir[i] = q.ray.dir;
-  st.shadow_tmax[i] = q.tmax;
-  st.shadow_emitter[i] = q.emitter;
-  st.shadow_contribution[i] = q.contribution;
+TRACER_HD void store_shadow_ray(const StreamStates& st, uint32_t i, const Ray& ray, float tmax, uint32_t emitter) {
+  st.shadow_origin[i] = ray.origin;
+  st.shadow_dir[i] = ray.dir;
+  st.shadow_tmax[i] = tmax;
+  st.shadow_emitter[i] = emitter;
 }
 
 // The Whitted state's next task popped into its ray, or done when the stack is empty.
@@ -90,9 +89,10 @@ TRACER_HD uint8_t whitted_shade(const SceneView& scene, const StreamStates& st, 
   WhittedVertex& v = st.vertex[i];
   if (!(st.next[i] & kStreamResume) && !whitted_begin(scene, v.task, st.hit[i], v, st.radiance[i]))
     return whitted_pop(st, i);
-  LightQuery query;
-  if (whitted_next_light(scene, v, query, counts)) {
-    store_shadow(st, i, {query.ray, query.tmax, kNoHit, query.contribution});
+  Ray shadow;
+  float tmax;
+  if (whitted_next_light(scene, v, shadow, tmax, counts)) {
+    store_shadow_ray(st, i, shadow, tmax, kNoHit);
     return kStreamShadow | kStreamResume;
   }
   int top = static_cast<int>(st.top[i]);
@@ -128,7 +128,10 @@ TRACER_HD void stream_shade(const SceneView& scene, const StreamStates& st, uint
       ShadowQuery shadow;
       const PathStep step = path_shade(scene, st.pixel[i], st.sample[i], st.hit[i], p, shadow, counts);
       store_path(st, i, p);
-      if (step.shadow) store_shadow(st, i, shadow);
+      if (step.shadow) {
+        store_shadow_ray(st, i, shadow.ray, shadow.tmax, shadow.emitter);
+        st.shadow_contribution[i] = shadow.contribution;
+      }
       st.next[i] = static_cast<uint8_t>((step.shadow ? kStreamShadow : 0u) | (step.alive ? kStreamTrace : 0u));
       break;
     }
@@ -144,7 +147,7 @@ TRACER_HD void stream_shadow(const SceneView& scene, const StreamStates& st, uin
   const ShadowQuery q = {{st.shadow_origin[i], st.shadow_dir[i]}, st.shadow_tmax[i], st.shadow_emitter[i], {}};
   if (!light_visible(scene, q)) return;
   if (scene.settings.integrator == IntegratorKind::Whitted)
-    st.vertex[i].local += st.shadow_contribution[i];
+    whitted_add_light(scene, st.vertex[i]);
   else
     st.radiance[i] += st.shadow_contribution[i];
 }

@@ -62,8 +62,8 @@ struct WhittedTask {
   uint32_t depth;
 };
 
-// A Whitted sample between steps: the depth-first stack of rays still to trace and the
-// vertex being lit. The megakernel keeps it in registers; the stream schedule in arrays.
+// A Whitted sample between steps: the vertex being lit. The megakernel keeps it in registers;
+// the stream schedule in an array, beside each sample's depth-first stack.
 struct WhittedVertex {
   WhittedTask task;  // the ray that found this vertex
   Surface s;
@@ -72,18 +72,13 @@ struct WhittedVertex {
   Vec3 local;      // ambient plus the lights lit so far
   uint32_t light;  // the next point light to consider
   bool front;
-};
-
-// The Whitted shadow ray towards one point light and that light's term if it is unoccluded.
-struct LightQuery {
-  Ray ray;
-  float tmax;
-  Vec3 contribution;
+  Vec3 to_light;  // the light before `light`, facing the surface: unit direction and distances
+  float cos_l, d, d2;
 };
 
 // The vertex `hit` of task.ray: adds its emission, or the background on a miss (false).
-TRACER_HD bool whitted_begin(const SceneView& scene, const WhittedTask& task, const Hit& hit, WhittedVertex& v,
-                             Vec3& radiance) {
+TRACER_HD_STEP bool whitted_begin(const SceneView& scene, const WhittedTask& task, const Hit& hit, WhittedVertex& v,
+                                  Vec3& radiance) {
   if (hit.prim == kNoHit) {
     radiance += task.weight * background_radiance(scene, task.ray.dir);
     return false;
@@ -99,38 +94,46 @@ TRACER_HD bool whitted_begin(const SceneView& scene, const WhittedTask& task, co
   return true;
 }
 
-// Local shading, one point light at a time: ambient plus, per light, diffuse kd I cos and
-// Blinn-Phong specular ks I cos(h, n)^shininess, each times the falloff, for lights not in
-// shadow. Adds the lights that need no shadow ray; true with `query` set at the first that
-// does (the caller adds query.contribution to v.local if it is unoccluded, then calls again).
-TRACER_HD bool whitted_next_light(const SceneView& scene, WhittedVertex& v, LightQuery& query, RayCounts& counts) {
+// Adds the light before v.light (lit, facing the surface, not in shadow): diffuse kd I cos and
+// Blinn-Phong specular ks I cos(h, n)^shininess, times the falloff.
+TRACER_HD_STEP void whitted_add_light(const SceneView& scene, WhittedVertex& v) {
+  const PointLight& light = scene.lights[v.light - 1u];
+  const Vec3 h = normalize(v.to_light - v.task.ray.dir);
+  const float cos_h = max_of(dot(v.n, h), 0.0f);
+  const Vec3 reflected = v.w.kd * v.cos_l + v.w.ks * det_pow(cos_h, v.w.shininess);
+  v.local += light.intensity * reflected * light_falloff(light, v.d, v.d2);
+}
+
+// Local shading, one point light at a time: ambient plus whitted_add_light for each light the
+// surface faces that is not in shadow. Adds the lights that need no shadow ray; true with
+// `shadow` set at the first that does (the caller calls whitted_add_light if it is unoccluded,
+// then calls again).
+TRACER_HD_STEP bool whitted_next_light(const SceneView& scene, WhittedVertex& v, Ray& shadow, float& tmax,
+                                       RayCounts& counts) {
   while (v.light < scene.light_count) {
     const PointLight& light = scene.lights[v.light++];
     const Vec3 to_light = light.position - v.s.p;
-    const float d2 = dot(to_light, to_light);
-    const float d = det_sqrt(d2);
-    const Vec3 l = to_light / d;
-    const float cos_l = dot(v.n, l);
-    if (!(cos_l > 0.0f)) continue;
-    const Vec3 h = normalize(l - v.task.ray.dir);
-    const float cos_h = max_of(dot(v.n, h), 0.0f);
-    const Vec3 reflected = v.w.kd * cos_l + v.w.ks * det_pow(cos_h, v.w.shininess);
-    const Vec3 term = light.intensity * reflected * light_falloff(light, d, d2);
+    v.d2 = dot(to_light, to_light);
+    v.d = det_sqrt(v.d2);
+    v.to_light = to_light / v.d;
+    v.cos_l = dot(v.n, v.to_light);
+    if (!(v.cos_l > 0.0f)) continue;
     if (scene.settings.effects & kEffectShadows) {
-      const Vec3 origin = offset_ray_origin(v.s.p, v.s.ng, l, scene.offset_scale);
+      const Vec3 origin = offset_ray_origin(v.s.p, v.s.ng, v.to_light, scene.offset_scale);
       ++counts.shadow;
-      query = {{origin, l}, length(light.position - origin), term};
+      shadow = {origin, v.to_light};
+      tmax = length(light.position - origin);
       return true;
     }
-    v.local += term;
+    whitted_add_light(scene, v);
   }
   return false;
 }
 
 // The lit vertex's share of the radiance, and its reflection and refraction rays pushed
 // (refraction first, so the reflection is traced first).
-TRACER_HD void whitted_finish(const SceneView& scene, const WhittedVertex& v, Vec3& radiance, WhittedTask* stack,
-                              int& top, RayCounts& counts) {
+TRACER_HD_STEP void whitted_finish(const SceneView& scene, const WhittedVertex& v, Vec3& radiance, WhittedTask* stack,
+                                   int& top, RayCounts& counts) {
   const WhittedTask& task = v.task;
   radiance += task.weight * v.local;
   if (task.depth >= scene.settings.max_depth) return;
@@ -177,9 +180,10 @@ TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, R
     const WhittedTask task = stack[--top];
     WhittedVertex v;
     if (!whitted_begin(scene, task, trace_closest(scene, task.ray, kInfinity), v, radiance)) continue;
-    LightQuery query;
-    while (whitted_next_light(scene, v, query, counts))
-      if (!trace_any(scene, query.ray, query.tmax)) v.local += query.contribution;
+    Ray shadow;
+    float tmax;
+    while (whitted_next_light(scene, v, shadow, tmax, counts))
+      if (!trace_any(scene, shadow, tmax)) whitted_add_light(scene, v);
     whitted_finish(scene, v, radiance, stack, top, counts);
   }
   return radiance;
