@@ -109,6 +109,31 @@ void run_stage(const CpuKernelVariant& variant, const SceneView& view, StreamSta
   counts.camera += camera, counts.secondary += secondary, counts.shadow += shadow;
 }
 
+// The entries of `in` whose next[] has `bit`, in order, into `out`: each thread filters a
+// slice, then writes its matches after those of the slices before it.
+void filter_queue(const std::vector<uint32_t>& in, const uint8_t* next, uint8_t bit, std::vector<uint32_t>& out,
+                  int threads) {
+  std::vector<size_t> offsets(static_cast<size_t>(threads) + 1, 0);
+  out.resize(in.size());
+#pragma omp parallel num_threads(threads)
+  {
+    const size_t t = static_cast<size_t>(omp_get_thread_num()), n = static_cast<size_t>(omp_get_num_threads());
+    const size_t begin = in.size() * t / n, end = in.size() * (t + 1) / n;
+    size_t matches = 0;
+    for (size_t k = begin; k < end; ++k) matches += (next[in[k]] & bit) ? 1 : 0;
+    offsets[t + 1] = matches;
+#pragma omp barrier
+#pragma omp single
+    for (size_t j = 1; j <= n; ++j) offsets[j] += offsets[j - 1];
+    size_t at = offsets[t];
+    for (size_t k = begin; k < end; ++k)
+      if (next[in[k]] & bit) out[at++] = in[k];
+#pragma omp barrier
+#pragma omp single
+    out.resize(offsets[n]);
+  }
+}
+
 }  // namespace
 
 size_t stream_bytes_per_state(const SceneView& view) {
@@ -146,10 +171,11 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
   if (pages > 0 && page_size > 0 && state_bytes > static_cast<size_t>(pages) * static_cast<size_t>(page_size) / 2)
     throw refuse("exceed half of this machine's memory");
   std::unique_ptr<StreamArrays> arrays;
-  std::vector<uint32_t> queue, shadow_queue, resume;
+  std::vector<uint32_t> queue, trace, shadow_queue, resume;
   try {
     arrays = std::make_unique<StreamArrays>(view, width);
     queue.reserve(width);
+    trace.reserve(width);
     shadow_queue.reserve(width);
     resume.reserve(width);
   } catch (const std::bad_alloc&) {
@@ -162,6 +188,7 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
   for (uint64_t first = 0; first < total; first += width) {
     const size_t count = static_cast<size_t>(std::min<uint64_t>(width, total - first));
     // Pixel-major: item g is sample begin + g % samples of the (g / samples)-th pixel.
+#pragma omp parallel for schedule(static) num_threads(threads)
     for (size_t i = 0; i < count; ++i) {
       const uint64_t g = first + i;
       const size_t p = static_cast<size_t>(g / samples);
@@ -169,6 +196,7 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
       arrays->sample[i] = target.begin + static_cast<uint32_t>(g % samples);
     }
     queue.resize(count);
+#pragma omp parallel for schedule(static) num_threads(threads)
     for (size_t i = 0; i < count; ++i) queue[i] = static_cast<uint32_t>(i);
     run_stage(variant, view, StreamStage::Generate, states, queue, count, threads, counts);
     resume.clear();
@@ -178,19 +206,16 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
       run_stage(variant, view, StreamStage::Closest, states, queue, queue.size(), threads, counts);
       queue.insert(queue.end(), resume.begin(), resume.end());  // shaded without a new hit
       run_stage(variant, view, StreamStage::Shade, states, queue, queue.size(), threads, counts);
-      shadow_queue.clear();
-      for (uint32_t i : queue)
-        if (arrays->next[i] & kStreamShadow) shadow_queue.push_back(i);
+      filter_queue(queue, arrays->next.data(), kStreamShadow, shadow_queue, threads);
       stats.shadow_rays += shadow_queue.size();
       run_stage(variant, view, StreamStage::Shadow, states, shadow_queue, shadow_queue.size(), threads, counts);
       // Compaction: the states that trace a ray next, and those shaded again without one.
-      resume.clear();
-      size_t kept = 0;
-      for (uint32_t i : queue) {
-        if (arrays->next[i] & kStreamTrace) queue[kept++] = i;
-        if (arrays->next[i] & kStreamResume) resume.push_back(i);
-      }
-      queue.resize(kept);
+      if (view.settings.integrator == IntegratorKind::Whitted)
+        filter_queue(queue, arrays->next.data(), kStreamResume, resume, threads);
+      else
+        resume.clear();  // only a Whitted vertex resumes
+      filter_queue(queue, arrays->next.data(), kStreamTrace, trace, threads);
+      queue.swap(trace);
     }
     // Into the film in pixel-sample order, a pixel per thread.
     const uint64_t first_pixel = first / samples, last_pixel = (first + count - 1) / samples;
