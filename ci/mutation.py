@@ -164,6 +164,7 @@ def main():
     parser.add_argument("--sample", action="store_true")
     parser.add_argument("--only", default="")
     parser.add_argument("--list", action="store_true")
+    parser.add_argument("--check", action="store_true", help="only check that each mutant's text occurs once")
     parser.add_argument("--keep", default="")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     args = parser.parse_args()
@@ -176,6 +177,17 @@ def main():
         mutants = [m for m in mutants if m.name in names]
     elif args.sample:
         mutants = [m for m in mutants if m.sample]
+    if args.check:
+        stale = []
+        for m in mutants:
+            with open(os.path.join(ROOT, m.file), encoding="utf-8") as f:
+                count = f.read().count("\n".join(m.before) + "\n")
+            if count != 1:
+                stale.append(f"{m.name}: its text occurs {count} times in {m.file}")
+        for line in stale:
+            print(line)
+        print(f"{len(mutants) - len(stale)} of {len(mutants)} mutants apply")
+        return 1 if stale else 0
     if args.list:
         for m in mutants:
             kind = f"equivalent ({m.equivalent}); killed by {m.killer}" if m.equivalent else "bug"
