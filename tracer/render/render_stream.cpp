@@ -139,7 +139,8 @@ void filter_queue(const std::vector<uint32_t>& in, const uint8_t* next, uint8_t 
 size_t stream_bytes_per_state(const SceneView& view) {
   const IntegratorKind integrator = view.settings.integrator;
   size_t bytes = 2 * sizeof(uint32_t) + 3 * sizeof(Vec3) + sizeof(Hit) + sizeof(uint8_t);
-  bytes += 2 * sizeof(uint32_t);  // the queues' entries: closest-hit and shade, shadow
+  // the queues' entries: trace and its compaction partner, shadow, and Whitted's resume
+  bytes += (integrator == IntegratorKind::Whitted ? 4 : 3) * sizeof(uint32_t);
   if (integrator == IntegratorKind::Path)
     bytes += 3 * sizeof(Vec3) + sizeof(float) + sizeof(uint32_t) + sizeof(uint8_t);
   if (integrator == IntegratorKind::Path || integrator == IntegratorKind::Whitted)
@@ -177,7 +178,7 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
     queue.reserve(width);
     trace.reserve(width);
     shadow_queue.reserve(width);
-    resume.reserve(width);
+    if (view.settings.integrator == IntegratorKind::Whitted) resume.reserve(width);
   } catch (const std::bad_alloc&) {
     throw refuse("cannot be allocated");
   } catch (const std::length_error&) {
@@ -188,16 +189,15 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
   for (uint64_t first = 0; first < total; first += width) {
     const size_t count = static_cast<size_t>(std::min<uint64_t>(width, total - first));
     // Pixel-major: item g is sample begin + g % samples of the (g / samples)-th pixel.
+    queue.resize(count);
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (size_t i = 0; i < count; ++i) {
       const uint64_t g = first + i;
       const size_t p = static_cast<size_t>(g / samples);
       arrays->pixel[i] = target.pixels ? target.pixels[p] : static_cast<uint32_t>(p);
       arrays->sample[i] = target.begin + static_cast<uint32_t>(g % samples);
+      queue[i] = static_cast<uint32_t>(i);
     }
-    queue.resize(count);
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (size_t i = 0; i < count; ++i) queue[i] = static_cast<uint32_t>(i);
     run_stage(variant, view, StreamStage::Generate, states, queue, count, threads, counts);
     resume.clear();
     while (!queue.empty() || !resume.empty()) {
