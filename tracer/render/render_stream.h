@@ -36,9 +36,6 @@ struct StreamTarget {
   FilmSum* odd;
 };
 
-// The ray states' bytes per sample in flight for this scene's integrator.
-size_t stream_bytes_per_state(const SceneView& view);
-
 // Renders `target` with at most view.settings.stream_width samples in flight (an InputError
 // naming --stream-width when its states cannot be allocated). `progress` (optional) gets the
 // samples done and the total after each batch.

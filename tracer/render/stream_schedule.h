@@ -1,0 +1,60 @@
+// The host loop of the stream schedule (kernel/integrator/stream.h), shared by every
+// scheduler: the tracer's OpenMP one (render_stream.cpp), the runner's std::thread one
+// (cuda/runner/cpu_stream.h) and the GPU's (cuda/gpu_stream.cu). A batch of at most
+// `width` pixel samples becomes ray states; each wave runs closest hit over the work queue,
+// shades it (with the Whitted states resumed after a shadow ray), runs the shadow queue,
+// then compacts the work queue to the states that trace a ray next. The batch's samples go
+// into the film in pixel-sample order, so the film is the megakernel's whichever backend ran.
+//
+// A backend has, for queues named by StreamQueue:
+//   void begin_batch(uint64_t first, size_t count)   items [first, first + count) of the target
+//                                                    (pixel-major) as states 0..count-1; the
+//                                                    Work queue holds them in order
+//   void run(StreamStage, StreamQueue, size_t size)  the stage over the queue's first `size` entries
+//   size_t append(StreamQueue to, size_t to_size, StreamQueue from, size_t from_size)  new size
+//   size_t filter(StreamQueue in, size_t size, uint8_t bit, StreamQueue out)  the entries of `in`
+//                                                    whose next[] has `bit`, in order; their count
+//   void swap(StreamQueue, StreamQueue)
+//   void end_batch(uint64_t first, size_t count)     the batch's radiance into the film
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+
+#include "kernel/integrator/stream.h"
+#include "render/render_stream.h"
+
+namespace tracer {
+
+enum class StreamQueue : uint32_t { Work, Trace, Shadow, Resume };
+constexpr uint32_t kStreamQueueCount = 4;
+
+template <class Backend>
+void schedule_stream(const RenderSettings& rs, uint64_t total, size_t width, Backend& backend, StreamStats& stats,
+                     const std::function<void(uint64_t done, uint64_t total)>& progress = {}) {
+  const bool whitted = rs.integrator == IntegratorKind::Whitted;  // only a Whitted vertex resumes
+  for (uint64_t first = 0; first < total; first += width) {
+    const size_t count = static_cast<size_t>(std::min<uint64_t>(width, total - first));
+    backend.begin_batch(first, count);
+    backend.run(StreamStage::Generate, StreamQueue::Work, count);
+    size_t work = count, resume = 0;
+    while (work > 0 || resume > 0) {
+      ++stats.waves;
+      stats.largest_queue = std::max<uint64_t>(stats.largest_queue, work);
+      backend.run(StreamStage::Closest, StreamQueue::Work, work);
+      work = backend.append(StreamQueue::Work, work, StreamQueue::Resume, resume);  // shaded without a new hit
+      backend.run(StreamStage::Shade, StreamQueue::Work, work);
+      const size_t shadow = backend.filter(StreamQueue::Work, work, kStreamShadow, StreamQueue::Shadow);
+      stats.shadow_rays += shadow;
+      backend.run(StreamStage::Shadow, StreamQueue::Shadow, shadow);
+      resume = whitted ? backend.filter(StreamQueue::Work, work, kStreamResume, StreamQueue::Resume) : 0;
+      work = backend.filter(StreamQueue::Work, work, kStreamTrace, StreamQueue::Trace);
+      backend.swap(StreamQueue::Work, StreamQueue::Trace);
+    }
+    backend.end_batch(first, count);
+    ++stats.batches;
+    if (progress) progress(first + count, total);
+  }
+}
+
+}  // namespace tracer

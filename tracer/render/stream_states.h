@@ -1,0 +1,59 @@
+// The stream schedule's ray-state arrays (kernel/integrator/stream.h's StreamStates) for one
+// integrator, described once: each scheduler passes its allocator (host memory, device
+// memory, or a counter of bytes), so the layout and its size cannot disagree.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "kernel/integrator/stream.h"
+
+namespace tracer {
+
+// The queues of state indices a scheduler keeps (render/stream_schedule.h): work and its
+// compaction partner, shadow, and Whitted's resume queue.
+inline size_t stream_queue_count(const RenderSettings& rs) { return rs.integrator == IntegratorKind::Whitted ? 4 : 3; }
+
+// `allocate(static_cast<T*>(nullptr), count)` returns room for `count` objects of T.
+// Arrays an integrator does not use stay null.
+template <class Allocate>
+StreamStates allocate_stream_states(const RenderSettings& rs, size_t width, Allocate&& allocate) {
+  const bool path = rs.integrator == IntegratorKind::Path, whitted = rs.integrator == IntegratorKind::Whitted;
+  const auto array = [&](auto* type, bool used, size_t count = 0) {
+    return used ? allocate(type, count == 0 ? width : count) : type;
+  };
+  StreamStates st{};
+  st.pixel = array(static_cast<uint32_t*>(nullptr), true);
+  st.sample = array(static_cast<uint32_t*>(nullptr), true);
+  st.origin = array(static_cast<Vec3*>(nullptr), true);
+  st.dir = array(static_cast<Vec3*>(nullptr), true);
+  st.hit = array(static_cast<Hit*>(nullptr), true);
+  st.radiance = array(static_cast<Vec3*>(nullptr), true);
+  st.next = array(static_cast<uint8_t*>(nullptr), true);
+  st.throughput = array(static_cast<Vec3*>(nullptr), path);
+  st.from = array(static_cast<Vec3*>(nullptr), path);
+  st.bsdf_pdf = array(static_cast<float*>(nullptr), path);
+  st.depth = array(static_cast<uint32_t*>(nullptr), path);
+  st.specular = array(static_cast<uint8_t*>(nullptr), path);
+  st.shadow_origin = array(static_cast<Vec3*>(nullptr), path || whitted);
+  st.shadow_dir = array(static_cast<Vec3*>(nullptr), path || whitted);
+  st.shadow_tmax = array(static_cast<float*>(nullptr), path || whitted);
+  st.shadow_emitter = array(static_cast<uint32_t*>(nullptr), path || whitted);
+  st.shadow_contribution = array(static_cast<Vec3*>(nullptr), path);
+  st.stack_size = whitted ? whitted_stack_size(rs.max_depth) : 0u;
+  st.vertex = array(static_cast<WhittedVertex*>(nullptr), whitted);
+  st.stack = array(static_cast<WhittedTask*>(nullptr), whitted, width * st.stack_size);
+  st.top = array(static_cast<uint32_t*>(nullptr), whitted);
+  return st;
+}
+
+// Bytes per sample in flight: the state arrays and the queue entries.
+inline size_t stream_bytes_per_state(const RenderSettings& rs) {
+  size_t bytes = stream_queue_count(rs) * sizeof(uint32_t);
+  allocate_stream_states(rs, 1, [&](auto* type, size_t count) {
+    bytes += count * sizeof(*type);
+    return type;
+  });
+  return bytes;
+}
+
+}  // namespace tracer
