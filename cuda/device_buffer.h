@@ -1,5 +1,6 @@
 // A plain device array that frees itself: the renderer's only kind of device memory.
 #pragma once
+#include <utility>
 #include <vector>
 
 #include "cuda_check.h"
@@ -21,6 +22,11 @@ class DeviceBuffer {
   DeviceBuffer(DeviceBuffer&& other) noexcept : data_(other.data_), count_(other.count_) {
     other.data_ = nullptr;
     other.count_ = 0;
+  }
+  DeviceBuffer& operator=(DeviceBuffer&& other) noexcept {
+    std::swap(data_, other.data_);
+    std::swap(count_, other.count_);
+    return *this;
   }
   ~DeviceBuffer() {
     if (data_) cudaFree(data_);  // no throw from a destructor; a failed free is reported by the next call

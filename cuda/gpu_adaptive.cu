@@ -4,6 +4,7 @@
 #include "cuda_event.h"
 #include "device_scene.h"
 #include "gpu_adaptive.h"
+#include "gpu_stream.h"
 #include "kernel/integrator/adaptive.h"
 #include "kernel/integrator/render_pixel.h"
 #include "render/adaptive_schedule.h"
@@ -55,6 +56,8 @@ struct GpuBackend {
   DeviceBuffer<uint32_t> running;
   DeviceBuffer<uint8_t> unconverged, keep_flags;
   DeviceBuffer<unsigned long long> counters;
+  GpuStream stream;  // sized for none with the megakernel schedule
+  StreamStats stream_stats;
   double kernel_seconds = 0, transfer_seconds = 0;
 
   GpuBackend(const SceneView& device_view, size_t pixels)
@@ -64,8 +67,14 @@ struct GpuBackend {
         running(pixels),
         unconverged(pixels),
         keep_flags(pixels),
-        counters(kCounterCount) {
+        counters(kCounterCount),
+        stream(device_view, stream_samples(device_view.settings, pixels)) {
     even.zero(), odd.zero(), counters.zero();
+  }
+
+  // A pass renders at most every pixel's spp samples.
+  static uint64_t stream_samples(const RenderSettings& rs, size_t pixels) {
+    return rs.schedule == Schedule::Stream ? static_cast<uint64_t>(pixels) * rs.spp : 0;
   }
 
   void upload_running(const std::vector<uint32_t>& list) {
@@ -76,6 +85,11 @@ struct GpuBackend {
 
   void render(AdaptiveFilm&, const std::vector<uint32_t>& list, uint32_t begin, uint32_t end, uint64_t) {
     upload_running(list);
+    if (scene.settings.schedule == Schedule::Stream) {
+      const StreamTarget target = {running.get(), list.size(), begin, end, nullptr, even.get(), odd.get()};
+      kernel_seconds += stream.render(target, counters.get(), stream_stats);
+      return;
+    }
     const CudaEvent start, stop;
     TRACER_CUDA_CHECK(cudaEventRecord(start.event));
     adaptive_pass_kernel<<<blocks_for(list.size()), kBlock>>>(scene, running.get(), list.size(), begin, end, even.get(),
@@ -115,9 +129,13 @@ GpuAdaptiveFilm render_adaptive_on_gpu(const SceneArrays& arrays, const SceneVie
   r.run.device = describe_cuda_device(prop);
   const RenderSettings& rs = view.settings;
   const size_t pixels = static_cast<size_t>(rs.width) * rs.height;
+  const bool stream = rs.schedule == Schedule::Stream;
   r.run.device_bytes = scene_array_bytes(arrays) + pixels * (2 * sizeof(FilmSum) + sizeof(uint32_t) + 2) +
-                       kCounterCount * sizeof(unsigned long long);
-  require_free_device_memory(r.run.device_bytes, label, r.run.device);
+                       kCounterCount * sizeof(unsigned long long) +
+                       GpuStream::device_bytes(rs, GpuBackend::stream_samples(rs, pixels));
+  require_free_device_memory(r.run.device_bytes,
+                             stream ? label + " (--stream-width " + std::to_string(rs.stream_width) + ")" : label,
+                             r.run.device);
 
   auto t = std::chrono::steady_clock::now();
   const DeviceScene device_scene(arrays, view);
@@ -128,6 +146,7 @@ GpuAdaptiveFilm render_adaptive_on_gpu(const SceneArrays& arrays, const SceneVie
   r.film = schedule_adaptive(rs, backend);
   const std::vector<unsigned long long> c = backend.counters.download();
   r.rays = {c[kCamera], c[kSecondary], c[kShadow]};
+  r.stream = backend.stream_stats;
   r.run.kernel_seconds = backend.kernel_seconds;
   r.run.download_seconds = backend.transfer_seconds;
   return r;

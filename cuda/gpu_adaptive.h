@@ -8,6 +8,7 @@
 #include "gpu_run.h"
 #include "kernel/integrator/ray_counts.h"
 #include "render/adaptive_film.h"
+#include "render/stream_schedule.h"
 #include "scene/scene_arrays.h"
 
 namespace tracer {
@@ -15,7 +16,8 @@ namespace tracer {
 struct GpuAdaptiveFilm {
   AdaptiveFilm film;
   RayCounts rays{};
-  GpuRun run;  // the transfers of the running lists and keep flags count as downloads
+  StreamStats stream;  // the stream schedule's queues and memory (zero for the megakernel)
+  GpuRun run;          // the transfers of the running lists and keep flags count as downloads
 };
 
 // DeviceUnavailable (no device; too little free memory, naming `label`) or

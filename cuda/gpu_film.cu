@@ -5,6 +5,7 @@
 #include "cuda_event.h"
 #include "device_scene.h"
 #include "gpu_film.h"
+#include "gpu_stream.h"
 #include "kernel/integrator/render_pixel.h"
 
 namespace tracer {
@@ -62,25 +63,37 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
   r.run.device = describe_cuda_device(prop);
   const RenderSettings& rs = view.settings;
   const size_t pixels = static_cast<size_t>(rs.width) * rs.height;
-  r.run.device_bytes =
-      scene_array_bytes(arrays) + pixels * sizeof(FilmSum) + kCounterCount * sizeof(unsigned long long);
-  require_free_device_memory(r.run.device_bytes, label, r.run.device);
+  const bool stream = rs.schedule == Schedule::Stream;
+  const uint64_t samples = static_cast<uint64_t>(pixels) * (range.end - range.begin);
+  r.run.device_bytes = scene_array_bytes(arrays) + pixels * sizeof(FilmSum) +
+                       kCounterCount * sizeof(unsigned long long) + (stream ? GpuStream::device_bytes(rs, samples) : 0);
+  require_free_device_memory(r.run.device_bytes,
+                             stream ? label + " (--stream-width " + std::to_string(rs.stream_width) + ")" : label,
+                             r.run.device);
 
   auto t = std::chrono::steady_clock::now();
   const DeviceScene device_scene(arrays, view);
   DeviceBuffer<FilmSum> film(pixels);
   DeviceBuffer<unsigned long long> counters(kCounterCount);
   counters.zero();
-  TRACER_CUDA_CHECK(cudaDeviceSynchronize());
-  r.run.upload_seconds = seconds_since(t);
-
-  const CudaEvent start, stop;
-  const dim3 block(16, 16), grid((rs.width + 15) / 16, (rs.height + 15) / 16);
-  TRACER_CUDA_CHECK(cudaEventRecord(start.event));
-  render_kernel<<<grid, block>>>(device_scene.view(), range, film.get(), counters.get());
-  TRACER_CUDA_CHECK(cudaGetLastError());
-  TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
-  r.run.kernel_seconds = seconds_between(start, stop);
+  if (stream) {
+    film.zero();
+    GpuStream states(device_scene.view(), samples);
+    TRACER_CUDA_CHECK(cudaDeviceSynchronize());
+    r.run.upload_seconds = seconds_since(t);
+    const StreamTarget target = {nullptr, pixels, range.begin, range.end, film.get(), nullptr, nullptr};
+    r.run.kernel_seconds = states.render(target, counters.get(), r.stream);
+  } else {
+    TRACER_CUDA_CHECK(cudaDeviceSynchronize());
+    r.run.upload_seconds = seconds_since(t);
+    const CudaEvent start, stop;
+    const dim3 block(16, 16), grid((rs.width + 15) / 16, (rs.height + 15) / 16);
+    TRACER_CUDA_CHECK(cudaEventRecord(start.event));
+    render_kernel<<<grid, block>>>(device_scene.view(), range, film.get(), counters.get());
+    TRACER_CUDA_CHECK(cudaGetLastError());
+    TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
+    r.run.kernel_seconds = seconds_between(start, stop);
+  }
 
   t = std::chrono::steady_clock::now();
   r.film.width = rs.width;
@@ -92,6 +105,12 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
   r.rays = {c[kCamera], c[kSecondary], c[kShadow]};
   r.nonfinite = c[kNonfinite];
   r.overflow = c[kOverflow];
+  if (stream) {  // the stream's kernels count no samples; the film's sums do
+    for (const FilmSum& sum : r.film.pixels) {
+      r.nonfinite += sum.nonfinite;
+      r.overflow += sum.overflow;
+    }
+  }
   return r;
 }
 

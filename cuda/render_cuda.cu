@@ -26,6 +26,7 @@ FilmBuffer render_cuda_film(const Scene& scene, SampleRange range, RenderStats& 
   GpuFilm r = render_film_on_gpu(scene, scene.view(), range, scene.file);
   report_run(r.run, info);
   stats.rays = r.rays;
+  stats.stream = r.stream;
   stats.nonfinite_samples = r.nonfinite;
   stats.overflow_samples = r.overflow;
   return std::move(r.film);
@@ -35,6 +36,7 @@ AdaptiveFilm render_cuda_adaptive(const Scene& scene, RenderStats& stats, CudaRu
   GpuAdaptiveFilm r = render_adaptive_on_gpu(scene, scene.view(), scene.file);
   report_run(r.run, info);
   stats.rays = r.rays;
+  stats.stream = r.stream;
   stats.nonfinite_samples = adaptive_nonfinite_samples(r.film);
   stats.overflow_samples = adaptive_overflow_samples(r.film);
   return std::move(r.film);

@@ -2,6 +2,7 @@
 // passes on std::threads (parallel_for) and the decision on the host, the film the tracer's
 // OpenMP scheduler and the GPU's produce, bit for bit.
 #pragma once
+#include "cpu_stream.h"
 #include "kernel/integrator/render_pixel.h"
 #include "parity/parallel_for.h"
 #include "render/adaptive_schedule.h"
@@ -20,6 +21,13 @@ inline CpuAdaptiveFilm render_adaptive_on_cpu(const SceneView& view, unsigned th
     RayCounts rays{};
 
     void render(AdaptiveFilm& film, const std::vector<uint32_t>& running, uint32_t begin, uint32_t end, uint64_t) {
+      if (view.settings.schedule == Schedule::Stream) {
+        StreamStats stats;
+        const StreamTarget target = {running.data(), running.size(),   begin,          end,
+                                     nullptr,        film.even.data(), film.odd.data()};
+        render_stream_on_cpu(view, target, threads, rays, stats);
+        return;
+      }
       std::vector<RayCounts> counts(running.size(), RayCounts{0, 0, 0});
       parallel_for(running.size(), threads, [&](size_t i) {
         const uint32_t p = running[i];

@@ -18,6 +18,7 @@ GpuFilm render_film_on_gpu(const SceneArrays&, const SceneView&, SampleRange, co
 GpuAdaptiveFilm render_adaptive_on_gpu(const SceneArrays&, const SceneView&, const std::string&) { no_cuda(); }
 GpuLbvh build_lbvh_on_gpu(const LbvhInput&) { no_cuda(); }
 std::string describe_render_kernel() { no_cuda(); }
+std::string describe_stream_kernels() { no_cuda(); }
 
 namespace parity {
 std::string gpu_device() { no_cuda(); }

@@ -11,7 +11,6 @@
 #include <sstream>
 
 #include "bundle/scene_bundle.h"
-#include "io/sha1.h"
 #include "cpu_adaptive.h"
 #include "cpu_film.h"
 #include "gpu_adaptive.h"
@@ -19,6 +18,7 @@
 #include "image/pixel_hash.h"
 #include "io/out_of_memory.h"
 #include "io/output_paths.h"
+#include "io/sha1.h"
 #include "io/text_file.h"
 #include "parity/parity_gpu.h"
 #include "parity/parity_suite.h"
@@ -29,13 +29,18 @@ namespace {
 
 const char* kUsage =
     "usage: tracer-gpu render BUNDLE [--device cuda|cpu] [--threads N] [--repeat N] [--expect sha1:HASH] [-o FILM]\n"
+    "                                [--schedule megakernel|stream] [--stream-width N]\n"
     "       tracer-gpu parity CASE [--device cuda|cpu] [--threads N]\n"
     "       tracer-gpu pack DIR [--device cuda|cpu] [--threads N] [--repeat N]\n"
     "       tracer-gpu bench DIR [--device cuda|cpu] [--threads N] [--repeat N]\n"
     "       tracer-gpu device\n";
 
+constexpr uint32_t kMaxStreamWidth = 1u << 24;  // as the tracer's render.stream_width
+
 struct Options {
   std::string command, input, device = "cuda", expect, output;
+  std::optional<Schedule> schedule;  // the bundle's when unset
+  uint32_t stream_width = 0;         // the bundle's when 0
   unsigned threads = 0;
   uint32_t repeat = 1;
 };
@@ -46,6 +51,33 @@ uint32_t parse_count(const std::string& flag, const std::string& text, uint32_t 
   if (ec != std::errc() || end != text.data() + text.size() || value == 0 || value > max)
     throw InputError(flag + " " + text + ": expected a whole number from 1 to " + std::to_string(max));
   return value;
+}
+
+Schedule parse_schedule(const std::string& text) {
+  if (text == "megakernel") return Schedule::Megakernel;
+  if (text == "stream") return Schedule::Stream;
+  throw InputError("--schedule " + text + ": expected megakernel or stream");
+}
+
+// A pack or bench row's schedule field: "megakernel", or "stream:WIDTH".
+Options with_schedule(Options o, const std::string& field, const std::string& where) {
+  const size_t colon = field.find(':');
+  try {
+    o.schedule = parse_schedule(field.substr(0, colon));
+    if (colon != std::string::npos)
+      o.stream_width = parse_count("--stream-width", field.substr(colon + 1), kMaxStreamWidth);
+  } catch (const InputError& e) {
+    throw InputError(where + ": " + e.what());
+  }
+  return o;
+}
+
+// The bundle's view with the schedule the options ask for.
+SceneView view_for(const SceneBundle& b, const Options& o) {
+  SceneView view = b.view();
+  if (o.schedule) view.settings.schedule = *o.schedule;
+  if (o.stream_width != 0) view.settings.stream_width = o.stream_width;
+  return view;
 }
 
 Options parse(int argc, char** argv) {
@@ -64,6 +96,10 @@ Options parse(int argc, char** argv) {
       o.threads = parse_count(a, value(), 4096);
     else if (a == "--repeat")
       o.repeat = parse_count(a, value(), 100000);
+    else if (a == "--schedule")
+      o.schedule = parse_schedule(value());
+    else if (a == "--stream-width")
+      o.stream_width = parse_count(a, value(), kMaxStreamWidth);
     else if (a == "--expect")
       o.expect = value();
     else if (a == "-o" || a == "--output")
@@ -99,7 +135,7 @@ struct Rendered {
 // An adaptive bundle: the film of render/adaptive_schedule.h's loop on the device asked for.
 void render_adaptive_bundle(const SceneBundle& b, const Options& o, const std::string& label, Rendered& r,
                             double& seconds) {
-  const SceneView view = b.view();
+  const SceneView view = view_for(b, o);
   if (o.device == "cuda") {
     GpuAdaptiveFilm g = render_adaptive_on_gpu(b.arrays, view, label);
     seconds = g.run.kernel_seconds;
@@ -115,7 +151,7 @@ void render_adaptive_bundle(const SceneBundle& b, const Options& o, const std::s
 }
 
 Rendered render_bundle_unguarded(const SceneBundle& b, const Options& o, const std::string& label) {
-  const SceneView view = b.view();
+  const SceneView view = view_for(b, o);
   Rendered r;
   for (uint32_t i = 0; i < o.repeat; ++i) {
     double seconds = 0;
@@ -221,8 +257,9 @@ int run_parity(const Options& o) {
   return pass ? 0 : 1;
 }
 
-// DIR/pack.tsv: one line per entry, "golden NAME FILE sha1:HASH" (the image's hash),
-// "sample-map NAME FILE sha1:HASH" (an adaptive render's sample map) or "parity NAME FILE -".
+// DIR/pack.tsv: one line per entry, "golden NAME FILE sha1:HASH [SCHEDULE]" (the image's
+// hash), "sample-map NAME FILE sha1:HASH [SCHEDULE]" (an adaptive render's sample map) or
+// "parity NAME FILE -". SCHEDULE: "megakernel" or "stream:WIDTH"; the bundle's when absent.
 int run_pack(const Options& o) {
   const std::string dir = o.input + "/";
   std::istringstream list(read_text_file(dir + "pack.tsv", "pack list", 1u << 20));
@@ -236,13 +273,16 @@ int run_pack(const Options& o) {
     std::istringstream fields(line);
     std::string kind, name, file, expected;
     if (!(fields >> kind >> name >> file >> expected)) throw InputError(dir + "pack.tsv: malformed line: " + line);
+    std::string schedule;
+    fields >> schedule;
     ++total;
     bool pass = false;
     std::string detail;
     try {
       if (kind == "golden" || kind == "sample-map") {
         const SceneBundle b = read_scene_bundle(dir + file);
-        const Rendered r = render_bundle(b, o, dir + file);
+        const Rendered r =
+            render_bundle(b, schedule.empty() ? o : with_schedule(o, schedule, dir + "pack.tsv: " + name), dir + file);
         const std::string& got = kind == "golden" ? r.hash : r.sample_map_hash;
         pass = got == expected;
         char text[160];
@@ -266,9 +306,9 @@ int run_pack(const Options& o) {
   return passed == total && total > 0 ? 0 : 1;
 }
 
-// DIR/bench.tsv: "TABLE LABEL FILE" per row. Each bundle is rendered --repeat times on the
-// device and its best time reported; on the GPU the CPU renders it once beside it, as the
-// baseline of the same run.
+// DIR/bench.tsv: "TABLE LABEL FILE [SCHEDULE]" per row (SCHEDULE as in pack.tsv). Each bundle is rendered --repeat
+// times on the device and its best time reported; on the GPU the CPU renders it once beside it, as the baseline of the
+// same run.
 int run_bench(const Options& o) {
   const std::string dir = o.input + "/";
   std::istringstream list(read_text_file(dir + "bench.tsv", "bench list", 1u << 20));
@@ -282,10 +322,12 @@ int run_bench(const Options& o) {
   for (std::string line; std::getline(list, line);) {
     if (line.empty() || line[0] == '#') continue;
     std::istringstream fields(line);
-    std::string table, label, file;
+    std::string table, label, file, schedule;
     if (!(fields >> table >> label >> file)) throw InputError(dir + "bench.tsv: malformed line: " + line);
+    fields >> schedule;
+    const Options row = schedule.empty() ? o : with_schedule(o, schedule, dir + "bench.tsv: " + label);
     const SceneBundle b = read_scene_bundle(dir + file);
-    const Rendered r = render_bundle(b, o, dir + file);
+    const Rendered r = render_bundle(b, row, dir + file);
     std::printf("%-10s %-34s %10.6f %10.1f %10.1f", table.c_str(), label.c_str(), r.best_seconds,
                 r.best_seconds > 0 ? 1.0 / r.best_seconds : 0.0, mrays_per_second(r));
     if (gpu) {
@@ -311,7 +353,8 @@ int main(int argc, char** argv) {
     if (o.command == "pack") return run_pack(o);
     if (o.command == "bench") return run_bench(o);
     if (o.command == "device") {
-      std::printf("%s\n%s\n", parity::gpu_device().c_str(), describe_render_kernel().c_str());
+      std::printf("%s\n%s\n%s\n", parity::gpu_device().c_str(), describe_render_kernel().c_str(),
+                  describe_stream_kernels().c_str());
       return 0;
     }
     throw InputError(o.command + ": unknown command\n" + kUsage);

@@ -89,7 +89,9 @@ std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
 
 // The scenes of `tracer bench device` as bundles (Whitted, 720x480 unless the row says):
 // the Cornell box per sampler, per effect and per resolution, and a generated 100k-triangle
-// mesh. bench.tsv rows: "TABLE LABEL FILE"; `tracer-gpu bench` times them.
+// mesh; then the stream schedule against the megakernel (table `schedule`: the main and mesh
+// bundles and the path-traced Cornell box at 16 spp, each under both schedules).
+// bench.tsv rows: "TABLE LABEL FILE [SCHEDULE]"; `tracer-gpu bench` times them.
 std::string write_bench(const fs::path& root, const fs::path& out) {
   struct Sampler {
     const char* label;
@@ -129,6 +131,7 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
           size[1], s, kEffectAll);
 
   const fs::path temp = make_new_directory(fs::temp_directory_path(), "tracer-gpu-pack-mesh-");
+  std::string sphere_4spp;  // the mesh's 4 spp bundle
   try {
     const std::vector<MeshTriangle> mesh = generate_mesh("sphere", 100000);
     write_obj(mesh, (temp / "sphere-100k.obj").string());
@@ -152,11 +155,26 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
     for (const Sampler& s : {samplers[0], samplers[2]})
       add("mesh", "sphere-" + std::to_string(mesh.size()) + "tri-" + s.label, (temp / "sphere-100k.json").string(), 720,
           480, s, kEffectAll);
+    sphere_4spp = "bench/mesh-sphere-" + std::to_string(mesh.size()) + "tri-4spp-grid.bundle";
   } catch (...) {
     fs::remove_all(temp);
     throw;
   }
   fs::remove_all(temp);
+
+  RenderOverrides path;
+  path.width = 720, path.height = 480, path.spp = 16;
+  const Scene path_scene = load_scene((root / "scenes/cornell-box-path.json").string(), path);
+  write_bundle((out / "bench/schedule-cornell-box-path-16spp.bundle").string(),
+               encode_scene_bundle(make_scene_bundle(path_scene, path_scene.view(), {0, 16}, "cornell-box-path")));
+  const std::string rows[][2] = {{"cornell-box-1spp-center", "bench/main-cornell-box-1spp-center.bundle"},
+                                 {"cornell-box-4spp-grid", "bench/main-cornell-box-4spp-grid.bundle"},
+                                 {"sphere-4spp-grid", sphere_4spp},
+                                 {"cornell-box-path-16spp", "bench/schedule-cornell-box-path-16spp.bundle"}};
+  for (const auto& [label, file] : rows)
+    for (const char* schedule : {"megakernel", "stream:262144", "stream:4194304"})
+      list += std::string("schedule ") + label + "-" + (schedule[0] == 'm' ? "megakernel" : schedule) + " " + file +
+              " " + schedule + "\n";
   return list;
 }
 
@@ -183,7 +201,10 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
     const std::string file = "bundles/" + e.name + ".bundle";
     write_bundle((out / file).string(),
                  encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, e.scene)));
-    list += (e.image == GoldenImage::SampleMap ? "sample-map " : "golden ") + e.name + " " + file + " " + e.hash + "\n";
+    const std::string kind = e.image == GoldenImage::SampleMap ? "sample-map " : "golden ";
+    list += kind + e.name + " " + file + " " + e.hash + " megakernel\n";
+    // The stream schedule at a width that splits pixels between batches: the same image.
+    list += kind + e.name + "@stream " + file + " " + e.hash + " stream:4099\n";
   }
   const unsigned threads = cmd.threads > 0 ? static_cast<unsigned>(cmd.threads) : default_thread_count();
   for (const ParityCase& c : parity_cases(manifest)) {

@@ -96,9 +96,6 @@ static int run_render(const RenderCommand& cmd) {
     throw InputError(cmd.scene +
                      ": --samples: an adaptive render (noise_threshold, target_error) decides its samples "
                      "from all of them, so it cannot be split into sample ranges; render it whole");
-  if (cmd.device == "cuda" && rs.schedule == Schedule::Stream)
-    throw InputError(cmd.scene + ": --schedule stream: the CUDA renderer runs the megakernel schedule only; the " +
-                     "stream schedule is the CPU's (the image is the same)");
   if (!cmd.sample_map.empty() && !adaptive)
     throw InputError(cmd.scene + ": --sample-map: only an adaptive render (noise_threshold, target_error) has one");
   if (!cmd.sample_map.empty()) check_image_output(cmd.sample_map, "--sample-map");
@@ -181,7 +178,7 @@ static int run_render(const RenderCommand& cmd) {
                  {"secondary", stats.rays.secondary},
                  {"total", rays}};
     j["mrays_per_second"] = mrays;
-    if (rs.schedule == Schedule::Stream && cmd.device != "cuda")
+    if (rs.schedule == Schedule::Stream)
       j["stream"] = {{"width", rs.stream_width},
                      {"batches", stats.stream.batches},
                      {"waves", stats.stream.waves},

@@ -21,17 +21,6 @@ namespace {
 
 constexpr size_t kChunk = 256;  // queue entries per work item of a stage
 
-// Host memory for the state arrays, aligned for any kernel type (each CPU kernel variant has
-// its own copy of Hit and the Whitted types, of the same layout).
-struct HostArrays {
-  std::vector<std::vector<std::max_align_t>> blocks;
-  template <class T>
-  T* operator()(T*, size_t count) {
-    blocks.emplace_back((count * sizeof(T) + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t));
-    return reinterpret_cast<T*>(blocks.back().data());
-  }
-};
-
 // Runs `stage` over queue[0, size) on all threads.
 void run_stage(const CpuKernelVariant& variant, const SceneView& view, StreamStage stage, const StreamStates& states,
                const std::vector<uint32_t>& queue, size_t size, int threads, RayCounts& counts) {
@@ -158,7 +147,7 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
   const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGESIZE);
   if (pages > 0 && page_size > 0 && state_bytes > static_cast<size_t>(pages) * static_cast<size_t>(page_size) / 2)
     throw refuse("exceed half of this machine's memory");
-  HostArrays arrays;
+  HostStreamArrays arrays;
   OpenMpStream backend{view, variant, target, threads, counts, {}, {}};
   try {
     backend.states = allocate_stream_states(view.settings, width, arrays);

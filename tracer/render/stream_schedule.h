@@ -21,10 +21,32 @@
 #include <cstdint>
 #include <functional>
 
+#include "kernel/base/film.h"
 #include "kernel/integrator/stream.h"
-#include "render/render_stream.h"
 
 namespace tracer {
+
+// What a stream render measured: queue sizes and the memory of its ray states.
+struct StreamStats {
+  uint64_t batches = 0;
+  uint64_t waves = 0;          // rounds of closest-hit, shade and shadow stages
+  uint64_t largest_queue = 0;  // states in the largest closest-hit queue
+  uint64_t shadow_rays = 0;    // entries of all shadow queues
+  size_t bytes_per_state = 0;  // the ray-state arrays' bytes per sample in flight
+  size_t state_bytes = 0;      // all of them, for the stream width
+};
+
+// Where a stream render's samples go: samples [begin, end) of pixels[0..count) (indices
+// y * width + x; every pixel in order when `pixels` is null, count = width * height), added
+// to film[pixel], or by sample parity to even[pixel] and odd[pixel] (adaptive sampling).
+struct StreamTarget {
+  const uint32_t* pixels;
+  size_t count;
+  uint32_t begin, end;
+  FilmSum* film;
+  FilmSum* even;
+  FilmSum* odd;
+};
 
 enum class StreamQueue : uint32_t { Work, Trace, Shadow, Resume };
 constexpr uint32_t kStreamQueueCount = 4;

@@ -4,6 +4,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "kernel/integrator/stream.h"
 
@@ -45,6 +46,17 @@ StreamStates allocate_stream_states(const RenderSettings& rs, size_t width, Allo
   st.top = array(static_cast<uint32_t*>(nullptr), whitted);
   return st;
 }
+
+// Host memory for the state arrays, aligned for any kernel type (each CPU kernel variant has
+// its own copy of Hit and the Whitted types, of the same layout).
+struct HostStreamArrays {
+  std::vector<std::vector<std::max_align_t>> blocks;
+  template <class T>
+  T* operator()(T*, size_t count) {
+    blocks.emplace_back((count * sizeof(T) + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t));
+    return reinterpret_cast<T*>(blocks.back().data());
+  }
+};
 
 // Bytes per sample in flight: the state arrays and the queue entries.
 inline size_t stream_bytes_per_state(const RenderSettings& rs) {

@@ -1,0 +1,192 @@
+#include <thrust/copy.h>
+#include <thrust/execution_policy.h>
+
+#include <cstdio>
+#include <string>
+
+#include "cuda_device.h"
+#include "cuda_event.h"
+#include "gpu_stream.h"
+#include "render/stream_schedule.h"
+
+namespace tracer {
+namespace {
+
+constexpr uint32_t kBlock = 128;
+
+uint32_t blocks_for(size_t n) { return static_cast<uint32_t>((n + kBlock - 1) / kBlock); }
+
+// Items [first, first + count) of the target, pixel-major, as states 0..count-1; the work
+// queue in order.
+__global__ void begin_batch_kernel(StreamTarget target, uint64_t first, size_t count, StreamStates st, uint32_t* work) {
+  const size_t i = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (i >= count) return;
+  const uint32_t samples = target.end - target.begin;
+  const uint64_t g = first + i;
+  const size_t p = static_cast<size_t>(g / samples);
+  st.pixel[i] = target.pixels ? target.pixels[p] : static_cast<uint32_t>(p);
+  st.sample[i] = target.begin + static_cast<uint32_t>(g % samples);
+  work[i] = static_cast<uint32_t>(i);
+}
+
+// One stage over a queue; the stage is a template argument, so each kernel holds its code alone.
+template <StreamStage kStage>
+__global__ void stage_kernel(const SceneView scene, StreamStates st, const uint32_t* queue, size_t size,
+                             unsigned long long* counters) {
+  const size_t q = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (q >= size) return;
+  RayCounts counts = {0, 0, 0};
+  stream_stage(scene, kStage, st, queue[q], counts);
+  // Integer sums: the totals do not depend on the order threads add them in.
+  if (counts.camera) atomicAdd(&counters[0], static_cast<unsigned long long>(counts.camera));
+  if (counts.secondary) atomicAdd(&counters[1], static_cast<unsigned long long>(counts.secondary));
+  if (counts.shadow) atomicAdd(&counters[2], static_cast<unsigned long long>(counts.shadow));
+}
+
+// The batch's radiance into the film, one thread per pixel, its samples in order.
+__global__ void end_batch_kernel(StreamTarget target, uint64_t first, size_t count, uint64_t first_pixel,
+                                 uint64_t pixels, StreamStates st) {
+  const uint64_t k = static_cast<uint64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (k >= pixels) return;
+  const uint64_t p = first_pixel + k, samples = target.end - target.begin;
+  const uint64_t from = p * samples > first ? p * samples : first;
+  const uint64_t to = (p + 1) * samples < first + count ? (p + 1) * samples : first + count;
+  for (uint64_t g = from; g < to; ++g) {
+    const size_t i = static_cast<size_t>(g - first);
+    const uint32_t pixel = st.pixel[i];
+    FilmSum& sum =
+        target.film ? target.film[pixel] : (st.sample[i] % 2u == 0u ? target.even[pixel] : target.odd[pixel]);
+    film_add(sum, st.radiance[i]);
+  }
+}
+
+struct HasNext {
+  const uint8_t* next;
+  uint8_t bit;
+  __device__ bool operator()(uint32_t i) const { return (next[i] & bit) != 0u; }
+};
+
+// Device memory for the state arrays (cudaMalloc aligns every block to 256 bytes).
+struct DeviceArrays {
+  std::vector<DeviceBuffer<unsigned char>>& blocks;
+  template <class T>
+  T* operator()(T*, size_t count) {
+    blocks.emplace_back(count * sizeof(T));
+    return reinterpret_cast<T*>(blocks.back().get());
+  }
+};
+
+size_t stream_width_for(const RenderSettings& rs, uint64_t total) {
+  return static_cast<size_t>(total < rs.stream_width ? total : rs.stream_width);
+}
+
+// The CUDA backend of schedule_stream.
+struct CudaStream {
+  const SceneView& scene;
+  const StreamTarget& target;
+  const StreamStates& states;
+  DeviceBuffer<uint32_t>* queues;
+  unsigned long long* counters;
+
+  uint32_t* queue(StreamQueue q) { return queues[static_cast<uint32_t>(q)].get(); }
+
+  void begin_batch(uint64_t first, size_t count) {
+    begin_batch_kernel<<<blocks_for(count), kBlock>>>(target, first, count, states, queue(StreamQueue::Work));
+    TRACER_CUDA_CHECK(cudaGetLastError());
+  }
+
+  void run(StreamStage stage, StreamQueue q, size_t size) {
+    if (size == 0) return;
+    const uint32_t grid = blocks_for(size);
+    switch (stage) {
+      case StreamStage::Generate:
+        stage_kernel<StreamStage::Generate><<<grid, kBlock>>>(scene, states, queue(q), size, counters);
+        break;
+      case StreamStage::Closest:
+        stage_kernel<StreamStage::Closest><<<grid, kBlock>>>(scene, states, queue(q), size, counters);
+        break;
+      case StreamStage::Shade:
+        stage_kernel<StreamStage::Shade><<<grid, kBlock>>>(scene, states, queue(q), size, counters);
+        break;
+      case StreamStage::Shadow:
+        stage_kernel<StreamStage::Shadow><<<grid, kBlock>>>(scene, states, queue(q), size, counters);
+        break;
+    }
+    TRACER_CUDA_CHECK(cudaGetLastError());
+  }
+
+  size_t append(StreamQueue to, size_t to_size, StreamQueue from, size_t from_size) {
+    if (from_size > 0)
+      TRACER_CUDA_CHECK(
+          cudaMemcpyAsync(queue(to) + to_size, queue(from), from_size * sizeof(uint32_t), cudaMemcpyDeviceToDevice));
+    return to_size + from_size;
+  }
+
+  // Stable: thrust::copy_if keeps the order of the entries it copies.
+  size_t filter(StreamQueue in, size_t size, uint8_t bit, StreamQueue out) {
+    if (size == 0) return 0;
+    uint32_t* end = thrust::copy_if(thrust::device, queue(in), queue(in) + size, queue(out), HasNext{states.next, bit});
+    return static_cast<size_t>(end - queue(out));
+  }
+
+  void swap(StreamQueue a, StreamQueue b) {
+    std::swap(queues[static_cast<uint32_t>(a)], queues[static_cast<uint32_t>(b)]);
+  }
+
+  void end_batch(uint64_t first, size_t count) {
+    const uint64_t samples = target.end - target.begin;
+    const uint64_t first_pixel = first / samples, pixels = (first + count - 1) / samples - first_pixel + 1;
+    end_batch_kernel<<<blocks_for(pixels), kBlock>>>(target, first, count, first_pixel, pixels, states);
+    TRACER_CUDA_CHECK(cudaGetLastError());
+  }
+};
+
+template <class Kernel>
+std::string describe_kernel(const char* name, Kernel kernel, const cudaDeviceProp& prop) {
+  cudaFuncAttributes attr{};
+  TRACER_CUDA_CHECK(cudaFuncGetAttributes(&attr, kernel));
+  int blocks = 0;
+  TRACER_CUDA_CHECK(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&blocks, kernel, kBlock, 0));
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "%s: %d registers, %zu bytes of local memory per thread; %u-thread blocks: %.0f %% occupancy", name,
+                attr.numRegs, static_cast<size_t>(attr.localSizeBytes), kBlock,
+                100.0 * blocks * kBlock / prop.maxThreadsPerMultiProcessor);
+  return text;
+}
+
+}  // namespace
+
+std::string describe_stream_kernels() {
+  const cudaDeviceProp prop = select_cuda_device();
+  return describe_kernel("stream generate", stage_kernel<StreamStage::Generate>, prop) + "\n" +
+         describe_kernel("stream closest", stage_kernel<StreamStage::Closest>, prop) + "\n" +
+         describe_kernel("stream shade", stage_kernel<StreamStage::Shade>, prop) + "\n" +
+         describe_kernel("stream shadow", stage_kernel<StreamStage::Shadow>, prop);
+}
+
+size_t GpuStream::device_bytes(const RenderSettings& rs, uint64_t total) {
+  return stream_bytes_per_state(rs) * stream_width_for(rs, total);
+}
+
+GpuStream::GpuStream(const SceneView& device_view, uint64_t total)
+    : scene_(device_view), width_(stream_width_for(device_view.settings, total)) {
+  if (width_ == 0) return;
+  states_ = allocate_stream_states(scene_.settings, width_, DeviceArrays{blocks_});
+  for (uint32_t q = 0; q < stream_queue_count(scene_.settings); ++q) queues_[q] = DeviceBuffer<uint32_t>(width_);
+}
+
+double GpuStream::render(const StreamTarget& target, unsigned long long* counters, StreamStats& stats) {
+  const uint64_t total = static_cast<uint64_t>(target.count) * (target.end - target.begin);
+  stats.bytes_per_state = stream_bytes_per_state(scene_.settings);
+  stats.state_bytes = stats.bytes_per_state * width_;
+  if (total == 0) return 0.0;
+  CudaStream backend{scene_, target, states_, queues_, counters};
+  const CudaEvent start, stop;
+  TRACER_CUDA_CHECK(cudaEventRecord(start.event));
+  schedule_stream(scene_.settings, total, width_, backend, stats);
+  TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
+  return seconds_between(start, stop);
+}
+
+}  // namespace tracer

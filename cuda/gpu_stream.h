@@ -1,0 +1,35 @@
+// The stream schedule on the GPU (docs/path.md, "The stream schedule"): render/stream_schedule.h's
+// loop with a CUDA grid per stage (a kernel per StreamStage, so each holds only its stage's
+// code and registers), stable compaction of the queues by thrust::copy_if, and the batch's
+// samples added to the film in pixel-sample order by one thread per pixel. Shared by
+// `--device cuda` and the runner, for whole renders (gpu_film.cu) and adaptive passes
+// (gpu_adaptive.cu). CUDA header: included by .cu files only.
+#pragma once
+#include "device_buffer.h"
+#include "render/stream_schedule.h"
+#include "render/stream_states.h"
+
+namespace tracer {
+
+class GpuStream {
+ public:
+  // Device bytes of the states and queues for at most `total` samples in flight at a time.
+  static size_t device_bytes(const RenderSettings& rs, uint64_t total);
+
+  // Ray states and queues on the device for min(stream_width, total) samples.
+  GpuStream(const SceneView& device_view, uint64_t total);
+
+  // `target` holds device pointers; ray counts are added to counters[0..2] (camera,
+  // secondary, shadow) on the device. Returns the seconds between the first and last
+  // kernel (CUDA events), the host's compaction waits included.
+  double render(const StreamTarget& target, unsigned long long* counters, StreamStats& stats);
+
+ private:
+  SceneView scene_;
+  size_t width_;
+  std::vector<DeviceBuffer<unsigned char>> blocks_;
+  StreamStates states_{};
+  DeviceBuffer<uint32_t> queues_[4];
+};
+
+}  // namespace tracer

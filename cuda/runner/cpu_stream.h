@@ -1,0 +1,79 @@
+// The runner's CPU scheduler of the stream schedule: render/stream_schedule.h's loop with the
+// stages on std::threads (parallel_for) and the compaction and film on one thread, so the
+// pack's stream rows run without a GPU and give the film the tracer's OpenMP backend and the
+// GPU's give, bit for bit.
+#pragma once
+#include <atomic>
+#include <vector>
+
+#include "parity/parallel_for.h"
+#include "render/stream_schedule.h"
+#include "render/stream_states.h"
+
+namespace tracer {
+
+inline void render_stream_on_cpu(const SceneView& view, const StreamTarget& target, unsigned threads, RayCounts& rays,
+                                 StreamStats& stats) {
+  struct Backend {
+    const SceneView& view;
+    const StreamTarget& target;
+    unsigned threads;
+    StreamStates states;
+    std::vector<uint32_t> queues[kStreamQueueCount];
+    std::atomic<uint64_t> camera{0}, secondary{0}, shadow{0};
+
+    std::vector<uint32_t>& queue(StreamQueue q) { return queues[static_cast<uint32_t>(q)]; }
+    void begin_batch(uint64_t first, size_t count) {
+      const uint32_t samples = target.end - target.begin;
+      queue(StreamQueue::Work).resize(count);
+      for (size_t i = 0; i < count; ++i) {
+        const size_t p = static_cast<size_t>((first + i) / samples);
+        states.pixel[i] = target.pixels ? target.pixels[p] : static_cast<uint32_t>(p);
+        states.sample[i] = target.begin + static_cast<uint32_t>((first + i) % samples);
+        queue(StreamQueue::Work)[i] = static_cast<uint32_t>(i);
+      }
+    }
+    void run(StreamStage stage, StreamQueue q, size_t size) {
+      const std::vector<uint32_t>& entries = queue(q);
+      parallel_for(size, threads, [&](size_t k) {
+        RayCounts c = {0, 0, 0};
+        stream_stage(view, stage, states, entries[k], c);
+        if (c.camera) camera += c.camera;
+        if (c.secondary) secondary += c.secondary;
+        if (c.shadow) shadow += c.shadow;
+      });
+    }
+    size_t append(StreamQueue to, size_t to_size, StreamQueue from, size_t from_size) {
+      queue(to).resize(to_size);
+      queue(to).insert(queue(to).end(), queue(from).begin(), queue(from).begin() + static_cast<ptrdiff_t>(from_size));
+      return queue(to).size();
+    }
+    size_t filter(StreamQueue in, size_t size, uint8_t bit, StreamQueue out) {
+      queue(out).clear();
+      for (size_t k = 0; k < size; ++k)
+        if (states.next[queue(in)[k]] & bit) queue(out).push_back(queue(in)[k]);
+      return queue(out).size();
+    }
+    void swap(StreamQueue a, StreamQueue b) { queue(a).swap(queue(b)); }
+    // Items are pixel-major, so their order is pixel-sample order.
+    void end_batch(uint64_t, size_t count) {
+      for (size_t i = 0; i < count; ++i) {
+        const uint32_t pixel = states.pixel[i];
+        film_add(
+            target.film ? target.film[pixel] : (states.sample[i] % 2u == 0u ? target.even[pixel] : target.odd[pixel]),
+            states.radiance[i]);
+      }
+    }
+  };
+  const uint64_t total = static_cast<uint64_t>(target.count) * (target.end - target.begin);
+  const size_t width = static_cast<size_t>(total < view.settings.stream_width ? total : view.settings.stream_width);
+  stats.bytes_per_state = stream_bytes_per_state(view.settings);
+  stats.state_bytes = stats.bytes_per_state * width;
+  if (width == 0) return;
+  HostStreamArrays arrays;
+  Backend backend{view, target, threads, allocate_stream_states(view.settings, width, arrays), {}, {}, {}, {}};
+  schedule_stream(view.settings, total, width, backend, stats);
+  rays.camera += backend.camera, rays.secondary += backend.secondary, rays.shadow += backend.shadow;
+}
+
+}  // namespace tracer
