@@ -1,6 +1,3 @@
-#include <thrust/copy.h>
-#include <thrust/execution_policy.h>
-
 #include <cstdio>
 #include <string>
 
@@ -60,11 +57,29 @@ __global__ void end_batch_kernel(StreamTarget target, uint64_t first, size_t cou
   }
 }
 
-struct HasNext {
-  const uint8_t* next;
-  uint8_t bit;
-  __device__ bool operator()(uint32_t i) const { return (next[i] & bit) != 0u; }
-};
+// An index of `queue` for each lane whose `pred` holds, one atomic per warp (every lane of the
+// warp calls it).
+__device__ void warp_append(bool pred, uint32_t value, uint32_t* queue, uint32_t* size) {
+  const unsigned lane = threadIdx.x % 32u, mask = __ballot_sync(0xffffffffu, pred);
+  if (mask == 0u) return;
+  const unsigned leader = static_cast<unsigned>(__ffs(mask)) - 1u;
+  uint32_t base = 0;
+  if (lane == leader) base = atomicAdd(size, static_cast<uint32_t>(__popc(mask)));
+  base = __shfl_sync(0xffffffffu, base, leader);
+  if (pred) queue[base + static_cast<uint32_t>(__popc(mask & ((1u << lane) - 1u)))] = value;
+}
+
+// The work queue split by next[] bits into the trace, shadow and resume queues, in the order
+// the warps arrive: a queue's order changes no sample (stream_schedule.h).
+__global__ void split_kernel(const uint32_t* work, size_t size, const uint8_t* next, uint32_t* trace,
+                             uint32_t* shadow, uint32_t* resume, uint32_t* sizes) {
+  const size_t k = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  const uint32_t i = k < size ? work[k] : 0u;
+  const uint8_t bits = k < size ? next[i] : 0u;
+  warp_append((bits & kStreamTrace) != 0u, i, trace, &sizes[0]);
+  warp_append((bits & kStreamShadow) != 0u, i, shadow, &sizes[1]);
+  warp_append((bits & kStreamResume) != 0u, i, resume, &sizes[2]);
+}
 
 // Device memory for the state arrays (cudaMalloc aligns every block to 256 bytes).
 struct DeviceArrays {
@@ -87,6 +102,7 @@ struct CudaStream {
   const StreamStates& states;
   DeviceBuffer<uint32_t>* queues;
   unsigned long long* counters;
+  uint32_t* split_sizes;  // 3 on the device
 
   uint32_t* queue(StreamQueue q) { return queues[static_cast<uint32_t>(q)].get(); }
 
@@ -122,12 +138,19 @@ struct CudaStream {
     return to_size + from_size;
   }
 
-  // Stable: thrust::copy_if keeps the order of the entries it copies.
-  size_t filter(StreamQueue in, size_t size, uint8_t bit, StreamQueue out) {
-    if (size == 0) return 0;
-    uint32_t* end = thrust::copy_if(thrust::device, queue(in), queue(in) + size, queue(out), HasNext{states.next, bit});
-    return static_cast<size_t>(end - queue(out));
+  StreamSplit split(size_t work) {
+    if (work == 0) return {0, 0, 0};
+    TRACER_CUDA_CHECK(cudaMemsetAsync(split_sizes, 0, 3 * sizeof(uint32_t)));
+    split_kernel<<<blocks_for(work), kBlock>>>(queue(StreamQueue::Work), work, states.next, queue(StreamQueue::Trace),
+                                               queue(StreamQueue::Shadow), resume_queue(), split_sizes);
+    TRACER_CUDA_CHECK(cudaGetLastError());
+    uint32_t sizes[3];
+    TRACER_CUDA_CHECK(cudaMemcpy(sizes, split_sizes, sizeof sizes, cudaMemcpyDeviceToHost));
+    return {sizes[0], sizes[1], sizes[2]};
   }
+
+  // Only a Whitted vertex resumes; other integrators have no resume queue and set no such bit.
+  uint32_t* resume_queue() { return queues[static_cast<uint32_t>(StreamQueue::Resume)].get(); }
 
   void swap(StreamQueue a, StreamQueue b) {
     std::swap(queues[static_cast<uint32_t>(a)], queues[static_cast<uint32_t>(b)]);
@@ -174,6 +197,7 @@ GpuStream::GpuStream(const SceneView& device_view, uint64_t total)
   if (width_ == 0) return;
   states_ = allocate_stream_states(scene_.settings, width_, DeviceArrays{blocks_});
   for (uint32_t q = 0; q < stream_queue_count(scene_.settings); ++q) queues_[q] = DeviceBuffer<uint32_t>(width_);
+  split_sizes_ = DeviceBuffer<uint32_t>(3);
 }
 
 double GpuStream::render(const StreamTarget& target, unsigned long long* counters, StreamStats& stats) {
@@ -181,7 +205,7 @@ double GpuStream::render(const StreamTarget& target, unsigned long long* counter
   stats.bytes_per_state = stream_bytes_per_state(scene_.settings);
   stats.state_bytes = stats.bytes_per_state * width_;
   if (total == 0) return 0.0;
-  CudaStream backend{scene_, target, states_, queues_, counters};
+  CudaStream backend{scene_, target, states_, queues_, counters, split_sizes_.get()};
   const CudaEvent start, stop;
   TRACER_CUDA_CHECK(cudaEventRecord(start.event));
   schedule_stream(scene_.settings, total, width_, backend, stats);

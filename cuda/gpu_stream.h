@@ -1,7 +1,8 @@
 // The stream schedule on the GPU (docs/path.md, "The stream schedule"): render/stream_schedule.h's
 // loop with a CUDA grid per stage (a kernel per StreamStage, so each holds only its stage's
-// code and registers), stable compaction of the queues by thrust::copy_if, and the batch's
-// samples added to the film in pixel-sample order by one thread per pixel. Shared by
+// code and registers), the work queue split into the next queues by one kernel with an
+// atomic per warp and queue, and the batch's samples added to the film in pixel-sample
+// order by one thread per pixel. Shared by
 // `--device cuda` and the runner, for whole renders (gpu_film.cu) and adaptive passes
 // (gpu_adaptive.cu). CUDA header: included by .cu files only.
 #pragma once
@@ -30,6 +31,7 @@ class GpuStream {
   std::vector<DeviceBuffer<unsigned char>> blocks_;
   StreamStates states_{};
   DeviceBuffer<uint32_t> queues_[4];
+  DeviceBuffer<uint32_t> split_sizes_;
 };
 
 }  // namespace tracer

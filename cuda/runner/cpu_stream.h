@@ -48,11 +48,15 @@ inline void render_stream_on_cpu(const SceneView& view, const StreamTarget& targ
       queue(to).insert(queue(to).end(), queue(from).begin(), queue(from).begin() + static_cast<ptrdiff_t>(from_size));
       return queue(to).size();
     }
-    size_t filter(StreamQueue in, size_t size, uint8_t bit, StreamQueue out) {
-      queue(out).clear();
-      for (size_t k = 0; k < size; ++k)
-        if (states.next[queue(in)[k]] & bit) queue(out).push_back(queue(in)[k]);
-      return queue(out).size();
+    StreamSplit split(size_t work) {
+      for (StreamQueue q : {StreamQueue::Trace, StreamQueue::Shadow, StreamQueue::Resume}) queue(q).clear();
+      for (size_t k = 0; k < work; ++k) {
+        const uint32_t i = queue(StreamQueue::Work)[k];
+        if (states.next[i] & kStreamTrace) queue(StreamQueue::Trace).push_back(i);
+        if (states.next[i] & kStreamShadow) queue(StreamQueue::Shadow).push_back(i);
+        if (states.next[i] & kStreamResume) queue(StreamQueue::Resume).push_back(i);
+      }
+      return {queue(StreamQueue::Trace).size(), queue(StreamQueue::Shadow).size(), queue(StreamQueue::Resume).size()};
     }
     void swap(StreamQueue a, StreamQueue b) { queue(a).swap(queue(b)); }
     // Items are pixel-major, so their order is pixel-sample order.

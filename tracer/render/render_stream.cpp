@@ -100,9 +100,15 @@ struct OpenMpStream {
     return t.size();
   }
 
-  size_t filter(StreamQueue in, size_t size, uint8_t bit, StreamQueue out) {
-    filter_queue(queue(in), size, states.next, bit, queue(out), threads);
-    return queue(out).size();
+  // Stable: each queue keeps the work queue's order.
+  StreamSplit split(size_t work) {
+    const auto filter = [&](uint8_t bit, StreamQueue out) {
+      filter_queue(queue(StreamQueue::Work), work, states.next, bit, queue(out), threads);
+      return queue(out).size();
+    };
+    const bool whitted = view.settings.integrator == IntegratorKind::Whitted;  // only a Whitted vertex resumes
+    return {filter(kStreamTrace, StreamQueue::Trace), filter(kStreamShadow, StreamQueue::Shadow),
+            whitted ? filter(kStreamResume, StreamQueue::Resume) : 0};
   }
 
   void swap(StreamQueue a, StreamQueue b) { queue(a).swap(queue(b)); }

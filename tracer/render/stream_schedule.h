@@ -4,7 +4,8 @@
 // `width` pixel samples becomes ray states; each wave runs closest hit over the work queue,
 // shades it (with the Whitted states resumed after a shadow ray), runs the shadow queue,
 // then compacts the work queue to the states that trace a ray next. The batch's samples go
-// into the film in pixel-sample order, so the film is the megakernel's whichever backend ran.
+// into the film in pixel-sample order, so the film is the megakernel's whichever backend ran
+// and whatever order its queues hold (a state's radiance depends on its own counters only).
 //
 // A backend has, for queues named by StreamQueue:
 //   void begin_batch(uint64_t first, size_t count)   items [first, first + count) of the target
@@ -12,8 +13,10 @@
 //                                                    Work queue holds them in order
 //   void run(StreamStage, StreamQueue, size_t size)  the stage over the queue's first `size` entries
 //   size_t append(StreamQueue to, size_t to_size, StreamQueue from, size_t from_size)  new size
-//   size_t filter(StreamQueue in, size_t size, uint8_t bit, StreamQueue out)  the entries of `in`
-//                                                    whose next[] has `bit`, in order; their count
+//   StreamSplit split(size_t work)                   the first `work` entries of Work into Trace,
+//                                                    Shadow and Resume by their next[] bits
+//                                                    (kStreamTrace, kStreamShadow, kStreamResume);
+//                                                    the order within a queue is the backend's
 //   void swap(StreamQueue, StreamQueue)
 //   void end_batch(uint64_t first, size_t count)     the batch's radiance into the film
 #pragma once
@@ -51,10 +54,14 @@ struct StreamTarget {
 enum class StreamQueue : uint32_t { Work, Trace, Shadow, Resume };
 constexpr uint32_t kStreamQueueCount = 4;
 
+// The sizes of the queues a split fills.
+struct StreamSplit {
+  size_t trace, shadow, resume;
+};
+
 template <class Backend>
 void schedule_stream(const RenderSettings& rs, uint64_t total, size_t width, Backend& backend, StreamStats& stats,
                      const std::function<void(uint64_t done, uint64_t total)>& progress = {}) {
-  const bool whitted = rs.integrator == IntegratorKind::Whitted;  // only a Whitted vertex resumes
   for (uint64_t first = 0; first < total; first += width) {
     const size_t count = static_cast<size_t>(std::min<uint64_t>(width, total - first));
     backend.begin_batch(first, count);
@@ -66,11 +73,10 @@ void schedule_stream(const RenderSettings& rs, uint64_t total, size_t width, Bac
       backend.run(StreamStage::Closest, StreamQueue::Work, work);
       work = backend.append(StreamQueue::Work, work, StreamQueue::Resume, resume);  // shaded without a new hit
       backend.run(StreamStage::Shade, StreamQueue::Work, work);
-      const size_t shadow = backend.filter(StreamQueue::Work, work, kStreamShadow, StreamQueue::Shadow);
-      stats.shadow_rays += shadow;
-      backend.run(StreamStage::Shadow, StreamQueue::Shadow, shadow);
-      resume = whitted ? backend.filter(StreamQueue::Work, work, kStreamResume, StreamQueue::Resume) : 0;
-      work = backend.filter(StreamQueue::Work, work, kStreamTrace, StreamQueue::Trace);
+      const StreamSplit split = backend.split(work);  // the shadow stage changes no next[] bit
+      stats.shadow_rays += split.shadow;
+      backend.run(StreamStage::Shadow, StreamQueue::Shadow, split.shadow);
+      resume = split.resume, work = split.trace;
       backend.swap(StreamQueue::Work, StreamQueue::Trace);
     }
     backend.end_batch(first, count);
