@@ -45,9 +45,11 @@ TEST(GpuPack, RunnerOnTheCpuReproducesEveryGoldenHashAndParityAnswer) {
   for (const GoldenEntry& e : manifest.entries) {
     std::ostringstream row;
     row << std::left << std::setw(10) << (e.image == GoldenImage::SampleMap ? "sample-map" : "golden") << " " << e.name;
-    const size_t at = out.find(row.str() + " ");
-    ASSERT_NE(at, std::string::npos) << e.name << " has no row:\n" << out;
-    EXPECT_NE(out.substr(at, 60).find("PASS"), std::string::npos) << out.substr(at, 200);
+    for (const char* schedule : {" ", "@stream "}) {  // the stream schedule's row: the same hash
+      const size_t at = out.find(row.str() + schedule);
+      ASSERT_NE(at, std::string::npos) << e.name << schedule << " has no row:\n" << out;
+      EXPECT_NE(out.substr(at, 60).find("PASS"), std::string::npos) << out.substr(at, 200);
+    }
   }
   for (const char* c :
        {"math-sin", "math-pow", "philox", "shapes", "trace-mesh-bvh", "trace-mesh-lbvh", "trace-mesh-kdtree",
@@ -99,8 +101,11 @@ TEST(GpuPack, AWrongGoldenHashFailsItsRowAndThePack) {
 // bench.tsv lists the tables of `tracer bench device`; the runner times its rows.
 TEST(GpuPack, BenchRowsCoverTheDeviceTablesAndTheRunnerTimesThem) {
   const std::string list = slurp(pack() / "bench.tsv");
-  for (const char* row : {"main cornell-box-1spp-center ", "main cornell-box-4spp-grid ", "effects none-1spp-center ",
-                          "effects all-2spp-stochastic ", "resolution 1920x1080-4spp-grid ", "mesh sphere-"})
+  for (const char* row :
+       {"main cornell-box-1spp-center ", "main cornell-box-4spp-grid ", "effects none-1spp-center ",
+        "effects all-2spp-stochastic ", "resolution 1920x1080-4spp-grid ", "mesh sphere-",
+        "schedule cornell-box-path-16spp-megakernel ", "schedule cornell-box-path-16spp-stream:4194304 ",
+        "schedule sphere-4spp-grid-stream:262144 "})
     EXPECT_NE(list.find(row), std::string::npos) << row << " missing:\n" << list;
   const fs::path dir = test::temp_dir("gpu-pack-bench");
   fs::create_directories(dir / "bench");
@@ -209,6 +214,34 @@ TEST_F(BundleInput, TheRunnerRendersItAndAWrongExpectedHashFails) {
   EXPECT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu --expect " + hash, &out), 0) << out;
   EXPECT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu --expect sha1:0", &out), 1) << out;
   EXPECT_NE(out.find("FAIL"), std::string::npos) << out;
+}
+
+// --schedule stream renders the megakernel's film at any width; bad schedules exit 2 and
+// leave the film output as it was, in a pack row too.
+TEST_F(BundleInput, TheRunnerStreamsTheMegakernelsFilmAndRefusesBadSchedules) {
+  std::string out;
+  ASSERT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu", &out), 0) << out;
+  const std::string hash = out.substr(0, out.find(' '));
+  for (const char* width : {"7", "768", "16777216"})
+    EXPECT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu --schedule stream --stream-width " +
+                                    width + " --expect " + hash,
+                                &out),
+              0)
+        << width << ": " << out;
+  const fs::path film = dir_ / "out.film";
+  for (const std::string bad :
+       {"--schedule streams", "--schedule", "--stream-width 0", "--stream-width 16777217", "--stream-width 1e3"}) {
+    spill(film, "earlier film");
+    EXPECT_EQ(
+        test::run_command(runner() + " render " + bundle_ + " --device cpu " + bad + " -o " + film.string(), &out), 2)
+        << bad << ": " << out;
+    EXPECT_NE(out.find("error: --s"), std::string::npos) << bad << ": " << out;
+    EXPECT_EQ(slurp(film), "earlier film") << bad;
+  }
+  fs::copy_file(bundle_, dir_ / "b.bundle");
+  spill(dir_ / "pack.tsv", "golden b b.bundle " + hash + " stream:0\n");
+  EXPECT_EQ(test::run_command(runner() + " pack " + dir_.string() + " --device cpu", &out), 1) << out;
+  EXPECT_NE(out.find("pack.tsv: b: --stream-width 0: expected a whole number"), std::string::npos) << out;
 }
 
 // An adaptive bundle (8 spp, below the default min_spp of 16, which the render takes as
