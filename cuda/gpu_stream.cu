@@ -50,6 +50,10 @@ __global__ void end_batch_kernel(StreamTarget target, uint64_t first, size_t cou
   const uint64_t to = (p + 1) * samples < first + count ? (p + 1) * samples : first + count;
   for (uint64_t g = from; g < to; ++g) {
     const size_t i = static_cast<size_t>(g - first);
+    if (target.samples) {
+      target.samples[g] = st.radiance[i];
+      continue;
+    }
     const uint32_t pixel = st.pixel[i];
     FilmSum& sum =
         target.film ? target.film[pixel] : (st.sample[i] % 2u == 0u ? target.even[pixel] : target.odd[pixel]);
@@ -71,8 +75,8 @@ __device__ void warp_append(bool pred, uint32_t value, uint32_t* queue, uint32_t
 
 // The work queue split by next[] bits into the trace, shadow and resume queues, in the order
 // the warps arrive: a queue's order changes no sample (stream_schedule.h).
-__global__ void split_kernel(const uint32_t* work, size_t size, const uint8_t* next, uint32_t* trace,
-                             uint32_t* shadow, uint32_t* resume, uint32_t* sizes) {
+__global__ void split_kernel(const uint32_t* work, size_t size, const uint8_t* next, uint32_t* trace, uint32_t* shadow,
+                             uint32_t* resume, uint32_t* sizes) {
   const size_t k = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   const uint32_t i = k < size ? work[k] : 0u;
   const uint8_t bits = k < size ? next[i] : 0u;

@@ -1,6 +1,7 @@
 #include "cuda_device.h"
 #include "device_buffer.h"
 #include "device_scene.h"
+#include "gpu_stream.h"
 #include "parity_gpu.h"
 
 namespace tracer::parity {
@@ -101,6 +102,24 @@ std::vector<SampleAnswer> gpu_samples(const SceneArrays& arrays, const SceneView
   const size_t n = static_cast<size_t>(view.settings.width) * view.settings.height;
   DeviceBuffer<SampleAnswer> out(n);
   sample_kernel<<<blocks_for(n), kBlock>>>(device_scene.view(), out.get(), n);
+  finish_launch();
+  return out.download();
+}
+
+std::vector<Vec3> gpu_stream_samples(const SceneArrays& arrays, const SceneView& view) {
+  select_cuda_device();
+  const DeviceScene device_scene(arrays, view);
+  const uint64_t items = static_cast<uint64_t>(view.settings.width) * view.settings.height * view.settings.spp;
+  DeviceBuffer<Vec3> out(items);
+  DeviceBuffer<unsigned long long> counters(3);
+  counters.zero();
+  GpuStream stream(device_scene.view(), items);
+  StreamTarget target = {
+      nullptr, static_cast<size_t>(view.settings.width) * view.settings.height, 0u, view.settings.spp, nullptr, nullptr,
+      nullptr};
+  target.samples = out.get();
+  StreamStats stats;
+  stream.render(target, counters.get(), stats);
   finish_launch();
   return out.download();
 }

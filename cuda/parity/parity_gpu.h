@@ -17,5 +17,7 @@ std::vector<ShapeAnswer> gpu_shapes(const std::vector<ShapeQuery>& queries);
 std::vector<TraceAnswer> gpu_trace(const SceneArrays& arrays, const SceneView& view, const std::vector<Ray>& rays);
 std::vector<AdaptiveAnswer> gpu_adaptive(const std::vector<AdaptiveQuery>& queries);
 std::vector<SampleAnswer> gpu_samples(const SceneArrays& arrays, const SceneView& view);  // every pixel, in index order
+// Every sample's radiance (pixel-major) from the stream schedule's stage kernels.
+std::vector<Vec3> gpu_stream_samples(const SceneArrays& arrays, const SceneView& view);
 
 }  // namespace tracer::parity

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "cpu_stream.h"
 #include "io/sha1.h"
 #include "lbvh_gpu.h"
 #include "parallel_for.h"
@@ -41,7 +42,38 @@ void set_answers(ParityAnswers& r, const std::vector<A>& answers) {
   r.answers_sha1 = sha1_of(answers);
 }
 
+std::vector<uint32_t> every_pixel(const SceneView& view) {
+  std::vector<uint32_t> pixels(static_cast<size_t>(view.settings.width) * view.settings.height);
+  for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = static_cast<uint32_t>(i);
+  return pixels;
+}
+
+// A Stream case's view: the stream schedule at the case's width.
+SceneView stream_view(const ParityCase& c) {
+  SceneView view = c.scene.view();
+  view.settings.schedule = Schedule::Stream;
+  view.settings.stream_width = c.spec.count;
+  return view;
+}
+
 }  // namespace
+
+ParityAnswers reference_parity_answers(const ParityCase& c, unsigned threads) {
+  if (c.spec.kind != ParityKind::Stream) return evaluate_parity_case(c, false, threads);
+  const SceneView view = stream_view(c);
+  const std::vector<uint32_t> pixels = every_pixel(view);
+  const uint32_t spp = view.settings.spp, width = view.settings.width;
+  ParityAnswers r;
+  r.inputs = pixels.size() * spp, r.inputs_sha1 = sha1_of(pixels);
+  std::vector<Vec3> samples(r.inputs);
+  parallel_for(samples.size(), threads, [&](size_t g) {
+    const uint32_t p = static_cast<uint32_t>(g / spp);
+    RayCounts counts = {0, 0, 0};
+    samples[g] = render_sample(view, p % width, p / width, static_cast<uint32_t>(g % spp), counts);
+  });
+  set_answers(r, samples);
+  return r;
+}
 
 ParityAnswers evaluate_parity_case(const ParityCase& c, bool on_gpu, unsigned threads) {
   const ParitySpec& s = c.spec;
@@ -94,13 +126,28 @@ ParityAnswers evaluate_parity_case(const ParityCase& c, bool on_gpu, unsigned th
     }
     case ParityKind::Sample: {
       const SceneView view = c.scene.view();
-      std::vector<uint32_t> pixels(static_cast<size_t>(view.settings.width) * view.settings.height);
-      for (size_t i = 0; i < pixels.size(); ++i) pixels[i] = static_cast<uint32_t>(i);
+      const std::vector<uint32_t> pixels = every_pixel(view);
       r.inputs = pixels.size(), r.inputs_sha1 = sha1_of(pixels);
       set_answers(r, timed([&] {
                     return on_gpu ? gpu_samples(c.scene.arrays, view)
                                   : on_cpu<SampleAnswer>(pixels, threads,
                                                          [&](uint32_t p) { return eval_sample(view, p); });
+                  }));
+      break;
+    }
+    case ParityKind::Stream: {
+      const SceneView view = stream_view(c);
+      const std::vector<uint32_t> pixels = every_pixel(view);
+      r.inputs = pixels.size() * view.settings.spp, r.inputs_sha1 = sha1_of(pixels);
+      set_answers(r, timed([&] {
+                    if (on_gpu) return gpu_stream_samples(c.scene.arrays, view);
+                    std::vector<Vec3> samples(r.inputs);
+                    StreamTarget target = {nullptr, pixels.size(), 0u, view.settings.spp, nullptr, nullptr, nullptr};
+                    target.samples = samples.data();
+                    RayCounts rays{};
+                    StreamStats stats;
+                    render_stream_on_cpu(view, target, threads, rays, stats);
+                    return samples;
                   }));
       break;
     }
@@ -161,7 +208,8 @@ std::string describe_differences(const ParityAnswers& expected, const ParityAnsw
 
 BundleFile encode_parity_case(const ParityCase& c, const ParityAnswers& cpu) {
   BundleFile file;
-  if (c.spec.kind == ParityKind::Trace || c.spec.kind == ParityKind::Sample) file = encode_scene_bundle(c.scene);
+  if (c.spec.kind == ParityKind::Trace || c.spec.kind == ParityKind::Sample || c.spec.kind == ParityKind::Stream)
+    file = encode_scene_bundle(c.scene);
   file.kind = "parity";
   file.add_one("case", c.spec);
   file.add("name", std::vector<char>(c.name.begin(), c.name.end()));
@@ -182,12 +230,14 @@ StoredParityCase read_parity_case(const std::string& path) {
   s.inputs_sha1 = text("inputs_sha1");
   s.answers_sha1 = text("answers_sha1");
   const ParitySpec& spec = s.parity.spec;
-  if (static_cast<uint32_t>(spec.kind) > static_cast<uint32_t>(ParityKind::Adaptive) ||
-      spec.function >= kMathFunctionCount || spec.count > kMaxParityInputs)
+  if (static_cast<uint32_t>(spec.kind) > static_cast<uint32_t>(ParityKind::Stream) ||
+      spec.function >= kMathFunctionCount || spec.count > kMaxParityInputs ||
+      (spec.kind == ParityKind::Stream && spec.count == 0))
     throw InputError(path + ": parity case " + s.parity.name + " has kind " +
                      std::to_string(static_cast<uint32_t>(spec.kind)) + ", function " + std::to_string(spec.function) +
-                     ", count " + std::to_string(spec.count) + " (kinds 0-6, functions 0-8, counts up to 2^24)");
-  if (s.parity.spec.kind == ParityKind::Trace || s.parity.spec.kind == ParityKind::Sample)
+                     ", count " + std::to_string(spec.count) + " (kinds 0-7, functions 0-8, counts up to 2^24)");
+  if (s.parity.spec.kind == ParityKind::Trace || s.parity.spec.kind == ParityKind::Sample ||
+      s.parity.spec.kind == ParityKind::Stream)
     s.parity.scene = decode_scene_bundle(file, path);
   return s;
 }

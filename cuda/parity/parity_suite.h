@@ -11,7 +11,7 @@
 
 namespace tracer::parity {
 
-enum class ParityKind : uint32_t { Math, Philox, Shapes, Trace, Sample, Lbvh, Adaptive };
+enum class ParityKind : uint32_t { Math, Philox, Shapes, Trace, Sample, Lbvh, Adaptive, Stream };
 
 struct ParitySpec {
   ParityKind kind;
@@ -19,7 +19,8 @@ struct ParitySpec {
   uint64_t seed;
   uint32_t count;  // Math: random pairs (and half as many domain points); Philox: queries;
                    // Shapes: spheres and triangles each; Trace: rays; Sample: unused;
-                   // Lbvh: triangles, built into nodes and leaf order; Adaptive: pixels
+                   // Lbvh: triangles, built into nodes and leaf order; Adaptive: pixels;
+                   // Stream: the stream width
   uint32_t reserved;
   Vec3 lo, hi;  // Trace: the box the ray origins are drawn from
 };
@@ -27,7 +28,7 @@ struct ParitySpec {
 struct ParityCase {
   std::string name;
   ParitySpec spec{};
-  SceneBundle scene;  // Trace and Sample
+  SceneBundle scene;  // Trace, Sample and Stream
 };
 
 struct ParityAnswers {
@@ -40,7 +41,12 @@ struct ParityAnswers {
 };
 
 // The case's inputs, evaluated on the GPU (DeviceUnavailable without one) or on the CPU.
+// Stream: every sample's radiance from the stream schedule's stages, on either device.
 ParityAnswers evaluate_parity_case(const ParityCase& c, bool on_gpu, unsigned threads);
+
+// The answers a case is checked against: evaluate_parity_case's on the CPU, except for a
+// Stream case, whose reference is the megakernel's render_sample for every sample.
+ParityAnswers reference_parity_answers(const ParityCase& c, unsigned threads);
 
 // Index and description of answers that differ, at most `limit` of them.
 std::string describe_differences(const ParityAnswers& expected, const ParityAnswers& got, size_t limit);

@@ -2,8 +2,8 @@
 // passes on std::threads (parallel_for) and the decision on the host, the film the tracer's
 // OpenMP scheduler and the GPU's produce, bit for bit.
 #pragma once
-#include "cpu_stream.h"
 #include "kernel/integrator/render_pixel.h"
+#include "parity/cpu_stream.h"
 #include "parity/parallel_for.h"
 #include "render/adaptive_schedule.h"
 

@@ -3,8 +3,8 @@
 // (cpu_stream.h). Pixels do not depend on
 // the thread that computes them, so this film equals the tracer's OpenMP film bit for bit.
 #pragma once
-#include "cpu_stream.h"
 #include "kernel/integrator/render_pixel.h"
+#include "parity/cpu_stream.h"
 #include "parity/parallel_for.h"
 #include "render/film_buffer.h"
 

@@ -242,8 +242,10 @@ bool check_parity(const std::string& path, const Options& o, std::string& detail
     return true;
   }
   detail += "; answers differ from the CPU's";
-  if (o.device == "cuda") {  // recompute the CPU side here to name the inputs that differ
-    const parity::ParityAnswers cpu = parity::evaluate_parity_case(s.parity, false, o.threads);
+  // Recompute the reference here to name the inputs that differ (a Stream case's reference is
+  // the megakernel, so its CPU stream can differ from it too).
+  if (o.device == "cuda" || s.parity.spec.kind == parity::ParityKind::Stream) {
+    const parity::ParityAnswers cpu = parity::reference_parity_answers(s.parity, o.threads);
     detail += cpu.answers_sha1 == s.answers_sha1 ? ":\n" + parity::describe_differences(cpu, got, 5)
                                                  : " (and this machine's CPU differs from the pack's too)";
   }

@@ -51,9 +51,9 @@ TEST(GpuPack, RunnerOnTheCpuReproducesEveryGoldenHashAndParityAnswer) {
       EXPECT_NE(out.substr(at, 60).find("PASS"), std::string::npos) << out.substr(at, 200);
     }
   }
-  for (const char* c :
-       {"math-sin", "math-pow", "philox", "shapes", "trace-mesh-bvh", "trace-mesh-lbvh", "trace-mesh-kdtree",
-        "trace-mesh-grid", "trace-mesh-none", "adaptive-decision", "lbvh-build-1m", "sample-cornell-box"})
+  for (const char* c : {"math-sin", "math-pow", "philox", "shapes", "trace-mesh-bvh", "trace-mesh-lbvh",
+                        "trace-mesh-kdtree", "trace-mesh-grid", "trace-mesh-none", "adaptive-decision", "lbvh-build-1m",
+                        "sample-cornell-box", "stream-cornell-box", "stream-cornell-box-path"})
     EXPECT_NE(out.find(std::string(c) + " "), std::string::npos) << c << " missing:\n" << out;
   EXPECT_EQ(out.find("FAIL"), std::string::npos) << out;
 }

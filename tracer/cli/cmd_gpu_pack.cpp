@@ -84,6 +84,15 @@ std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
   cases.push_back({"sample-cornell-box",
                    {ParityKind::Sample, 0, 0, 0, 0, {}, {}},
                    make_scene_bundle(sample, sample.view(), {0, sample.settings.spp}, "sample-cornell-box")});
+  // The stream schedule's stages against the megakernel, sample by sample, at a width that
+  // splits pixels between batches: Whitted and the path tracer.
+  for (const char* golden : {"cornell-box", "cornell-box-path"}) {
+    const Scene scene = golden_scene(manifest, golden, std::nullopt);
+    const std::string name = std::string("stream-") + golden;
+    cases.push_back({name,
+                     {ParityKind::Stream, 0, 0, 4099, 0, {}, {}},
+                     make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, name)});
+  }
   return cases;
 }
 
@@ -208,7 +217,7 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
   }
   const unsigned threads = cmd.threads > 0 ? static_cast<unsigned>(cmd.threads) : default_thread_count();
   for (const ParityCase& c : parity_cases(manifest)) {
-    const parity::ParityAnswers cpu = parity::evaluate_parity_case(c, false, threads);
+    const parity::ParityAnswers cpu = parity::reference_parity_answers(c, threads);
     const std::string file = "parity/" + c.name + ".case";
     write_bundle((out / file).string(), parity::encode_parity_case(c, cpu));
     list += "parity " + c.name + " " + file + " -\n";

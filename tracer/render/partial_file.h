@@ -27,8 +27,8 @@ struct Partial {
   FilmBuffer film;  // film.range: the part's samples
 };
 
-std::string encode_partial(const Partial& partial);                   // the file's bytes
-Partial read_partial(const std::string& path);                        // InputError naming the file
+std::string encode_partial(const Partial& partial);  // the file's bytes
+Partial read_partial(const std::string& path);       // InputError naming the file
 
 // "A:B" with 0 <= A < B <= spp.
 SampleRange parse_sample_range(const std::string& text, uint32_t spp);

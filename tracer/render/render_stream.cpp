@@ -123,6 +123,10 @@ struct OpenMpStream {
       const uint64_t to = std::min<uint64_t>(first + count, static_cast<uint64_t>(p + 1) * samples);
       for (uint64_t g = from; g < to; ++g) {
         const size_t i = static_cast<size_t>(g - first);
+        if (target.samples) {
+          target.samples[g] = states.radiance[i];
+          continue;
+        }
         const uint32_t pixel = states.pixel[i];
         FilmSum& sum =
             target.film ? target.film[pixel] : (states.sample[i] % 2u == 0u ? target.even[pixel] : target.odd[pixel]);

@@ -1,6 +1,6 @@
 // The host loop of the stream schedule (kernel/integrator/stream.h), shared by every
 // scheduler: the tracer's OpenMP one (render_stream.cpp), the runner's std::thread one
-// (cuda/runner/cpu_stream.h) and the GPU's (cuda/gpu_stream.cu). A batch of at most
+// (cuda/parity/cpu_stream.h) and the GPU's (cuda/gpu_stream.cu). A batch of at most
 // `width` pixel samples becomes ray states; each wave runs closest hit over the work queue,
 // shades it (with the Whitted states resumed after a shadow ray), runs the shadow queue,
 // then compacts the work queue to the states that trace a ray next. The batch's samples go
@@ -41,7 +41,8 @@ struct StreamStats {
 
 // Where a stream render's samples go: samples [begin, end) of pixels[0..count) (indices
 // y * width + x; every pixel in order when `pixels` is null, count = width * height), added
-// to film[pixel], or by sample parity to even[pixel] and odd[pixel] (adaptive sampling).
+// to film[pixel], or by sample parity to even[pixel] and odd[pixel] (adaptive sampling), or
+// each item's radiance stored at samples[item] (the parity case of the stages).
 struct StreamTarget {
   const uint32_t* pixels;
   size_t count;
@@ -49,6 +50,7 @@ struct StreamTarget {
   FilmSum* film;
   FilmSum* even;
   FilmSum* odd;
+  Vec3* samples = nullptr;
 };
 
 enum class StreamQueue : uint32_t { Work, Trace, Shadow, Resume };

@@ -1,7 +1,7 @@
 // The runner's CPU scheduler of the stream schedule: render/stream_schedule.h's loop with the
 // stages on std::threads (parallel_for) and the compaction and film on one thread, so the
-// pack's stream rows run without a GPU and give the film the tracer's OpenMP backend and the
-// GPU's give, bit for bit.
+// pack's stream rows and the stream parity case run without a GPU and give the film (and
+// each sample) the tracer's OpenMP backend and the GPU's give, bit for bit.
 #pragma once
 #include <atomic>
 #include <vector>
@@ -60,8 +60,12 @@ inline void render_stream_on_cpu(const SceneView& view, const StreamTarget& targ
     }
     void swap(StreamQueue a, StreamQueue b) { queue(a).swap(queue(b)); }
     // Items are pixel-major, so their order is pixel-sample order.
-    void end_batch(uint64_t, size_t count) {
+    void end_batch(uint64_t first, size_t count) {
       for (size_t i = 0; i < count; ++i) {
+        if (target.samples) {
+          target.samples[first + i] = states.radiance[i];
+          continue;
+        }
         const uint32_t pixel = states.pixel[i];
         film_add(
             target.film ? target.film[pixel] : (states.sample[i] % 2u == 0u ? target.even[pixel] : target.odd[pixel]),
