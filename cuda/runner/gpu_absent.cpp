@@ -28,6 +28,7 @@ std::vector<ShapeAnswer> gpu_shapes(const std::vector<ShapeQuery>&) { no_cuda();
 std::vector<AdaptiveAnswer> gpu_adaptive(const std::vector<AdaptiveQuery>&) { no_cuda(); }
 std::vector<TraceAnswer> gpu_trace(const SceneArrays&, const SceneView&, const std::vector<Ray>&) { no_cuda(); }
 std::vector<SampleAnswer> gpu_samples(const SceneArrays&, const SceneView&) { no_cuda(); }
+std::vector<Vec3> gpu_stream_samples(const SceneArrays&, const SceneView&) { no_cuda(); }
 }  // namespace parity
 
 }  // namespace tracer
