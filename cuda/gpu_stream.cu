@@ -212,7 +212,7 @@ double GpuStream::render(const StreamTarget& target, unsigned long long* counter
   CudaStream backend{scene_, target, states_, queues_, counters, split_sizes_.get()};
   const CudaEvent start, stop;
   TRACER_CUDA_CHECK(cudaEventRecord(start.event));
-  schedule_stream(scene_.settings, total, width_, backend, stats);
+  schedule_stream(total, width_, backend, stats);
   TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
   return seconds_between(start, stop);
 }

@@ -80,7 +80,7 @@ inline void render_stream_on_cpu(const SceneView& view, const StreamTarget& targ
   if (width == 0) return;
   HostStreamArrays arrays;
   Backend backend{view, target, threads, allocate_stream_states(view.settings, width, arrays), {}, {}, {}, {}};
-  schedule_stream(view.settings, total, width, backend, stats);
+  schedule_stream(total, width, backend, stats);
   rays.camera += backend.camera, rays.secondary += backend.secondary, rays.shadow += backend.shadow;
 }
 

@@ -70,7 +70,7 @@ AdaptiveFilm render_cpu_adaptive(const Scene& scene, int threads, RenderStats& s
   const RenderSettings& rs = view.settings;
   OpenMpBackend backend{view, kernel ? *kernel : cpu_kernel_for(view.features),
                         threads > 0 ? threads : omp_get_max_threads(), progress,
-                        static_cast<uint64_t>(rs.width) * rs.height * rs.spp};
+                        static_cast<uint64_t>(rs.width) * rs.height * rs.spp, 0, 0, 0, {}};
   AdaptiveFilm film = schedule_adaptive(rs, backend, progress);
   stats.rays = {backend.camera, backend.secondary, backend.shadow};
   stats.nonfinite_samples = adaptive_nonfinite_samples(film);

@@ -167,7 +167,7 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
   } catch (const std::length_error&) {
     throw refuse("cannot be allocated");
   }
-  schedule_stream(view.settings, total, width, backend, stats, progress);
+  schedule_stream(total, width, backend, stats, progress);
 }
 
 }  // namespace tracer

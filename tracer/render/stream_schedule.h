@@ -62,7 +62,7 @@ struct StreamSplit {
 };
 
 template <class Backend>
-void schedule_stream(const RenderSettings& rs, uint64_t total, size_t width, Backend& backend, StreamStats& stats,
+void schedule_stream(uint64_t total, size_t width, Backend& backend, StreamStats& stats,
                      const std::function<void(uint64_t done, uint64_t total)>& progress = {}) {
   for (uint64_t first = 0; first < total; first += width) {
     const size_t count = static_cast<size_t>(std::min<uint64_t>(width, total - first));

@@ -132,7 +132,8 @@ TRACER_HD void stream_shade(const SceneView& scene, const StreamStates& st, uint
         store_shadow_ray(st, i, shadow.ray, shadow.tmax, shadow.emitter);
         st.shadow_contribution[i] = shadow.contribution;
       }
-      st.next[i] = static_cast<uint8_t>((step.shadow ? kStreamShadow : 0u) | (step.alive ? kStreamTrace : 0u));
+      st.next[i] = static_cast<uint8_t>((step.shadow ? unsigned{kStreamShadow} : 0u) |
+                                        (step.alive ? unsigned{kStreamTrace} : 0u));
       break;
     }
     case IntegratorKind::Whitted: st.next[i] = whitted_shade(scene, st, i, counts); break;
