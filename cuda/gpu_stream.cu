@@ -18,11 +18,7 @@ uint32_t blocks_for(size_t n) { return static_cast<uint32_t>((n + kBlock - 1) / 
 __global__ void begin_batch_kernel(StreamTarget target, uint64_t first, size_t count, StreamStates st, uint32_t* work) {
   const size_t i = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (i >= count) return;
-  const uint32_t samples = target.end - target.begin;
-  const uint64_t g = first + i;
-  const size_t p = static_cast<size_t>(g / samples);
-  st.pixel[i] = target.pixels ? target.pixels[p] : static_cast<uint32_t>(p);
-  st.sample[i] = target.begin + static_cast<uint32_t>(g % samples);
+  stream_begin_item(target, st, first, i);
   work[i] = static_cast<uint32_t>(i);
 }
 
@@ -44,21 +40,7 @@ __global__ void stage_kernel(const SceneView scene, StreamStates st, const uint3
 __global__ void end_batch_kernel(StreamTarget target, uint64_t first, size_t count, uint64_t first_pixel,
                                  uint64_t pixels, StreamStates st) {
   const uint64_t k = static_cast<uint64_t>(blockIdx.x) * blockDim.x + threadIdx.x;
-  if (k >= pixels) return;
-  const uint64_t p = first_pixel + k, samples = target.end - target.begin;
-  const uint64_t from = p * samples > first ? p * samples : first;
-  const uint64_t to = (p + 1) * samples < first + count ? (p + 1) * samples : first + count;
-  for (uint64_t g = from; g < to; ++g) {
-    const size_t i = static_cast<size_t>(g - first);
-    if (target.samples) {
-      target.samples[g] = st.radiance[i];
-      continue;
-    }
-    const uint32_t pixel = st.pixel[i];
-    FilmSum& sum =
-        target.film ? target.film[pixel] : (st.sample[i] % 2u == 0u ? target.even[pixel] : target.odd[pixel]);
-    film_add(sum, st.radiance[i]);
-  }
+  if (k < pixels) stream_end_pixel(target, st, first, count, first_pixel + k);
 }
 
 // An index of `queue` for each lane whose `pred` holds, one atomic per warp (every lane of the
@@ -94,10 +76,6 @@ struct DeviceArrays {
     return reinterpret_cast<T*>(blocks.back().get());
   }
 };
-
-size_t stream_width_for(const RenderSettings& rs, uint64_t total) {
-  return static_cast<size_t>(total < rs.stream_width ? total : rs.stream_width);
-}
 
 // The CUDA backend of schedule_stream.
 struct CudaStream {

@@ -24,12 +24,9 @@ inline void render_stream_on_cpu(const SceneView& view, const StreamTarget& targ
 
     std::vector<uint32_t>& queue(StreamQueue q) { return queues[static_cast<uint32_t>(q)]; }
     void begin_batch(uint64_t first, size_t count) {
-      const uint32_t samples = target.end - target.begin;
       queue(StreamQueue::Work).resize(count);
       for (size_t i = 0; i < count; ++i) {
-        const size_t p = static_cast<size_t>((first + i) / samples);
-        states.pixel[i] = target.pixels ? target.pixels[p] : static_cast<uint32_t>(p);
-        states.sample[i] = target.begin + static_cast<uint32_t>((first + i) % samples);
+        stream_begin_item(target, states, first, i);
         queue(StreamQueue::Work)[i] = static_cast<uint32_t>(i);
       }
     }
@@ -59,22 +56,14 @@ inline void render_stream_on_cpu(const SceneView& view, const StreamTarget& targ
       return {queue(StreamQueue::Trace).size(), queue(StreamQueue::Shadow).size(), queue(StreamQueue::Resume).size()};
     }
     void swap(StreamQueue a, StreamQueue b) { queue(a).swap(queue(b)); }
-    // Items are pixel-major, so their order is pixel-sample order.
     void end_batch(uint64_t first, size_t count) {
-      for (size_t i = 0; i < count; ++i) {
-        if (target.samples) {
-          target.samples[first + i] = states.radiance[i];
-          continue;
-        }
-        const uint32_t pixel = states.pixel[i];
-        film_add(
-            target.film ? target.film[pixel] : (states.sample[i] % 2u == 0u ? target.even[pixel] : target.odd[pixel]),
-            states.radiance[i]);
-      }
+      const uint64_t samples = target.end - target.begin;
+      for (uint64_t p = first / samples; p <= (first + count - 1) / samples; ++p)
+        stream_end_pixel(target, states, first, count, p);
     }
   };
   const uint64_t total = static_cast<uint64_t>(target.count) * (target.end - target.begin);
-  const size_t width = static_cast<size_t>(total < view.settings.stream_width ? total : view.settings.stream_width);
+  const size_t width = stream_width_for(view.settings, total);
   stats.bytes_per_state = stream_bytes_per_state(view.settings);
   stats.state_bytes = stats.bytes_per_state * width;
   if (width == 0) return;

@@ -37,28 +37,36 @@ void run_stage(const CpuKernelVariant& variant, const SceneView& view, StreamSta
   counts.camera += camera, counts.secondary += secondary, counts.shadow += shadow;
 }
 
-// The entries of in[0, size) whose next[] has `bit`, in order, into `out`: each thread
-// filters a slice, then writes its matches after those of the slices before it.
-void filter_queue(const std::vector<uint32_t>& in, size_t size, const uint8_t* next, uint8_t bit,
-                  std::vector<uint32_t>& out, int threads) {
-  std::vector<size_t> offsets(static_cast<size_t>(threads) + 1, 0);
-  out.resize(size);
+// in[0, size) split by next[] bits: the entries with kStreamTrace into out[0], kStreamShadow
+// into out[1], kStreamResume into out[2] (null where no state resumes), each in order. One
+// pass: each thread counts its slice's matches, then writes them after those of the slices
+// before it.
+void split_queue(const std::vector<uint32_t>& in, size_t size, const uint8_t* next, std::vector<uint32_t>* out[3],
+                 int threads) {
+  constexpr uint8_t kBits[3] = {kStreamTrace, kStreamShadow, kStreamResume};
+  const int queues = out[2] ? 3 : 2;
+  std::vector<size_t> offsets(3 * (static_cast<size_t>(threads) + 1), 0);  // per queue, per thread + 1
+  for (int q = 0; q < queues; ++q) out[q]->resize(size);
 #pragma omp parallel num_threads(threads)
   {
     const size_t t = static_cast<size_t>(omp_get_thread_num()), n = static_cast<size_t>(omp_get_num_threads());
     const size_t begin = size * t / n, end = size * (t + 1) / n;
-    size_t matches = 0;
-    for (size_t k = begin; k < end; ++k) matches += (next[in[k]] & bit) ? 1 : 0;
-    offsets[t + 1] = matches;
-#pragma omp barrier
-#pragma omp single
-    for (size_t j = 1; j <= n; ++j) offsets[j] += offsets[j - 1];
-    size_t at = offsets[t];
+    size_t* const at[3] = {&offsets[0], &offsets[n + 1], &offsets[2 * (n + 1)]};
+    size_t matches[3] = {0, 0, 0};  // local: the offsets of neighbouring threads share cache lines
     for (size_t k = begin; k < end; ++k)
-      if (next[in[k]] & bit) out[at++] = in[k];
+      for (int q = 0; q < queues; ++q) matches[q] += (next[in[k]] & kBits[q]) ? 1 : 0;
+    for (int q = 0; q < queues; ++q) at[q][t + 1] = matches[q];
 #pragma omp barrier
 #pragma omp single
-    out.resize(offsets[n]);
+    for (int q = 0; q < queues; ++q)
+      for (size_t j = 1; j <= n; ++j) at[q][j] += at[q][j - 1];
+    size_t write[3] = {at[0][t], at[1][t], at[2][t]};
+    for (size_t k = begin; k < end; ++k)
+      for (int q = 0; q < queues; ++q)
+        if (next[in[k]] & kBits[q]) (*out[q])[write[q]++] = in[k];
+#pragma omp barrier
+#pragma omp single
+    for (int q = 0; q < queues; ++q) out[q]->resize(at[q][n]);
   }
 }
 
@@ -75,16 +83,11 @@ struct OpenMpStream {
   std::vector<uint32_t>& queue(StreamQueue q) { return queues[static_cast<uint32_t>(q)]; }
 
   void begin_batch(uint64_t first, size_t count) {
-    // Pixel-major: item g is sample begin + g % samples of the (g / samples)-th pixel.
-    const uint32_t samples = target.end - target.begin;
     std::vector<uint32_t>& work = queue(StreamQueue::Work);
     work.resize(count);
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (size_t i = 0; i < count; ++i) {
-      const uint64_t g = first + i;
-      const size_t p = static_cast<size_t>(g / samples);
-      states.pixel[i] = target.pixels ? target.pixels[p] : static_cast<uint32_t>(p);
-      states.sample[i] = target.begin + static_cast<uint32_t>(g % samples);
+      stream_begin_item(target, states, first, i);
       work[i] = static_cast<uint32_t>(i);
     }
   }
@@ -102,13 +105,11 @@ struct OpenMpStream {
 
   // Stable: each queue keeps the work queue's order.
   StreamSplit split(size_t work) {
-    const auto filter = [&](uint8_t bit, StreamQueue out) {
-      filter_queue(queue(StreamQueue::Work), work, states.next, bit, queue(out), threads);
-      return queue(out).size();
-    };
     const bool whitted = view.settings.integrator == IntegratorKind::Whitted;  // only a Whitted vertex resumes
-    return {filter(kStreamTrace, StreamQueue::Trace), filter(kStreamShadow, StreamQueue::Shadow),
-            whitted ? filter(kStreamResume, StreamQueue::Resume) : 0};
+    std::vector<uint32_t>* out[3] = {&queue(StreamQueue::Trace), &queue(StreamQueue::Shadow),
+                                     whitted ? &queue(StreamQueue::Resume) : nullptr};
+    split_queue(queue(StreamQueue::Work), work, states.next, out, threads);
+    return {out[0]->size(), out[1]->size(), whitted ? out[2]->size() : 0};
   }
 
   void swap(StreamQueue a, StreamQueue b) { queue(a).swap(queue(b)); }
@@ -118,21 +119,8 @@ struct OpenMpStream {
     const uint32_t samples = target.end - target.begin;
     const uint64_t first_pixel = first / samples, last_pixel = (first + count - 1) / samples;
 #pragma omp parallel for schedule(static) num_threads(threads)
-    for (int64_t p = static_cast<int64_t>(first_pixel); p <= static_cast<int64_t>(last_pixel); ++p) {
-      const uint64_t from = std::max<uint64_t>(first, static_cast<uint64_t>(p) * samples);
-      const uint64_t to = std::min<uint64_t>(first + count, static_cast<uint64_t>(p + 1) * samples);
-      for (uint64_t g = from; g < to; ++g) {
-        const size_t i = static_cast<size_t>(g - first);
-        if (target.samples) {
-          target.samples[g] = states.radiance[i];
-          continue;
-        }
-        const uint32_t pixel = states.pixel[i];
-        FilmSum& sum =
-            target.film ? target.film[pixel] : (states.sample[i] % 2u == 0u ? target.even[pixel] : target.odd[pixel]);
-        film_add(sum, states.radiance[i]);
-      }
-    }
+    for (int64_t p = static_cast<int64_t>(first_pixel); p <= static_cast<int64_t>(last_pixel); ++p)
+      stream_end_pixel(target, states, first, count, static_cast<uint64_t>(p));
   }
 };
 
@@ -142,7 +130,7 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
                    RayCounts& counts, StreamStats& stats,
                    const std::function<void(uint64_t done, uint64_t total)>& progress) {
   const uint64_t total = static_cast<uint64_t>(target.count) * (target.end - target.begin);
-  const size_t width = static_cast<size_t>(std::min<uint64_t>(view.settings.stream_width, total));
+  const size_t width = stream_width_for(view.settings, total);
   stats.bytes_per_state = stream_bytes_per_state(view.settings);
   const size_t state_bytes = stats.bytes_per_state * width;
   stats.state_bytes = std::max(stats.state_bytes, state_bytes);  // the largest of an adaptive render's passes

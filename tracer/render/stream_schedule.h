@@ -53,6 +53,41 @@ struct StreamTarget {
   Vec3* samples = nullptr;
 };
 
+// The samples in flight: the width asked for, or all `total` when fewer.
+inline size_t stream_width_for(const RenderSettings& rs, uint64_t total) {
+  return static_cast<size_t>(total < rs.stream_width ? total : rs.stream_width);
+}
+
+// Item first + i of the target as state i. Items are pixel-major: item g is sample
+// begin + g % samples of the (g / samples)-th pixel.
+TRACER_HD void stream_begin_item(const StreamTarget& target, const StreamStates& st, uint64_t first, size_t i) {
+  const uint32_t samples = target.end - target.begin;
+  const uint64_t g = first + i;
+  const size_t p = static_cast<size_t>(g / samples);
+  st.pixel[i] = target.pixels ? target.pixels[p] : static_cast<uint32_t>(p);
+  st.sample[i] = target.begin + static_cast<uint32_t>(g % samples);
+}
+
+// The batch's samples of its p-th pixel (counted over the target, as items are), in sample
+// order, into the film (or the halves, or samples[]): what every backend's end_batch does per pixel.
+TRACER_HD void stream_end_pixel(const StreamTarget& target, const StreamStates& st, uint64_t first, size_t count,
+                                uint64_t p) {
+  const uint64_t samples = target.end - target.begin;
+  const uint64_t from = p * samples > first ? p * samples : first;
+  const uint64_t to = (p + 1) * samples < first + count ? (p + 1) * samples : first + count;
+  for (uint64_t g = from; g < to; ++g) {
+    const size_t i = static_cast<size_t>(g - first);
+    if (target.samples) {
+      target.samples[g] = st.radiance[i];
+      continue;
+    }
+    const uint32_t pixel = st.pixel[i];
+    FilmSum& sum =
+        target.film ? target.film[pixel] : (st.sample[i] % 2u == 0u ? target.even[pixel] : target.odd[pixel]);
+    film_add(sum, st.radiance[i]);
+  }
+}
+
 enum class StreamQueue : uint32_t { Work, Trace, Shadow, Resume };
 constexpr uint32_t kStreamQueueCount = 4;
 
