@@ -13,6 +13,7 @@
 #include "kernel/camera/sampler.h"
 #include "kernel/shading/bsdf.h"
 #include "kernel/shading/light_sampling.h"
+#include "chi2.h"
 #include "test_util.h"
 
 namespace tracer {
@@ -22,45 +23,8 @@ constexpr double kSignificance = 1e-3;
 constexpr int kSamples = 400000;
 
 using Stream = test::InputStream;
-
-// Regularised upper incomplete gamma Q(a, x): series below a + 1, continued fraction above.
-double gamma_q(double a, double x) {
-  if (x <= 0) return 1.0;
-  const double log_prefix = a * std::log(x) - x - std::lgamma(a);
-  if (x < a + 1) {
-    double term = 1.0 / a, sum = term;
-    for (int n = 1; n < 10000 && term > sum * 1e-15; ++n) sum += term *= x / (a + n);
-    return 1.0 - sum * std::exp(log_prefix);
-  }
-  double b = x + 1 - a, c = 1e300, d = 1 / b, h = d;  // modified Lentz
-  for (int i = 1; i < 10000; ++i) {
-    const double an = -i * (i - a);
-    b += 2;
-    d = an * d + b;
-    c = b + an / c;
-    d = 1 / d;
-    const double delta = d * c;
-    h *= delta;
-    if (std::abs(delta - 1) < 1e-15) break;
-  }
-  return std::exp(log_prefix) * h;
-}
-
-// Pools bins expecting fewer than 5 samples, then returns the chi-square p-value.
-double chi2_p_value(const std::vector<double>& observed, const std::vector<double>& expected) {
-  double chi2 = 0, pooled_o = 0, pooled_e = 0;
-  int cells = 0;
-  for (size_t i = 0; i < observed.size(); ++i) {
-    if (expected[i] < 5) {
-      pooled_o += observed[i], pooled_e += expected[i];
-      continue;
-    }
-    chi2 += (observed[i] - expected[i]) * (observed[i] - expected[i]) / expected[i];
-    ++cells;
-  }
-  if (pooled_e > 0) chi2 += (pooled_o - pooled_e) * (pooled_o - pooled_e) / std::max(pooled_e, 1e-12), ++cells;
-  return gamma_q((cells - 1) / 2.0, chi2 / 2.0);
-}
+using test::chi2_p_value;
+using test::gamma_q;
 
 // Where a sampling routine's uniforms come from: the fixed stream, or one pixel's points of
 // the Sobol sampler in the pairs the path tracer gives a BSDF sample (the lobe choice is
@@ -132,7 +96,7 @@ double metal_lobe_p(Inputs inputs) {
       [&](float a, float b, float c) {
         BsdfSample s;
         EXPECT_TRUE(sample_bsdf(m, n, n, true, a, b, c, s));
-        EXPECT_NEAR(s.pdf, eval_bsdf(m, n, s.wi, n).pdf, 1e-4 * s.pdf);
+        EXPECT_NEAR(s.pdf, eval_bsdf(m, n, s.wi, n, true).pdf, 1e-4 * s.pdf);
         return s.wi;
       },
       [&](double c) { return std::pow(c, e + 1.0); }, 0.0, inputs);  // density (e+1)/(2 pi) cos^e

@@ -52,7 +52,8 @@ struct EnumNames<BackgroundKind> {
 template <>
 struct EnumNames<MaterialKind> {
   static constexpr const char* kind = "material";
-  static constexpr const char* names[] = {"lambert", "metal", "dielectric", "phong", "emissive"};
+  static constexpr const char* names[] = {"lambert",  "metal",     "dielectric",       "phong",
+                                          "emissive", "conductor", "rough_dielectric", "metal_rough"};
 };
 template <>
 struct EnumNames<FresnelKind> {

@@ -1,10 +1,41 @@
 #include "scene/material_reader.h"
 
 #include "kernel/base/features.h"
+#include "kernel/shading/optics.h"
 #include "options/enum_names.h"
 #include "scene/scene_types.h"
 
 namespace tracer {
+
+namespace {
+
+float unit_interval(JsonObject& obj, const std::string& key, float fallback) {
+  const float x = obj.number_or(key, fallback);
+  if (!(x >= 0.0f && x <= 1.0f)) obj.fail(key, "must be in [0, 1]");
+  return x;
+}
+
+// A conductor's Fresnel reflectance: `albedo` as F0 (Schlick), or the complex index
+// `eta` + i `k` (exact), one of the two.
+void read_conductor_fresnel(JsonObject& obj, TextureLoader& textures, Material& m) {
+  const bool has_eta = obj.find("eta") != nullptr, has_k = obj.find("k") != nullptr;
+  if (has_eta != has_k) obj.fail(has_eta ? "k" : "eta", "give both eta and k (the complex index of refraction)");
+  if (!has_eta) {
+    m.fresnel = FresnelKind::Schlick;
+    m.albedo = textures.colour(obj, "albedo", m.texture[kSlotAlbedo]);
+    if (!(max_component(m.albedo) <= 1.0f)) obj.fail("albedo", "must be in [0, 1] (the reflectance at normal incidence)");
+    return;
+  }
+  if (obj.find("albedo")) obj.fail("albedo", "give albedo (Schlick's F0) or eta and k, not both");
+  m.fresnel = FresnelKind::Exact;
+  m.eta = obj.vec3("eta");
+  m.k = obj.vec3("k");
+  if (!(m.eta.x > 0.0f && m.eta.y > 0.0f && m.eta.z > 0.0f)) obj.fail("eta", "must be > 0");
+  if (!(m.k.x >= 0.0f && m.k.y >= 0.0f && m.k.z >= 0.0f)) obj.fail("k", "must be >= 0");
+  m.albedo = fresnel_conductor(1.0f, m.eta, m.k);  // what the albedo view shows
+}
+
+}  // namespace
 
 Material read_material(const Json& value, const std::string& path, const std::string& file, std::string& type,
                        TextureLoader& textures) {
@@ -44,6 +75,26 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.ior = obj.number_or("ior", 1.0f);
     if (!(m.ior > 0.0f)) obj.fail("ior", "must be > 0");
     m.specular_map = textures.data_map(obj, "specular_map");
+  } else if (type == "conductor") {
+    m.kind = MaterialKind::Conductor;
+    read_conductor_fresnel(obj, textures, m);
+    m.roughness = unit_interval(obj, "roughness", 0.0f);
+  } else if (type == "rough_dielectric") {
+    m.kind = MaterialKind::RoughDielectric;
+    m.ior = obj.number("ior");
+    if (!(m.ior > 0.0f)) obj.fail("ior", "must be > 0");
+    m.roughness = unit_interval(obj, "roughness", 0.0f);
+    m.tint = textures.colour_or(obj, "tint", {1.0f, 1.0f, 1.0f}, m.texture[kSlotTint]);
+    m.fresnel = parse_enum<FresnelKind>(obj.string_or("fresnel", "schlick"), file + ": " + obj.child("fresnel"));
+  } else if (type == "metal_rough") {
+    m.kind = MaterialKind::MetalRough;
+    m.albedo = textures.colour(obj, "base_color", m.texture[kSlotAlbedo]);
+    if (!(max_component(m.albedo) <= 1.0f)) obj.fail("base_color", "must be in [0, 1]");
+    m.metallic = unit_interval(obj, "metallic", 0.0f);
+    m.roughness = unit_interval(obj, "roughness", 1.0f);
+    m.transmission = unit_interval(obj, "transmission", 0.0f);
+    m.ior = obj.number_or("ior", 1.5f);
+    if (!(m.ior > 0.0f)) obj.fail("ior", "must be > 0");
   } else if (type == "emissive") {
     m.kind = MaterialKind::Emissive;
     m.radiance = textures.colour(obj, "radiance", m.texture[kSlotRadiance]);
@@ -51,7 +102,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.albedo =
         textures.colour_or(obj, "albedo", {0.0f, 0.0f, 0.0f}, m.texture[kSlotAlbedo]);  // an emitter that also reflects
   }
-  if (type != "dielectric" && type != "emissive") {  // surfaces with a diffuse or glossy response
+  if (type != "dielectric" && type != "rough_dielectric" && type != "emissive") {  // surfaces with a diffuse or glossy response
     m.normal_map = textures.data_map(obj, "normal_map");
     m.bump_map = textures.data_map(obj, "bump_map");
     if (m.normal_map != kNoTexture && m.bump_map != kNoTexture)
@@ -68,6 +119,9 @@ uint32_t material_feature(MaterialKind kind) {
     case MaterialKind::Dielectric: return kFeatureDielectric;
     case MaterialKind::Phong: return kFeaturePhong;
     case MaterialKind::Emissive: return kFeatureEmissive;
+    case MaterialKind::Conductor:
+    case MaterialKind::RoughDielectric:
+    case MaterialKind::MetalRough: return kFeatureMicrofacet;
   }
   return 0;
 }

@@ -22,6 +22,7 @@ enum FeatureBit : uint32_t {
   kFeatureThinLens = 1u << 10,
   kFeatureShadingNormals = 1u << 11,
   kFeatureTextures = 1u << 12,
+  kFeatureMicrofacet = 1u << 13,  // conductor, rough_dielectric, metal_rough
 };
 
 #ifndef TRACER_KERNEL_FEATURES

@@ -8,7 +8,8 @@ namespace tracer {
 
 TRACER_HD Vec3 material_albedo(const Material& m) {
   switch (m.kind) {
-    case MaterialKind::Dielectric: return m.tint;
+    case MaterialKind::Dielectric:
+    case MaterialKind::RoughDielectric: return m.tint;
     case MaterialKind::Emissive: return m.radiance;
     default: return m.albedo;
   }

@@ -103,7 +103,7 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
 
   if (sample_lights) {
     const LightSample ls = sample_light(scene, pick_light(scene, pick_u), s.p, light_u1, light_u2, sky_cell_u);
-    const BsdfValue f = ls.valid ? eval_bsdf(m, wo, ls.wi, n) : BsdfValue{{0.0f, 0.0f, 0.0f}, 0.0f};
+    const BsdfValue f = ls.valid ? eval_bsdf(m, wo, ls.wi, n, front) : BsdfValue{{0.0f, 0.0f, 0.0f}, 0.0f};
     if (max_component(f.f_cos) > 0.0f) {
       ++counts.shadow;
       const float w = ls.prim == kNoHit ? 1.0f : power_heuristic(ls.pdf, f.pdf);

@@ -4,6 +4,7 @@
 #pragma once
 #include "kernel/geom/ray_offset.h"
 #include "kernel/integrator/ray_counts.h"
+#include "kernel/shading/bsdf.h"
 #include "kernel/shading/light_sources.h"
 #include "kernel/shading/optics.h"
 #include "kernel/shading/surface.h"
@@ -20,11 +21,14 @@ struct WhittedResponse {
   FresnelKind fresnel;
   Vec3 emission;
   bool two_sided;
+  bool brdf;  // point lights reflect by the material's BSDF f cos (the microfacet kinds), not kd and ks
 };
 
-TRACER_HD WhittedResponse whitted_response(const Material& m) {
+// cos_o: the cosine between the view direction and the facing shading normal (the smooth
+// conductor's Fresnel reflectance).
+TRACER_HD WhittedResponse whitted_response(const Material& m, float cos_o) {
   const Vec3 zero = {0.0f, 0.0f, 0.0f};
-  WhittedResponse w = {zero, zero, zero, 1.0f, zero, zero, 1.0f, m.fresnel, zero, false};
+  WhittedResponse w = {zero, zero, zero, 1.0f, zero, zero, 1.0f, m.fresnel, zero, false, false};
   switch (m.kind) {
     case MaterialKind::Lambert:
       w.ka = m.albedo;
@@ -51,6 +55,18 @@ TRACER_HD WhittedResponse whitted_response(const Material& m) {
       w.kd = m.albedo;
       w.emission = m.radiance;
       w.two_sided = m.two_sided != 0;
+      break;
+    case MaterialKind::Conductor:  // a mirror tinted by its Fresnel reflectance, or lit by its BRDF
+      if (is_smooth(m.roughness)) w.kr = conductor_fresnel(m, cos_o);
+      w.brdf = !is_smooth(m.roughness);
+      break;
+    case MaterialKind::RoughDielectric:  // the smooth dielectric, or lit by its BRDF (no refraction)
+      if (is_smooth(m.roughness)) w.kt = m.tint, w.ior = m.ior;
+      w.brdf = !is_smooth(m.roughness);
+      break;
+    case MaterialKind::MetalRough:  // lit by its BRDF; ambient lights the diffuse part
+      w.ka = m.albedo * ((1.0f - m.metallic) * (1.0f - m.transmission));
+      w.brdf = true;
       break;
   }
   return w;
@@ -85,9 +101,10 @@ TRACER_HD_STEP bool whitted_begin(const SceneView& scene, const WhittedTask& tas
   }
   v.task = task;
   v.s = surface_at(scene, task.ray, hit);
-  v.w = whitted_response(material_at(scene, v.s));
+  const Material m = material_at(scene, v.s);
   v.front = dot(task.ray.dir, v.s.ng) < 0.0f;
   v.n = v.front ? v.s.ns : -v.s.ns;
+  v.w = whitted_response(m, -dot(task.ray.dir, v.n));
   if (v.front || v.w.two_sided) radiance += task.weight * v.w.emission;
   v.local = v.w.ka * scene.ambient;
   v.light = uses_feature(scene.features, kFeaturePointLight) ? 0u : scene.light_count;
@@ -95,9 +112,17 @@ TRACER_HD_STEP bool whitted_begin(const SceneView& scene, const WhittedTask& tas
 }
 
 // Adds the light before v.light (lit, facing the surface, not in shadow): diffuse kd I cos and
-// Blinn-Phong specular ks I cos(h, n)^shininess, times the falloff.
+// Blinn-Phong specular ks I cos(h, n)^shininess, times the falloff; or, for the microfacet
+// kinds, f(wo, l) cos I times the falloff (the material looked up again at the point, its
+// shading normal already bent).
 TRACER_HD_STEP void whitted_add_light(const SceneView& scene, WhittedVertex& v) {
   const PointLight& light = scene.lights[v.light - 1u];
+  if (uses_feature(scene.features, kFeatureMicrofacet) && v.w.brdf) {
+    const Material m = material_colours_at(scene, v.s);
+    const Vec3 f_cos = eval_bsdf(m, -v.task.ray.dir, v.to_light, v.n, v.front).f_cos;
+    v.local += light.intensity * f_cos * light_falloff(light, v.d, v.d2);
+    return;
+  }
   const Vec3 h = normalize(v.to_light - v.task.ray.dir);
   const float cos_h = max_of(dot(v.n, h), 0.0f);
   const Vec3 reflected = v.w.kd * v.cos_l + v.w.ks * det_pow(cos_h, v.w.shininess);

@@ -14,27 +14,52 @@
 //               kd / pi + ks (e + 2) / (2 pi) cos^e(alpha), sampled by picking the diffuse
 //               or the specular lobe in proportion to their luminance.
 //   emissive:   Lambertian with its optional albedo (0 by default: black).
+//   conductor, rough_dielectric, metal_rough: GGX microfacet BSDFs (microfacet_bsdf.h),
+//               evaluated and sampled in the frame of n; below kSmoothRoughness the conductor
+//               is a mirror tinted by its Fresnel reflectance and the rough dielectric is the
+//               smooth one. Only these may return a wi below n (transmission) from eval_bsdf.
 #pragma once
+#include "kernel/shading/bsdf_sample.h"
 #include "kernel/shading/material.h"
+#include "kernel/shading/microfacet_bsdf.h"
 #include "kernel/shading/optics.h"
 #include "kernel/shading/sampling.h"
 
 namespace tracer {
 
-struct BsdfSample {
-  Vec3 wi;
-  Vec3 weight;  // f |cos| / pdf, or the specular choice's throughput
-  float pdf;    // 0 for a specular choice
-  bool specular;
-};
-
-// Rec. 709 luminance weights.
-TRACER_HD float luminance(Vec3 c) { return dot(Vec3{0.2126f, 0.7152f, 0.0722f}, c); }
-
 TRACER_HD float metal_exponent(float roughness) { return 2.0f / (roughness * roughness) - 2.0f; }
 
+TRACER_HD bool is_microfacet(MaterialKind kind) {
+  return kind == MaterialKind::Conductor || kind == MaterialKind::RoughDielectric || kind == MaterialKind::MetalRough;
+}
+
 TRACER_HD bool is_specular(const Material& m) {
-  return m.kind == MaterialKind::Dielectric || (m.kind == MaterialKind::Metal && m.roughness == 0.0f);
+  return m.kind == MaterialKind::Dielectric || (m.kind == MaterialKind::Metal && m.roughness == 0.0f) ||
+         ((m.kind == MaterialKind::Conductor || m.kind == MaterialKind::RoughDielectric) && is_smooth(m.roughness));
+}
+
+// A microfacet material's value in the frame of n (wo on n's side; `front`: wo is outside).
+TRACER_HD BsdfValue eval_microfacet(const Material& m, Vec3 wo, Vec3 wi, Vec3 n, bool front) {
+  const Frame f = frame_around(n);
+  const Vec3 o = f.to_local(wo), i = f.to_local(wi);
+  if (!(o.z > 0.0f) || is_specular(m)) return {{0.0f, 0.0f, 0.0f}, 0.0f};
+  if (m.kind == MaterialKind::Conductor) return eval_conductor(m, o, i);
+  if (m.kind == MaterialKind::RoughDielectric) return eval_rough_dielectric(m, o, i, front);
+  return eval_metal_rough(m, o, i);
+}
+
+TRACER_HD bool sample_microfacet(const Material& m, Vec3 wo, Vec3 n, bool front, float u_choice, float u1, float u2,
+                                 BsdfSample& s) {
+  const Frame f = frame_around(n);
+  const Vec3 o = f.to_local(wo);
+  s.specular = false;
+  if (!(o.z > 0.0f)) return false;
+  bool ok = false;
+  if (m.kind == MaterialKind::Conductor) ok = sample_conductor(m, o, u1, u2, s);
+  if (m.kind == MaterialKind::RoughDielectric) ok = sample_rough_dielectric(m, o, front, u_choice, u1, u2, s);
+  if (m.kind == MaterialKind::MetalRough) ok = sample_metal_rough(m, o, u_choice, u1, u2, s);
+  s.wi = f.to_world(s.wi);
+  return ok;
 }
 
 // Probability of sampling phong's diffuse lobe rather than its specular one.
@@ -43,14 +68,8 @@ TRACER_HD float phong_diffuse_probability(const Material& m) {
   return d + s > 0.0f ? d / (d + s) : 1.0f;
 }
 
-// f(wo, wi) |cos(n, wi)| and the density with which sample_bsdf picks wi, together: the
-// lobe's cos^e(alpha) is one det_pow for both.
-struct BsdfValue {
-  Vec3 f_cos;
-  float pdf;
-};
-
-TRACER_HD BsdfValue eval_bsdf(const Material& m, Vec3 wo, Vec3 wi, Vec3 n) {
+TRACER_HD BsdfValue eval_bsdf(const Material& m, Vec3 wo, Vec3 wi, Vec3 n, bool front) {
+  if (is_microfacet(m.kind)) return eval_microfacet(m, wo, wi, n, front);
   const float cos_i = dot(wi, n);
   BsdfValue v = {{0.0f, 0.0f, 0.0f}, 0.0f};
   if (!(cos_i > 0.0f)) return v;
@@ -75,7 +94,7 @@ TRACER_HD BsdfValue eval_bsdf(const Material& m, Vec3 wo, Vec3 wi, Vec3 n) {
       v.pdf = pd * cos_i / kPi + (1.0f - pd) * lobe_pdf;
       return v;
     }
-    case MaterialKind::Dielectric: break;
+    default: break;  // the dielectric is specular; the microfacet kinds returned above
   }
   return v;
 }
@@ -109,6 +128,14 @@ TRACER_HD bool sample_bsdf(const Material& m, Vec3 wo, Vec3 n, bool front, float
       s.weight = m.albedo;
       return dot(s.wi, n) > 0.0f && s.pdf > 0.0f;
     }
+    case MaterialKind::Conductor:
+      if (!is_smooth(m.roughness)) return sample_microfacet(m, wo, n, front, u_choice, u1, u2, s);
+      s = {reflect(-wo, n), conductor_fresnel(m, dot(wo, n)), 0.0f, true};
+      return true;
+    case MaterialKind::MetalRough: return sample_microfacet(m, wo, n, front, u_choice, u1, u2, s);
+    case MaterialKind::RoughDielectric:
+      if (!is_smooth(m.roughness)) return sample_microfacet(m, wo, n, front, u_choice, u1, u2, s);
+      [[fallthrough]];  // the smooth dielectric
     case MaterialKind::Dielectric: {
       const float n_in = front ? 1.0f : m.ior, n_out = front ? m.ior : 1.0f;
       const Vec3 d = -wo;
@@ -128,7 +155,7 @@ TRACER_HD bool sample_bsdf(const Material& m, Vec3 wo, Vec3 n, bool front, float
       if (!(max_component(m.albedo) > 0.0f || max_component(m.specular) > 0.0f)) return false;
       const Vec3 local = u_choice < pd ? sample_cosine_hemisphere(u1, u2) : sample_phong_lobe(m.shininess, u1, u2);
       s.wi = frame_around(u_choice < pd ? n : reflect(-wo, n)).to_world(local);
-      const BsdfValue v = eval_bsdf(m, wo, s.wi, n);
+      const BsdfValue v = eval_bsdf(m, wo, s.wi, n, front);
       s.pdf = v.pdf;
       if (!(s.pdf > 0.0f)) return false;
       s.weight = v.f_cos / s.pdf;

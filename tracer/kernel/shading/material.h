@@ -5,7 +5,7 @@
 
 namespace tracer {
 
-enum class MaterialKind : uint32_t { Lambert, Metal, Dielectric, Phong, Emissive };
+enum class MaterialKind : uint32_t { Lambert, Metal, Dielectric, Phong, Emissive, Conductor, RoughDielectric, MetalRough };
 enum class FresnelKind : uint32_t { Schlick, Exact };
 
 // The colours of a material a texture may replace (Material::texture).
@@ -13,18 +13,22 @@ enum ColourSlot : uint32_t { kSlotAlbedo, kSlotAmbient, kSlotSpecular, kSlotTint
 
 struct Material {
   MaterialKind kind;
-  FresnelKind fresnel;             // dielectric, and phong with transparency
+  FresnelKind fresnel;             // dielectric, rough_dielectric, phong with transparency; conductor: Schlick
+                                   // from albedo as F0, or Exact from eta and k
   uint32_t two_sided;              // emissive
   float shininess;                 // phong
-  Vec3 albedo;                     // lambert, metal; phong's diffuse colour
+  Vec3 albedo;                     // lambert, metal; phong's diffuse colour; conductor's F0; metal_rough's base colour
   Vec3 ambient;                    // phong
   Vec3 specular;                   // phong
-  Vec3 tint;                       // dielectric transmission colour
+  Vec3 tint;                       // dielectric and rough_dielectric transmission colour
   Vec3 radiance;                   // emissive
-  float roughness;                 // metal
+  float roughness;                 // metal; conductor, rough_dielectric, metal_rough (GGX alpha = roughness^2)
+  float metallic;                  // metal_rough
+  float transmission;              // metal_rough (thin-walled, KHR_materials_transmission)
+  Vec3 eta, k;                     // conductor with exact Fresnel: complex index of refraction per channel
   float reflectivity;              // phong
   float transparency;              // phong
-  float ior;                       // dielectric, phong
+  float ior;                       // dielectric, rough_dielectric, phong, metal_rough (its F0)
   uint32_t texture[kColourSlots];  // per ColourSlot: kNoTexture, or the texture replacing it
   uint32_t specular_map;           // phong: scales specular; kNoTexture when absent
   uint32_t normal_map;             // tangent-space normals (2c - 1); kNoTexture when absent

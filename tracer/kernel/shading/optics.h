@@ -51,4 +51,45 @@ TRACER_HD float dielectric_reflectance(FresnelKind model, float cos_i, float cos
                                      : fresnel_schlick(n_in <= n_out ? cos_i : cos_t, n_in, n_out);
 }
 
+// The same at a surface seen at cos_i from the side of index n_in: the transmitted cosine
+// from Snell's law (computed as refract does), 1 on total internal reflection.
+TRACER_HD float dielectric_reflectance_at(FresnelKind model, float cos_i, float n_in, float n_out) {
+  const double eta2 = static_cast<double>(n_in / n_out) * (n_in / n_out);
+  const double cos2_t = (1.0 - eta2) + eta2 * (static_cast<double>(cos_i) * cos_i);
+  if (cos2_t < 0.0) return 1.0f;
+  return dielectric_reflectance(model, cos_i, det_sqrt(static_cast<float>(cos2_t)), n_in, n_out);
+}
+
+// Schlick's approximation with a reflectance at normal incidence per channel (a conductor's
+// or glTF's F0): F0 + (1 - F0)(1 - cos)^5.
+TRACER_HD Vec3 fresnel_schlick_f0(Vec3 f0, float cos_i) {
+  const float m = clamp_of(1.0f - cos_i, 0.0f, 1.0f);
+  const float m2 = m * m;
+  return f0 + (Vec3{1.0f, 1.0f, 1.0f} - f0) * (m2 * m2 * m);
+}
+
+// Exact Fresnel reflectance of unpolarised light on a conductor of complex index eta + i k
+// (relative to the outside), one channel, in the real form of the s and p reflectances
+// (Born and Wolf; as pbrt-v3's FrConductor): with a^2 + b^2 = sqrt((eta^2 - k^2 - sin^2)^2
+// + 4 eta^2 k^2) and a = sqrt((a^2 + b^2 + eta^2 - k^2 - sin^2) / 2),
+//   Rs = (a^2 + b^2 - 2 a cos + cos^2) / (a^2 + b^2 + 2 a cos + cos^2),
+//   Rp = Rs (cos^2 (a^2 + b^2) - 2 a cos sin^2 + sin^4) / (cos^2 (a^2 + b^2) + 2 a cos sin^2 + sin^4).
+TRACER_HD float fresnel_conductor(float cos_i, float eta, float k) {
+  const float c = clamp_of(cos_i, 0.0f, 1.0f);
+  const float cos2 = c * c, sin2 = (1.0f - c) * (1.0f + c);
+  const float t0 = eta * eta - k * k - sin2;
+  const float a2b2 = det_sqrt(t0 * t0 + 4.0f * (eta * eta) * (k * k));
+  const float a = det_sqrt(max_of(0.0f, 0.5f * (a2b2 + t0)));
+  const float t1 = a2b2 + cos2, t2 = 2.0f * a * c;
+  const float rs = (t1 - t2) / (t1 + t2);
+  const float t3 = cos2 * a2b2 + sin2 * sin2, t4 = t2 * sin2;
+  const float rp = rs * (t3 - t4) / (t3 + t4);
+  return 0.5f * (rs + rp);
+}
+
+TRACER_HD Vec3 fresnel_conductor(float cos_i, Vec3 eta, Vec3 k) {
+  return {fresnel_conductor(cos_i, eta.x, k.x), fresnel_conductor(cos_i, eta.y, k.y),
+          fresnel_conductor(cos_i, eta.z, k.z)};
+}
+
 }  // namespace tracer

@@ -10,10 +10,11 @@ namespace tracer {
 
 // An orthonormal frame around unit n (Duff et al., "Building an Orthonormal Basis,
 // Revisited", JCGT 2017), branch-free but for the sign. to_world is the matrix with columns
-// t, b, n times v (GLM sums (t v.x + b v.y) + n v.z per component).
+// t, b, n times v (GLM sums (t v.x + b v.y) + n v.z per component); to_local its transpose.
 struct Frame {
   Vec3 t, b, n;
   TRACER_HD Vec3 to_world(Vec3 v) const { return glm::mat3(t, b, n) * v; }
+  TRACER_HD Vec3 to_local(Vec3 v) const { return {dot(v, t), dot(v, b), dot(v, n)}; }
 };
 
 TRACER_HD Frame frame_around(Vec3 n) {

@@ -114,10 +114,8 @@ TRACER_HD Vec3 surface_tangent(const SceneView& scene, const Surface& s) {
   return len > 0.0f ? t / len : frame_around(s.ns).t;
 }
 
-// The material at a surface point: its textured colours looked up at (u, v); a normal or
-// bump map bends s.ns. Unit map values that leave the normal unchanged (a normal map of
-// (0.5, 0.5, 1), a flat height field) leave it unchanged bit for bit.
-TRACER_HD Material material_at(const SceneView& scene, Surface& s) {
+// The material at a surface point with its textured colours looked up at (u, v).
+TRACER_HD Material material_colours_at(const SceneView& scene, const Surface& s) {
   Material m = scene.materials[s.material];
   if (!uses_feature(scene.features, kFeatureTextures)) return m;
   Vec3* colour[kColourSlots] = {&m.albedo, &m.ambient, &m.specular, &m.tint, &m.radiance};
@@ -125,6 +123,15 @@ TRACER_HD Material material_at(const SceneView& scene, Surface& s) {
     if (m.texture[k] != kNoTexture) *colour[k] = sample_texture(scene.textures, scene.texels, m.texture[k], s.u, s.v);
   if (m.specular_map != kNoTexture)
     m.specular = m.specular * sample_texture(scene.textures, scene.texels, m.specular_map, s.u, s.v);
+  return m;
+}
+
+// The material at a surface point: its textured colours, and a normal or bump map bends s.ns.
+// Unit map values that leave the normal unchanged (a normal map of (0.5, 0.5, 1), a flat
+// height field) leave it unchanged bit for bit.
+TRACER_HD Material material_at(const SceneView& scene, Surface& s) {
+  const Material m = material_colours_at(scene, s);
+  if (!uses_feature(scene.features, kFeatureTextures)) return m;
   if (m.normal_map == kNoTexture && m.bump_map == kNoTexture) return m;
   const Vec3 t = surface_tangent(scene, s), b = cross(s.ns, t);
   Vec3 local = {0.0f, 0.0f, 1.0f};
