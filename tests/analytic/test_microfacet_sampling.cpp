@@ -128,7 +128,8 @@ TEST(MicrofacetSampling, ChiSquareRejectsADensityWithoutG1) {
   std::vector<double> observed(kCosBins * kPhiBins, 0.0), expected = expected_counts(c, wo);
   test::InputStream stream{11};
   for (int i = 0; i < kSamples; ++i) {  // uniform over the hemisphere instead of the lobe
-    const Vec3 d = direction(stream.next(), 2 * M_PI * stream.next());
+    const double cos_theta = stream.next();
+    const Vec3 d = direction(cos_theta, 2 * M_PI * stream.next());
     if (eval_bsdf(c.m, wo, d, kN, true).pdf > 0) observed[bin_of(d)] += 1;
   }
   EXPECT_LT(test::chi2_p_value(observed, expected), 1e-12);
