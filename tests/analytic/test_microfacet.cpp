@@ -10,6 +10,7 @@
 #include <functional>
 
 #include "kernel/shading/bsdf.h"
+#include "microfacet_material.h"
 
 namespace tracer {
 namespace {
@@ -101,18 +102,6 @@ TEST(Microfacet, ConductorFresnelMatchesComplexArithmetic) {
   EXPECT_NEAR(fresnel_conductor(1.0f, 0.2f, 3.0f), (0.64 + 9) / (1.44 + 9), 1e-6) << "((eta-1)^2+k^2)/((eta+1)^2+k^2)";
 }
 
-Material microfacet(MaterialKind kind, float roughness) {
-  Material m{};
-  m.kind = kind;
-  m.roughness = roughness;
-  m.albedo = {0.9f, 0.6f, 0.3f};
-  m.tint = {1, 1, 1};
-  m.ior = 1.5f;
-  m.metallic = 0.5f;
-  m.transmission = 0.3f;
-  return m;
-}
-
 // f(wo, wi) = f(wi, wo) for reflection; for transmission through a rough dielectric, whose f
 // has no 1/eta^2 scaling, f(wo, wi) n(wo)^2 = f(wi, wo) n(wi)^2 (Veach 1997, 5.2, for the
 // unscaled form). Seen from wi, the frame is turned to wi's side.
@@ -122,7 +111,7 @@ TEST(Microfacet, Reciprocity) {
     for (float roughness : {0.2f, 0.5f, 1.0f})
       for (double to : {10.0, 45.0, 75.0})
         for (double ti : {5.0, 40.0, 70.0, 110.0, 150.0, 175.0}) {
-          const Material m = microfacet(kind, roughness);
+          const Material m = test::microfacet_material(kind, roughness);
           const Vec3 wo = direction(to * M_PI / 180, 0.2), wi = direction(ti * M_PI / 180, 2.5);
           for (bool front : {true, false}) {
             const bool transmitted = wi.z < 0;
@@ -147,7 +136,7 @@ TEST(Microfacet, RoughDielectricConservesEnergyBetweenReflectionAndTransmission)
   const Vec3 n = {0, 0, 1};
   for (bool front : {true, false})
     for (double degrees : {0.0, 20.0, 40.0, 45.0, 60.0, 75.0}) {
-      const Material m = microfacet(MaterialKind::RoughDielectric, 0.2f);
+      const Material m = test::microfacet_material(MaterialKind::RoughDielectric, 0.2f);
       const Vec3 wo = direction(degrees * M_PI / 180, 0.0);
       auto lobe = [&](Vec3 axis, bool upper) {
         return sphere_integral(axis, [&](Vec3 wi) {

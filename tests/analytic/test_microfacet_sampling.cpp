@@ -15,6 +15,7 @@
 #include "kernel/camera/camera.h"
 #include "kernel/camera/sampler.h"
 #include "kernel/shading/bsdf.h"
+#include "microfacet_material.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
 
@@ -35,15 +36,7 @@ struct Case {
 };
 
 Material material(MaterialKind kind, double alpha) {
-  Material m{};
-  m.kind = kind;
-  m.roughness = static_cast<float>(std::sqrt(alpha));
-  m.albedo = {0.9f, 0.6f, 0.3f};
-  m.tint = {1, 1, 1};
-  m.ior = 1.5f;
-  m.metallic = 0.3f;
-  m.transmission = 0.5f;
-  return m;
+  return test::microfacet_material(kind, static_cast<float>(std::sqrt(alpha)));
 }
 
 Vec3 direction(double cos_theta, double phi) {

@@ -1,5 +1,7 @@
 #include "scene/material_reader.h"
 
+#include <optional>
+
 #include "kernel/base/features.h"
 #include "kernel/shading/optics.h"
 #include "options/enum_names.h"
@@ -12,6 +14,13 @@ namespace {
 float unit_interval(JsonObject& obj, const std::string& key, float fallback) {
   const float x = obj.number_or(key, fallback);
   if (!(x >= 0.0f && x <= 1.0f)) obj.fail(key, "must be in [0, 1]");
+  return x;
+}
+
+// An index of refraction: required, or `fallback` when absent.
+float positive_ior(JsonObject& obj, std::optional<float> fallback) {
+  const float x = fallback ? obj.number_or("ior", *fallback) : obj.number("ior");
+  if (!(x > 0.0f)) obj.fail("ior", "must be > 0");
   return x;
 }
 
@@ -52,12 +61,10 @@ Material read_material(const Json& value, const std::string& path, const std::st
   } else if (type == "metal") {
     m.kind = MaterialKind::Metal;
     m.albedo = textures.colour(obj, "albedo", m.texture[kSlotAlbedo]);
-    m.roughness = obj.number_or("roughness", 0.0f);
-    if (!(m.roughness >= 0.0f && m.roughness <= 1.0f)) obj.fail("roughness", "must be in [0, 1]");
+    m.roughness = unit_interval(obj, "roughness", 0.0f);
   } else if (type == "dielectric") {
     m.kind = MaterialKind::Dielectric;
-    m.ior = obj.number("ior");
-    if (!(m.ior > 0.0f)) obj.fail("ior", "must be > 0");
+    m.ior = positive_ior(obj, std::nullopt);
     m.tint = textures.colour_or(obj, "tint", {1.0f, 1.0f, 1.0f}, m.texture[kSlotTint]);
     m.fresnel = parse_enum<FresnelKind>(obj.string_or("fresnel", "schlick"), file + ": " + obj.child("fresnel"));
   } else if (type == "phong") {
@@ -68,12 +75,9 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.specular = textures.colour_or(obj, "specular", {0.0f, 0.0f, 0.0f}, m.texture[kSlotSpecular]);
     m.shininess = obj.number_or("shininess", 1.0f);
     if (!(m.shininess >= 0.0f)) obj.fail("shininess", "must be >= 0");
-    m.reflectivity = obj.number_or("reflectivity", 0.0f);
-    if (!(m.reflectivity >= 0.0f && m.reflectivity <= 1.0f)) obj.fail("reflectivity", "must be in [0, 1]");
-    m.transparency = obj.number_or("transparency", 0.0f);
-    if (!(m.transparency >= 0.0f && m.transparency <= 1.0f)) obj.fail("transparency", "must be in [0, 1]");
-    m.ior = obj.number_or("ior", 1.0f);
-    if (!(m.ior > 0.0f)) obj.fail("ior", "must be > 0");
+    m.reflectivity = unit_interval(obj, "reflectivity", 0.0f);
+    m.transparency = unit_interval(obj, "transparency", 0.0f);
+    m.ior = positive_ior(obj, 1.0f);
     m.specular_map = textures.data_map(obj, "specular_map");
   } else if (type == "conductor") {
     m.kind = MaterialKind::Conductor;
@@ -81,8 +85,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.roughness = unit_interval(obj, "roughness", 0.0f);
   } else if (type == "rough_dielectric") {
     m.kind = MaterialKind::RoughDielectric;
-    m.ior = obj.number("ior");
-    if (!(m.ior > 0.0f)) obj.fail("ior", "must be > 0");
+    m.ior = positive_ior(obj, std::nullopt);
     m.roughness = unit_interval(obj, "roughness", 0.0f);
     m.tint = textures.colour_or(obj, "tint", {1.0f, 1.0f, 1.0f}, m.texture[kSlotTint]);
     m.fresnel = parse_enum<FresnelKind>(obj.string_or("fresnel", "schlick"), file + ": " + obj.child("fresnel"));
@@ -93,8 +96,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.metallic = unit_interval(obj, "metallic", 0.0f);
     m.roughness = unit_interval(obj, "roughness", 1.0f);
     m.transmission = unit_interval(obj, "transmission", 0.0f);
-    m.ior = obj.number_or("ior", 1.5f);
-    if (!(m.ior > 0.0f)) obj.fail("ior", "must be > 0");
+    m.ior = positive_ior(obj, 1.5f);
   } else if (type == "emissive") {
     m.kind = MaterialKind::Emissive;
     m.radiance = textures.colour(obj, "radiance", m.texture[kSlotRadiance]);

@@ -131,27 +131,15 @@ TRACER_HD bool sample_rough_dielectric(const Material& m, Vec3 wo, bool front, f
   return s.pdf > 0.0f;
 }
 
-// glTF's dielectric F0 from its ior: ((ior - 1) / (ior + 1))^2, 0.04 at ior 1.5.
-TRACER_HD float gltf_f0(float ior) {
-  const float r = (ior - 1.0f) / (ior + 1.0f);
-  return r * r;
-}
-
-TRACER_HD float schlick_weight(float cos_i) {
-  const float m = clamp_of(1.0f - cos_i, 0.0f, 1.0f);
-  const float m2 = m * m;
-  return m2 * m2 * m;
-}
-
 // metal_rough's lobe probabilities seen from wo: specular metallic + (1 - metallic) F(wo.z),
-// the rest split into diffuse and thin-walled transmission by `transmission`.
+// the rest split into diffuse and thin-walled transmission by `transmission`. F is Schlick's
+// from air into ior, whose R0 is glTF's dielectric F0 ((ior - 1) / (ior + 1))^2.
 struct MetalRoughLobes {
   float specular, diffuse, transmission;
 };
 
 TRACER_HD MetalRoughLobes metal_rough_lobes(const Material& m, float cos_o) {
-  const float f0 = gltf_f0(m.ior);
-  const float specular = m.metallic + (1.0f - m.metallic) * (f0 + (1.0f - f0) * schlick_weight(cos_o));
+  const float specular = m.metallic + (1.0f - m.metallic) * fresnel_schlick(cos_o, 1.0f, m.ior);
   const float rest = 1.0f - specular;
   return {specular, rest * (1.0f - m.transmission), rest * m.transmission};
 }
@@ -164,12 +152,10 @@ TRACER_HD BsdfValue eval_metal_rough(const Material& m, Vec3 wo, Vec3 wi) {
   const Vec3 wr = {wi.x, wi.y, abs_of(wi.z)};  // the thin-walled transmission mirrors the reflection
   const SpecularLobe r = specular_reflection(wo, wr, metal_rough_alpha(m));
   const MetalRoughLobes p = metal_rough_lobes(m, wo.z);
-  const float w = schlick_weight(r.cos_oh);
-  const float f0 = gltf_f0(m.ior);
-  const float fd = f0 + (1.0f - f0) * w;
+  const float fd = fresnel_schlick(r.cos_oh, 1.0f, m.ior);
   if (transmitted) return {m.albedo * ((1.0f - m.metallic) * (1.0f - fd) * m.transmission * r.f_cos), p.transmission * r.pdf};
   if (!(wi.z > 0.0f)) return {{0.0f, 0.0f, 0.0f}, 0.0f};
-  const Vec3 metal = (m.albedo + (Vec3{1.0f, 1.0f, 1.0f} - m.albedo) * w) * r.f_cos;
+  const Vec3 metal = fresnel_schlick_f0(m.albedo, r.cos_oh) * r.f_cos;
   const Vec3 dielectric = m.albedo * ((1.0f - fd) * (1.0f - m.transmission) * wi.z / kPi) + Vec3{1.0f, 1.0f, 1.0f} * (fd * r.f_cos);
   return {dielectric * (1.0f - m.metallic) + metal * m.metallic, p.specular * r.pdf + p.diffuse * wi.z / kPi};
 }

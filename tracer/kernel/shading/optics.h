@@ -9,21 +9,33 @@ namespace tracer {
 // Mirror direction of d about the unit normal n.
 TRACER_HD Vec3 reflect(Vec3 d, Vec3 n) { return d - n * (2.0f * dot(d, n)); }
 
-// Refraction of unit d through a surface with unit normal n facing against d, relative
-// index eta = n_incident / n_transmitted. Returns false on total internal reflection,
-// i.e. when cos_t^2 = 1 - eta^2 (1 - cos_i^2) < 0. Evaluated in double as
+// Snell's law's cos_t^2 = 1 - eta^2 (1 - cos_i^2) for relative index eta = n_incident /
+// n_transmitted, negative on total internal reflection. Evaluated in double as
 // (1 - eta^2) + eta^2 cos_i^2, whose first two products are exact: cos_t^2 comes out
 // correctly rounded near the critical angle too, and eta = 1 gives cos_t = cos_i exactly.
 // In float, 1 - cos_i^2 rounds to 1 below cos_i = 2^-12, which made cos_t 0 and IOR-1
 // glass reflect totally at its silhouette.
+TRACER_HD double transmitted_cos2(float cos_i, float eta) {
+  const double eta2 = static_cast<double>(eta) * eta;
+  return (1.0 - eta2) + eta2 * (static_cast<double>(cos_i) * cos_i);
+}
+
+// Refraction of unit d through a surface with unit normal n facing against d, relative
+// index eta = n_incident / n_transmitted. Returns false on total internal reflection.
 TRACER_HD bool refract(Vec3 d, Vec3 n, float eta, Vec3& out, float& cos_t) {
   const float cos_i = -dot(d, n);
-  const double eta2 = static_cast<double>(eta) * eta;
-  const double cos2_t = (1.0 - eta2) + eta2 * (static_cast<double>(cos_i) * cos_i);
+  const double cos2_t = transmitted_cos2(cos_i, eta);
   if (cos2_t < 0.0) return false;
   cos_t = det_sqrt(static_cast<float>(cos2_t));
   out = d * eta + n * (eta * cos_i - cos_t);
   return true;
+}
+
+// Schlick's weight (1 - cos)^5, cos clamped to [0, 1].
+TRACER_HD float schlick_weight(float cos_i) {
+  const float m = clamp_of(1.0f - cos_i, 0.0f, 1.0f);
+  const float m2 = m * m;
+  return m2 * m2 * m;
 }
 
 // Schlick's approximation (Schlick 1994): R0 + (1 - R0)(1 - cos)^5 with
@@ -31,9 +43,7 @@ TRACER_HD bool refract(Vec3 d, Vec3 n, float eta, Vec3& out, float& cos_t) {
 TRACER_HD float fresnel_schlick(float cos_thin_side, float n1, float n2) {
   const float r = (n1 - n2) / (n1 + n2);
   const float r0 = r * r;
-  const float m = clamp_of(1.0f - cos_thin_side, 0.0f, 1.0f);
-  const float m2 = m * m;
-  return r0 + (1.0f - r0) * (m2 * m2 * m);
+  return r0 + (1.0f - r0) * schlick_weight(cos_thin_side);
 }
 
 // Exact Fresnel reflectance of unpolarised light for a dielectric interface (the mean of
@@ -54,8 +64,7 @@ TRACER_HD float dielectric_reflectance(FresnelKind model, float cos_i, float cos
 // The same at a surface seen at cos_i from the side of index n_in: the transmitted cosine
 // from Snell's law (computed as refract does), 1 on total internal reflection.
 TRACER_HD float dielectric_reflectance_at(FresnelKind model, float cos_i, float n_in, float n_out) {
-  const double eta2 = static_cast<double>(n_in / n_out) * (n_in / n_out);
-  const double cos2_t = (1.0 - eta2) + eta2 * (static_cast<double>(cos_i) * cos_i);
+  const double cos2_t = transmitted_cos2(cos_i, n_in / n_out);
   if (cos2_t < 0.0) return 1.0f;
   return dielectric_reflectance(model, cos_i, det_sqrt(static_cast<float>(cos2_t)), n_in, n_out);
 }
@@ -63,9 +72,7 @@ TRACER_HD float dielectric_reflectance_at(FresnelKind model, float cos_i, float 
 // Schlick's approximation with a reflectance at normal incidence per channel (a conductor's
 // or glTF's F0): F0 + (1 - F0)(1 - cos)^5.
 TRACER_HD Vec3 fresnel_schlick_f0(Vec3 f0, float cos_i) {
-  const float m = clamp_of(1.0f - cos_i, 0.0f, 1.0f);
-  const float m2 = m * m;
-  return f0 + (Vec3{1.0f, 1.0f, 1.0f} - f0) * (m2 * m2 * m);
+  return f0 + (Vec3{1.0f, 1.0f, 1.0f} - f0) * schlick_weight(cos_i);
 }
 
 // Exact Fresnel reflectance of unpolarised light on a conductor of complex index eta + i k
