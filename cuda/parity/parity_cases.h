@@ -6,6 +6,7 @@
 #include "kernel/base/philox.h"
 #include "kernel/integrator/adaptive.h"
 #include "kernel/integrator/render_pixel.h"
+#include "kernel/shading/bsdf.h"
 
 namespace tracer::parity {
 
@@ -101,6 +102,38 @@ struct AdaptiveAnswer {
 TRACER_HD AdaptiveAnswer eval_adaptive(const AdaptiveQuery& q) {
   return {pixel_relative_error(q.even, q.odd, q.samples),
           static_cast<uint32_t>(pixel_unconverged(q.even, q.odd, q.samples, q.threshold)), 0u};
+}
+
+struct BsdfQuery {
+  Material m;
+  Vec3 wo, n, wi_other;
+  float u_choice, u1, u2;
+  uint32_t front;
+};
+
+struct BsdfAnswer {
+  uint32_t sampled, specular;
+  Vec3 wi, weight;
+  float pdf;
+  Vec3 f_cos;  // eval_bsdf in the sampled direction
+  float eval_pdf;
+  Vec3 f_cos_other;  // and in a direction of the query's own
+  float pdf_other;
+};
+
+// One material sampled, then evaluated in the sampled direction and in another: the BSDF
+// entry points the path tracer and Whitted's direct light call.
+TRACER_HD BsdfAnswer eval_bsdf_case(const BsdfQuery& q) {
+  BsdfSample s = {{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 0.0f, false};
+  BsdfAnswer a = {};
+  a.sampled = sample_bsdf(q.m, q.wo, q.n, q.front != 0u, q.u_choice, q.u1, q.u2, s) ? 1u : 0u;
+  a.specular = s.specular ? 1u : 0u;
+  a.wi = s.wi, a.weight = s.weight, a.pdf = s.pdf;
+  const BsdfValue v = eval_bsdf(q.m, q.wo, s.wi, q.n, q.front != 0u);
+  a.f_cos = v.f_cos, a.eval_pdf = v.pdf;
+  const BsdfValue other = eval_bsdf(q.m, q.wo, q.wi_other, q.n, q.front != 0u);
+  a.f_cos_other = other.f_cos, a.pdf_other = other.pdf;
+  return a;
 }
 
 }  // namespace tracer::parity

@@ -31,6 +31,11 @@ __global__ void shape_kernel(const ShapeQuery* q, ShapeAnswer* out, size_t n) {
   if (i < n) out[i] = eval_shape(q[i]);
 }
 
+__global__ void bsdf_kernel(const BsdfQuery* q, BsdfAnswer* out, size_t n) {
+  const size_t i = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (i < n) out[i] = eval_bsdf_case(q[i]);
+}
+
 __global__ void adaptive_kernel(const AdaptiveQuery* q, AdaptiveAnswer* out, size_t n) {
   const size_t i = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (i < n) out[i] = eval_adaptive(q[i]);
@@ -73,6 +78,15 @@ std::vector<ShapeAnswer> gpu_shapes(const std::vector<ShapeQuery>& queries) {
   const DeviceBuffer<ShapeQuery> q(queries);
   DeviceBuffer<ShapeAnswer> out(queries.size());
   shape_kernel<<<blocks_for(queries.size()), kBlock>>>(q.get(), out.get(), queries.size());
+  finish_launch();
+  return out.download();
+}
+
+std::vector<BsdfAnswer> gpu_bsdfs(const std::vector<BsdfQuery>& queries) {
+  select_cuda_device();
+  const DeviceBuffer<BsdfQuery> q(queries);
+  DeviceBuffer<BsdfAnswer> out(queries.size());
+  bsdf_kernel<<<blocks_for(queries.size()), kBlock>>>(q.get(), out.get(), queries.size());
   finish_launch();
   return out.download();
 }

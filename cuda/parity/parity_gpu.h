@@ -15,6 +15,7 @@ std::vector<float> gpu_math(MathFunction f, const std::vector<float>& a, const s
 std::vector<Philox4> gpu_philox(const std::vector<PhiloxQuery>& queries);
 std::vector<ShapeAnswer> gpu_shapes(const std::vector<ShapeQuery>& queries);
 std::vector<TraceAnswer> gpu_trace(const SceneArrays& arrays, const SceneView& view, const std::vector<Ray>& rays);
+std::vector<BsdfAnswer> gpu_bsdfs(const std::vector<BsdfQuery>& queries);
 std::vector<AdaptiveAnswer> gpu_adaptive(const std::vector<AdaptiveQuery>& queries);
 std::vector<SampleAnswer> gpu_samples(const SceneArrays& arrays, const SceneView& view);  // every pixel, in index order
 // Every sample's radiance (pixel-major) from the stream schedule's stage kernels.

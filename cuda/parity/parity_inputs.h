@@ -193,4 +193,39 @@ inline LbvhInput lbvh_inputs(uint64_t seed, uint32_t count) {
   return out;
 }
 
+// The microfacet materials (conductor with Schlick's and the exact Fresnel, rough glass,
+// metal-rough with all three lobes) at random roughness and at its edges (0, either side of
+// the smooth threshold, 1), glass of ior 0.5 to 3 and exactly 1, seen from normal to grazing,
+// from either side of glass, every tenth from below its normal, with uniforms at 0 and 1-.
+inline std::vector<BsdfQuery> bsdf_inputs(uint64_t seed, uint32_t count) {
+  Inputs in{seed};
+  const MaterialKind kinds[] = {MaterialKind::Conductor, MaterialKind::RoughDielectric, MaterialKind::MetalRough};
+  const float roughness_edges[] = {0.0f, 0.0099f, kSmoothRoughness, 1.0f};
+  const float u_edges[] = {0.0f, 0x1.fffffep-1f};
+  const auto u = [&](uint32_t i) { return i % 32 == 5 ? u_edges[in.next() % 2] : in.uniform(0.0f, 1.0f); };
+  std::vector<BsdfQuery> q;
+  for (uint32_t i = 0; i < count; ++i) {
+    BsdfQuery b = {};
+    Material& m = b.m;
+    m.kind = kinds[i % 3];
+    m.fresnel = in.next() % 2 ? FresnelKind::Exact : FresnelKind::Schlick;
+    m.roughness = i % 8 == 0 ? roughness_edges[in.next() % 4] : in.uniform(0.0f, 1.0f);
+    m.albedo = in.in_box(0.0f, 1.0f), m.tint = in.in_box(0.0f, 1.0f);
+    m.eta = in.in_box(0.05f, 3.0f), m.k = in.in_box(0.0f, 8.0f);
+    m.metallic = in.uniform(0.0f, 1.0f), m.transmission = in.uniform(0.0f, 1.0f);
+    m.ior = i % 16 == 1 ? 1.0f : in.uniform(0.5f, 3.0f);
+    for (uint32_t& t : m.texture) t = kNoTexture;
+    m.specular_map = m.normal_map = m.bump_map = kNoTexture;
+    b.n = in.direction(), b.wo = in.direction(), b.wi_other = in.direction();
+    if (i % 10 != 0 && dot(b.wo, b.n) < 0.0f) b.wo = -b.wo;
+    if (i % 10 == 1) b.wo = normalize(b.wo - b.n * (dot(b.wo, b.n) - 1e-3f));  // grazing
+    b.u_choice = u(i);
+    b.u1 = u(i);
+    b.u2 = u(i);
+    b.front = static_cast<uint32_t>(in.next() % 2);
+    q.push_back(b);
+  }
+  return q;
+}
+
 }  // namespace tracer::parity

@@ -113,6 +113,12 @@ ParityAnswers evaluate_parity_case(const ParityCase& c, bool on_gpu, unsigned th
       set_answers(r, timed([&] { return on_gpu ? gpu_shapes(q) : on_cpu<ShapeAnswer>(q, threads, eval_shape); }));
       break;
     }
+    case ParityKind::Bsdf: {
+      const std::vector<BsdfQuery> q = bsdf_inputs(s.seed, s.count);
+      r.inputs = q.size(), r.inputs_sha1 = sha1_of(q);
+      set_answers(r, timed([&] { return on_gpu ? gpu_bsdfs(q) : on_cpu<BsdfAnswer>(q, threads, eval_bsdf_case); }));
+      break;
+    }
     case ParityKind::Trace: {
       const std::vector<Ray> rays = ray_inputs(s.seed, s.count, s.lo, s.hi);
       r.inputs = rays.size(), r.inputs_sha1 = sha1_of(rays);
@@ -230,12 +236,12 @@ StoredParityCase read_parity_case(const std::string& path) {
   s.inputs_sha1 = text("inputs_sha1");
   s.answers_sha1 = text("answers_sha1");
   const ParitySpec& spec = s.parity.spec;
-  if (static_cast<uint32_t>(spec.kind) > static_cast<uint32_t>(ParityKind::Stream) ||
+  if (static_cast<uint32_t>(spec.kind) > static_cast<uint32_t>(ParityKind::Bsdf) ||
       spec.function >= kMathFunctionCount || spec.count > kMaxParityInputs ||
       (spec.kind == ParityKind::Stream && spec.count == 0))
     throw InputError(path + ": parity case " + s.parity.name + " has kind " +
                      std::to_string(static_cast<uint32_t>(spec.kind)) + ", function " + std::to_string(spec.function) +
-                     ", count " + std::to_string(spec.count) + " (kinds 0-7, functions 0-8, counts up to 2^24)");
+                     ", count " + std::to_string(spec.count) + " (kinds 0-8, functions 0-8, counts up to 2^24)");
   if (s.parity.spec.kind == ParityKind::Trace || s.parity.spec.kind == ParityKind::Sample ||
       s.parity.spec.kind == ParityKind::Stream)
     s.parity.scene = decode_scene_bundle(file, path);

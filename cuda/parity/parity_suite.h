@@ -11,7 +11,7 @@
 
 namespace tracer::parity {
 
-enum class ParityKind : uint32_t { Math, Philox, Shapes, Trace, Sample, Lbvh, Adaptive, Stream };
+enum class ParityKind : uint32_t { Math, Philox, Shapes, Trace, Sample, Lbvh, Adaptive, Stream, Bsdf };
 
 struct ParitySpec {
   ParityKind kind;
@@ -20,7 +20,7 @@ struct ParitySpec {
   uint32_t count;  // Math: random pairs (and half as many domain points); Philox: queries;
                    // Shapes: spheres and triangles each; Trace: rays; Sample: unused;
                    // Lbvh: triangles, built into nodes and leaf order; Adaptive: pixels;
-                   // Stream: the stream width
+                   // Stream: the stream width; Bsdf: material queries
   uint32_t reserved;
   Vec3 lo, hi;  // Trace: the box the ray origins are drawn from
 };

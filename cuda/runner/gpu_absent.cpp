@@ -25,6 +25,7 @@ std::string gpu_device() { no_cuda(); }
 std::vector<float> gpu_math(MathFunction, const std::vector<float>&, const std::vector<float>&) { no_cuda(); }
 std::vector<Philox4> gpu_philox(const std::vector<PhiloxQuery>&) { no_cuda(); }
 std::vector<ShapeAnswer> gpu_shapes(const std::vector<ShapeQuery>&) { no_cuda(); }
+std::vector<BsdfAnswer> gpu_bsdfs(const std::vector<BsdfQuery>&) { no_cuda(); }
 std::vector<AdaptiveAnswer> gpu_adaptive(const std::vector<AdaptiveQuery>&) { no_cuda(); }
 std::vector<TraceAnswer> gpu_trace(const SceneArrays&, const SceneView&, const std::vector<Ray>&) { no_cuda(); }
 std::vector<SampleAnswer> gpu_samples(const SceneArrays&, const SceneView&) { no_cuda(); }

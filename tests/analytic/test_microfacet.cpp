@@ -154,5 +154,38 @@ TEST(Microfacet, RoughDielectricConservesEnergyBetweenReflectionAndTransmission)
     }
 }
 
+// Glass of ior 1 (index-matched) has no refraction for Walter's half vector to describe:
+// what it transmits goes straight on as a delta (pdf 0, weight the tint), from either side,
+// and every sample and value is a number, with Schlick's and the exact Fresnel.
+TEST(Microfacet, IndexMatchedRoughGlassTransmitsStraightOn) {
+  Material m = test::microfacet_material(MaterialKind::RoughDielectric, 0.5f);
+  m.ior = 1.0f;
+  m.tint = {0.8f, 0.7f, 0.6f};
+  const Vec3 n = {0, 0, 1};
+  int transmitted = 0;
+  for (FresnelKind fresnel : {FresnelKind::Schlick, FresnelKind::Exact})
+    for (bool front : {true, false})
+      for (int i = 0; i < 4096; ++i) {
+        m.fresnel = fresnel;
+        const Vec3 wo = direction(1.5 * (i % 64 + 0.5) / 64, 0.3);
+        for (Vec3 wi : {-wo, reflect(-wo, n), direction(2.5, 1.0)}) {
+          const BsdfValue v = eval_bsdf(m, wo, wi, n, front);
+          ASSERT_TRUE(std::isfinite(v.pdf) && std::isfinite(v.f_cos.x)) << "value " << i;
+        }
+        BsdfSample s;
+        if (!sample_bsdf(m, wo, n, front, (i / 64 + 0.5f) / 64, 0.37f, 0.61f, s)) continue;
+        ASSERT_TRUE(std::isfinite(s.pdf) && std::isfinite(s.weight.x)) << "sample " << i;
+        if (s.wi.z > 0) continue;
+        ++transmitted;
+        EXPECT_TRUE(s.specular);
+        EXPECT_EQ(s.pdf, 0.0f);
+        EXPECT_EQ(s.wi.x, -wo.x);
+        EXPECT_EQ(s.wi.z, -wo.z);
+        EXPECT_EQ(s.weight.x, m.tint.x);
+        EXPECT_EQ(s.weight.z, m.tint.z);
+      }
+  EXPECT_GT(transmitted, 4 * 4096 * 3 / 4) << "Schlick's reflectance at ior 1 is (1 - cos)^5, small";
+}
+
 }  // namespace
 }  // namespace tracer

@@ -144,6 +144,28 @@ TEST(CudaParity, AdaptiveSamplingDecisions) {
   });
 }
 
+// Sampling and evaluating the microfacet materials. The CPU side also checks every answer
+// is a number (a NaN here would reach the film) and that every kind samples.
+TEST(CudaParity, MicrofacetBsdfs) {
+  const std::vector<BsdfQuery> q = bsdf_inputs(23, 1u << 20);
+  std::vector<BsdfAnswer> cpu(q.size());
+  size_t sampled[3] = {}, specular = 0;
+  for (size_t i = 0; i < q.size(); ++i) {
+    const BsdfAnswer& a = cpu[i] = eval_bsdf_case(q[i]);
+    const float values[] = {a.wi.x, a.wi.y, a.wi.z, a.weight.x, a.weight.y, a.weight.z, a.pdf, a.f_cos.x, a.f_cos.y,
+                            a.f_cos.z, a.eval_pdf, a.f_cos_other.x, a.f_cos_other.y, a.f_cos_other.z, a.pdf_other};
+    for (float v : values) ASSERT_TRUE(std::isfinite(v)) << "input " << i << ": " << hex(v);
+    sampled[i % 3] += a.sampled;
+    specular += a.specular;
+  }
+  for (size_t kind = 0; kind < 3; ++kind) EXPECT_GT(sampled[kind], q.size() / 6) << "material kind " << kind;
+  EXPECT_GT(specular, q.size() / 100) << "the smooth conductor and glass";
+  SKIP_WITHOUT_GPU();
+  expect_same_bits(cpu, gpu_bsdfs(q), [&](size_t i) {
+    return "kind " + std::to_string(static_cast<int>(q[i].m.kind)) + ", pdf " + hex(cpu[i].pdf);
+  });
+}
+
 TEST(CudaParity, WholePixelsOfEveryGolden) {
   const GoldenManifest manifest = read_manifest(TRACER_SOURCE_DIR);
   std::vector<Scene> scenes;

@@ -67,6 +67,7 @@ std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
     cases.push_back({std::string("math-") + kMathNames[f], {ParityKind::Math, f, f, 1u << 20, 0, {}, {}}, {}});
   cases.push_back({"philox", {ParityKind::Philox, 0, 7, 1u << 21, 0, {}, {}}, {}});
   cases.push_back({"shapes", {ParityKind::Shapes, 0, 11, 1u << 20, 0, {}, {}}, {}});
+  cases.push_back({"microfacet-bsdfs", {ParityKind::Bsdf, 0, 23, 1u << 20, 0, {}, {}}, {}});
   for (const char* name : kTraceScenes) {
     const Scene bvh = golden_scene(manifest, name, AccelKind::Bvh);
     const BvhNode& root = bvh.bvh_nodes.at(0);  // ray origins fill the scene's bounds

@@ -97,12 +97,15 @@ TRACER_HD BsdfValue eval_rough_dielectric(const Material& m, Vec3 wo, Vec3 wi, b
   float n_wo, n_other;
   dielectric_sides(m, front, n_wo, n_other);
   const float alpha = ggx_alpha(m.roughness);
+  const BsdfValue none = {{0.0f, 0.0f, 0.0f}, 0.0f};  // also keeps exact Fresnel off cos 0 at ior 1 (0 / 0)
   if (wi.z > 0.0f) {
     const SpecularLobe r = specular_reflection(wo, wi, alpha);
+    if (!(r.cos_oh > 0.0f)) return none;
     const float f = dielectric_reflectance_at(m.fresnel, r.cos_oh, n_wo, n_other);
     return {Vec3{1.0f, 1.0f, 1.0f} * (f * r.f_cos), f * r.pdf};
   }
   const SpecularLobe t = specular_transmission(wo, wi, n_other / n_wo, alpha);
+  if (n_wo == n_other || !(t.cos_oh > 0.0f)) return none;  // index-matched: a delta (sample_rough_dielectric)
   const float f = 1.0f - dielectric_reflectance_at(m.fresnel, t.cos_oh, n_wo, n_other);
   return {m.tint * (f * t.f_cos), f * t.pdf};
 }
@@ -122,13 +125,18 @@ TRACER_HD bool sample_rough_dielectric(const Material& m, Vec3 wo, bool front, f
     if (!(s.wi.z > 0.0f)) return false;
     s.weight = Vec3{1.0f, 1.0f, 1.0f} * (ggx_g2(wo, s.wi, alpha) / ggx_g1(wo, alpha));
     s.pdf = f * visible / (4.0f * cos_oh);
+  } else if (n_wo == n_other) {
+    // Index-matched glass: every microfacet passes wo straight on and Walter's half vector
+    // is undefined; a delta transmission, as the smooth dielectric's.
+    s = {-wo, m.tint, 0.0f, true};
+    return true;
   } else {
     if (!refract(-wo, h, n_wo / n_other, s.wi, cos_t) || !(s.wi.z < 0.0f)) return false;
     const float denom = dot(s.wi, h) + cos_oh * n_wo / n_other;
     s.weight = m.tint * (ggx_g2(wo, s.wi, alpha) / ggx_g1(wo, alpha));
     s.pdf = (1.0f - f) * visible * -dot(s.wi, h) / (denom * denom);
   }
-  return s.pdf > 0.0f;
+  return s.pdf > 0.0f && s.pdf < kInfinity;
 }
 
 // metal_rough's lobe probabilities seen from wo: specular metallic + (1 - metallic) F(wo.z),
