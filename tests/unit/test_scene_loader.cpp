@@ -97,6 +97,11 @@ TEST(SceneLoader, FeatureMaskListsWhatTheSceneUses) {
   EXPECT_EQ(s.bounded.size(), 1u);
 }
 
+TEST(SceneLoader, EveryFeatureBitHasOneName) {
+  for (uint32_t bit = 1; bit <= kFeatureMicrofacet; bit <<= 1) EXPECT_EQ(feature_names(bit).size(), 1u) << bit;
+  EXPECT_EQ(feature_names(kFeatureMicrofacet), std::vector<std::string>{"microfacet"});
+}
+
 TEST(SceneLoader, DefaultsAndOverrides) {
   RenderOverrides ov;
   ov.spp = 9;

@@ -136,7 +136,7 @@ Scene load_scene(const std::string& path, const RenderOverrides& overrides) {
 std::vector<std::string> feature_names(uint32_t features) {
   static const char* names[] = {"sphere",    "plane",           "triangle", "quad",     "lambert",
                                 "metal",     "dielectric",      "phong",    "emissive", "point-light",
-                                "thin-lens", "shading-normals", "textures"};
+                                "thin-lens", "shading-normals", "textures", "microfacet"};
   std::vector<std::string> out;
   for (uint32_t i = 0; i < sizeof names / sizeof names[0]; ++i)
     if (features & (1u << i)) out.push_back(names[i]);
