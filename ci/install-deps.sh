@@ -8,6 +8,7 @@ build_packages=(
   cmake g++ make
   libopenimageio-dev openimageio-tools    # image I/O and comparison (OIIO's CMake package names the tools)
   libtinyobjloader-dev                    # OBJ meshes
+  libtinygltf-dev                         # glTF 2.0 files
   libglm-dev                              # the kernel's vectors and matrices
   nlohmann-json3-dev                      # scene files
   libcli11-dev                            # the command line
@@ -18,6 +19,7 @@ test_packages=(
   chromium                                # opens the golden report headless in a test
   strace                                  # stops a command at its Nth rename with a signal (commit tests)
   python3                                 # ci/mutation.py, the mutation campaign
+  assimp-testmodels                       # glTF files, broken ones included: the glTF reader's corpus test
   fonts-dejavu-core                       # the font of the bench converge plot
   libembree-dev                           # the Embree row of bench rays (benchmark only)
   clang libomp-dev libclang-rt-14-dev     # the second compiler, its OpenMP runtime, libFuzzer and sanitizers (ci/extra.sh)

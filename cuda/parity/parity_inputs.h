@@ -215,7 +215,7 @@ inline std::vector<BsdfQuery> bsdf_inputs(uint64_t seed, uint32_t count) {
     m.metallic = in.uniform(0.0f, 1.0f), m.transmission = in.uniform(0.0f, 1.0f);
     m.ior = i % 16 == 1 ? 1.0f : in.uniform(0.5f, 3.0f);
     for (uint32_t& t : m.texture) t = kNoTexture;
-    m.specular_map = m.normal_map = m.bump_map = kNoTexture;
+    m.factor_map = m.normal_map = m.bump_map = kNoTexture;
     b.n = in.direction(), b.wo = in.direction(), b.wi_other = in.direction();
     if (i % 10 != 0 && dot(b.wo, b.n) < 0.0f) b.wo = -b.wo;
     if (i % 10 == 1) b.wo = normalize(b.wo - b.n * (dot(b.wo, b.n) - 1e-3f));  // grazing

@@ -10,6 +10,12 @@ fuzzer=$1 source=$2 name=$3 seconds=$4 work=$5
 rm -rf "$work"
 mkdir -p "$work/corpus" "$work/artifacts"
 cp "$source/corpus/$name"/* "$work/corpus/"
+# The glTF target also starts from Debian's assimp-testmodels (its glTF 2.0 files, broken ones
+# included) where that package is installed.
+if [ "$name" = gltf ] && [ -d /usr/share/assimp/models/glTF2 ]; then
+  find /usr/share/assimp/models/glTF2 \( -name '*.gltf' -o -name '*.glb' \) -size -64k |
+    while read -r f; do cp "$f" "$work/corpus/assimp-$(echo "${f#/usr/share/assimp/models/glTF2/}" | tr / -)"; done
+fi
 dict=()
 [ -f "$source/dict/$name.dict" ] && dict=("-dict=$source/dict/$name.dict")
 # A target whose libraries leak where we cannot free (suppressions/NAME.lsan says what and why)

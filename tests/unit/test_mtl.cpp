@@ -88,7 +88,7 @@ TEST(Mtl, EveryMappingRowAndFacesWithoutUsemtl) {
   const Material plastic = material_of(4);
   EXPECT_EQ(plastic.kind, MaterialKind::Phong);
   EXPECT_EQ(plastic.shininess, 50.0f);
-  EXPECT_NE(plastic.specular_map, kNoTexture);
+  EXPECT_NE(plastic.factor_map, kNoTexture);
   const Material clay = material_of(5);
   EXPECT_EQ(clay.kind, MaterialKind::Lambert);
   EXPECT_NE(clay.texture[kSlotAlbedo], kNoTexture);

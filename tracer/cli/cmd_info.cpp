@@ -1,5 +1,6 @@
 // `tracer info SCENE`: what the loader made of a scene: shapes and primitives, materials and
-// lights, the feature mask, the acceleration structure and how long loading took.
+// lights, the feature mask, a glTF file's contents and what it left out, the acceleration
+// structure and how long loading took.
 #include <chrono>
 #include <cstdio>
 
@@ -27,6 +28,7 @@ static int run_info(const std::string& scene_path) {
   std::printf("materials  %zu, point lights %zu\n", scene.materials.size(), scene.lights.size());
   std::printf("features  ");
   for (const std::string& f : feature_names(scene.features)) std::printf(" %s", f.c_str());
+  for (const std::string& line : scene.report.gltf) std::printf("\ngltf       %s", line.c_str());
   const AccelSummary& accel = scene.report.accel;
   const std::string size = scene.settings.accel == AccelKind::Grid ? std::to_string(accel.cells) + " cells"
                                                                    : std::to_string(accel.nodes) + " nodes";
@@ -40,7 +42,7 @@ static int run_info(const std::string& scene_path) {
 const RegisterCommand kInfoCommand({"", "info", "primitive counts, feature mask and acceleration stats",
                                     [](CLI::App& app) {
                                       auto scene = std::make_shared<std::string>();
-                                      app.add_option("scene", *scene, "scene file (JSON)")->required();
+                                      app.add_option("scene", *scene, "scene file (JSON), or a glTF 2.0 file")->required();
                                       return [scene] { return run_info(*scene); };
                                     }});
 

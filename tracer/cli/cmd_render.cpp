@@ -59,16 +59,37 @@ Json render_identity(const Scene& scene) {
 }  // namespace
 
 void add_scene_options(CLI::App& app, RenderCommand& cmd) {
-  app.add_option("scene", cmd.scene, "scene file (JSON)")->required();
+  app.add_option("scene", cmd.scene, "scene file (JSON), or a glTF 2.0 file (.gltf, .glb)")->required();
   for (const OptionInfo& o : option_table()) app.add_option(option_flag(o.name), cmd.options[o.name], o.help);
+  app.add_option("--camera", cmd.camera, "glTF files: the camera, by index or name (default: the first)");
+  app.add_option("--background", cmd.background,
+                 "glTF files: a constant background R,G,B (default: white without lights, black with)");
   app.add_option("--samples", cmd.samples,
                  "A:B renders only samples [A, B) of every pixel (render: into NAME.partial, for tracer merge)");
+}
+
+// "R,G,B": three decimals in [0, 1e6], the radiance of a constant background.
+static Vec3 parse_colour_text(const std::string& text, const std::string& context) {
+  float c[3];
+  size_t start = 0;
+  for (int i = 0; i < 3; ++i) {
+    const size_t comma = i < 2 ? text.find(',', start) : text.size();
+    const auto v = comma == std::string::npos ? std::nullopt
+                                              : parse_decimal(std::string_view(text).substr(start, comma - start), 0.0, 1e6);
+    if (!v || (i == 2 && comma != text.size()))
+      throw InputError(context + ": expected R,G,B, three decimals from 0 to 1e6, got \"" + text + "\"");
+    c[i] = static_cast<float>(*v);
+    start = comma + 1;
+  }
+  return {c[0], c[1], c[2]};
 }
 
 RenderOverrides scene_overrides(const RenderCommand& cmd) {
   RenderOverrides overrides;
   for (const auto& [name, text] : cmd.options)
     if (text) parse_option_text(name, *text, cmd.scene + ": command line ", overrides);
+  overrides.camera = cmd.camera;
+  if (cmd.background) overrides.background = parse_colour_text(*cmd.background, cmd.scene + ": command line --background");
   return overrides;
 }
 

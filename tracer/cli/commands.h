@@ -18,6 +18,7 @@ struct RenderCommand {
   std::string samples;     // --samples A:B: write samples [A, B) to a partial file
   std::string sample_map;  // --sample-map FILE: adaptive sampling's per-pixel sample counts
   bool quiet = false;
+  std::optional<std::string> camera, background;  // glTF files only
 };
 
 // The scene argument, one flag per option of the options table, and --samples.

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "io/input_error.h"
 
@@ -17,11 +18,9 @@ constexpr size_t kMaxNameBytes = 256;        // long names: 255 characters and t
 
 class HeaderReader {
  public:
-  HeaderReader(const std::string& path, std::string what)
-      : path_(path), what_(std::move(what)), in_(path, std::ios::binary) {
-    std::error_code ec;
-    size_ = std::filesystem::file_size(path, ec);
-    if (ec || !in_) fail("cannot open it");
+  HeaderReader(std::istream& in, uint64_t size, const std::string& path, std::string what)
+      : path_(path), what_(std::move(what)), in_(in), size_(size) {
+    if (!in_) fail("cannot open it");
   }
 
   [[noreturn]] void fail(const std::string& why) const {
@@ -61,12 +60,12 @@ class HeaderReader {
 
  private:
   std::string path_, what_;
-  std::ifstream in_;
+  std::istream& in_;
   uint64_t size_ = 0, offset_ = 0;
 };
 
-void check_exr(const std::string& path) {
-  HeaderReader in(path, "EXR header");
+void check_exr(std::istream& stream, uint64_t size, const std::string& path) {
+  HeaderReader in(stream, size, path, "EXR header");
   in.skip(4);
   const uint32_t version = static_cast<uint32_t>(in.int32());
   const bool multipart = (version & kMultipartFlag) != 0;
@@ -85,8 +84,8 @@ void check_exr(const std::string& path) {
   }
 }
 
-void check_png(const std::string& path) {
-  HeaderReader in(path, "PNG chunk");
+void check_png(std::istream& stream, uint64_t size, const std::string& path) {
+  HeaderReader in(stream, size, path, "PNG chunk");
   in.skip(sizeof kPngSignature);
   for (;;) {
     const uint32_t length = in.big_endian32();
@@ -100,16 +99,30 @@ void check_png(const std::string& path) {
   }
 }
 
+// Checks the stream's image when its first bytes name EXR or PNG; `name` goes in errors.
+void check_stream(std::istream& stream, uint64_t size, const std::string& name) {
+  unsigned char magic[8] = {};
+  stream.read(reinterpret_cast<char*>(magic), sizeof magic);
+  const std::streamsize got = stream.gcount();
+  stream.clear();
+  stream.seekg(0);
+  if (got >= 4 && std::memcmp(magic, kExrMagic, 4) == 0) check_exr(stream, size, name);
+  if (got == 8 && std::memcmp(magic, kPngSignature, 8) == 0) check_png(stream, size, name);
+}
+
 }  // namespace
 
 void check_declared_sizes(const std::string& path) {
-  unsigned char magic[8] = {};
-  std::ifstream probe(path, std::ios::binary);
-  probe.read(reinterpret_cast<char*>(magic), sizeof magic);
-  const std::streamsize got = probe.gcount();
-  probe.close();
-  if (got >= 4 && std::memcmp(magic, kExrMagic, 4) == 0) check_exr(path);
-  if (got == 8 && std::memcmp(magic, kPngSignature, 8) == 0) check_png(path);
+  std::ifstream file(path, std::ios::binary);
+  std::error_code ec;
+  const uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec || !file) throw InputError(path + ": cannot read image: cannot open it");
+  check_stream(file, size, path);
+}
+
+void check_declared_sizes(const std::vector<unsigned char>& bytes, const std::string& name) {
+  std::istringstream stream(std::string(bytes.begin(), bytes.end()));
+  check_stream(stream, bytes.size(), name);
 }
 
 }  // namespace tracer

@@ -7,6 +7,7 @@
 //   PNG (ISO/IEC 15948): signature, then chunks "length type data crc" up to IEND.
 #pragma once
 #include <string>
+#include <vector>
 
 namespace tracer {
 
@@ -14,5 +15,6 @@ namespace tracer {
 // declared size is larger than what is left of the file or the structure is cut short.
 // Files of other formats are left to their readers.
 void check_declared_sizes(const std::string& path);
+void check_declared_sizes(const std::vector<unsigned char>& bytes, const std::string& name);  // an image in memory
 
 }  // namespace tracer

@@ -83,18 +83,16 @@ void check_image_output(const std::string& path, const std::string& option) {
     throw InputError(path + ": " + option + ": no image writer for extension " + p.extension().string());
 }
 
-ImagePixels read_image_pixels(const std::string& path, int max_channels_read, int max_side) {
-  // A FIFO or a device would block OpenImageIO or never end.
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": cannot read image: no such file");
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": cannot read image: not a regular file");
-  check_declared_sizes(path);
+// Opens `open_name` (through `proxy` when given: its extension picks the reader), checks the
+// header against the limits and reads the pixels; errors name `path`.
+ImagePixels read_opened_image(const std::string& open_name, const std::string& path, OIIO::Filesystem::IOProxy* proxy,
+                              int max_channels_read, int max_side) {
   // Only the reader the extension names reads the file: by default OpenImageIO also tries
   // every other format library it links (DICOM, FITS, RAW, ...) on a file its own reader
   // refuses, which puts formats the tracer never documents in front of hostile input.
   static const bool one_reader = OIIO::attribute("try_all_readers", 0);
   (void)one_reader;
-  const std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path);
+  const std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(open_name, nullptr, proxy);
   if (!in) throw InputError(path + ": cannot read image: " + OIIO::geterror());
   // The header is input too: its size is checked before any pixel is allocated.
   const OIIO::ImageSpec& header = in->spec();
@@ -122,6 +120,22 @@ ImagePixels read_image_pixels(const std::string& path, int max_channels_read, in
   if (!in->read_image(0, 0, 0, image.channels_read, OIIO::TypeDesc::FLOAT, image.values.data()))
     throw InputError(path + ": cannot read image: " + in->geterror());
   return image;
+}
+
+ImagePixels read_image_pixels(const std::string& path, int max_channels_read, int max_side) {
+  // A FIFO or a device would block OpenImageIO or never end.
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": cannot read image: no such file");
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": cannot read image: not a regular file");
+  check_declared_sizes(path);
+  return read_opened_image(path, path, nullptr, max_channels_read, max_side);
+}
+
+ImagePixels read_image_pixels_from_memory(const std::vector<unsigned char>& bytes, const std::string& format,
+                                          const std::string& name, int max_channels_read) {
+  check_declared_sizes(bytes, name);
+  OIIO::Filesystem::IOMemReader proxy(bytes.data(), bytes.size());
+  return read_opened_image("memory." + format, name, &proxy, max_channels_read, kMaxImageSide);
 }
 
 Image read_image(const std::string& path) {

@@ -30,6 +30,10 @@ struct ImagePixels {
 // min(channels, max_channels_read) channels. InputError naming the path when any of that
 // fails, an allocation included.
 ImagePixels read_image_pixels(const std::string& path, int max_channels_read, int max_side = kMaxImageSide);
+// The same for an encoded image in memory, read by the reader of `format` ("png", "jpg");
+// errors name `name`.
+ImagePixels read_image_pixels_from_memory(const std::vector<unsigned char>& bytes, const std::string& format,
+                                          const std::string& name, int max_channels_read);
 
 void add_image(OutputBatch& batch, const Image& image, const std::string& path);  // written on commit
 void write_image(const Image& image, const std::string& path);                    // a batch of one

@@ -48,6 +48,9 @@ struct RenderOverrides : RenderOptions {
   RenderOverrides() = default;
   explicit RenderOverrides(const RenderOptions& options) : RenderOptions(options) {}
   std::optional<FresnelKind> fresnel;
+  // glTF files only (docs/gltf.md): the camera, by name or index, and a constant background.
+  std::optional<std::string> camera;
+  std::optional<Vec3> background;
 };
 
 // Reads the options of `section` ("render", "film"; nullptr: every option) present in obj;

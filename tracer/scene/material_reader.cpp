@@ -53,7 +53,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
   m.ior = 1.0f;
   m.shininess = 1.0f;
   for (uint32_t& t : m.texture) t = kNoTexture;
-  m.specular_map = m.normal_map = m.bump_map = kNoTexture;
+  m.factor_map = m.normal_map = m.bump_map = kNoTexture;
   type = read_type(obj, "material");
   if (type == "lambert") {
     m.kind = MaterialKind::Lambert;
@@ -78,7 +78,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.reflectivity = unit_interval(obj, "reflectivity", 0.0f);
     m.transparency = unit_interval(obj, "transparency", 0.0f);
     m.ior = positive_ior(obj, 1.0f);
-    m.specular_map = textures.data_map(obj, "specular_map");
+    m.factor_map = textures.data_map(obj, "specular_map");
   } else if (type == "conductor") {
     m.kind = MaterialKind::Conductor;
     read_conductor_fresnel(obj, textures, m);

@@ -11,7 +11,7 @@ Material material_from_mtl(const MtlMaterial& mtl, TextureLoader& textures, cons
                            const std::string& where, std::string& type) {
   Material m{};
   for (uint32_t& t : m.texture) t = kNoTexture;
-  m.specular_map = m.normal_map = m.bump_map = kNoTexture;
+  m.factor_map = m.normal_map = m.bump_map = kNoTexture;
   m.ior = 1.0f;
   m.shininess = 1.0f;
   const auto file = [&](const std::string& name) { return (std::filesystem::path(obj_dir) / name).string(); };
@@ -53,7 +53,7 @@ Material material_from_mtl(const MtlMaterial& mtl, TextureLoader& textures, cons
     m.specular = mtl.ks;
     m.shininess = std::max(mtl.ns, 0.0f);
     Vec3 mean;
-    if (!mtl.map_ks.empty()) m.specular_map = textures.image_file(at, file(mtl.map_ks), true, mean);
+    if (!mtl.map_ks.empty()) m.factor_map = textures.image_file(at, file(mtl.map_ks), true, mean);
   } else {
     type = "lambert";
     m.kind = MaterialKind::Lambert;

@@ -21,6 +21,7 @@ struct LoadReport {
   AccelSummary accel;                            // the built structure's name, nodes and cells
   size_t accel_bytes = 0;                        // its nodes, cells and index arrays
   double build_seconds = 0.0;                    // its build time
+  std::vector<std::string> gltf;                 // a glTF file's contents and what was left out, a line each
 };
 
 // The arrays (SceneArrays, listed in kernel/scene/scene_arrays.h) and the view's scalars,

@@ -9,6 +9,7 @@
 #include "io/out_of_memory.h"
 #include "io/text_file.h"
 #include "scene/camera_setup.h"
+#include "scene/gltf_file.h"
 #include "scene/light_reader.h"
 #include "scene/light_table.h"
 #include "scene/material_reader.h"
@@ -73,6 +74,9 @@ Scene load_scene_unguarded(const std::string& text, const std::string& path, con
   const std::string format = top.string("format");
   if (format != "tracer-scene/1") top.fail("format", "expected \"tracer-scene/1\", got \"" + format + "\"");
 
+  if (overrides.camera || overrides.background)
+    throw InputError(path + ": command line " + (overrides.camera ? "--camera" : "--background") +
+                     ": for glTF files; a JSON scene has its own camera and background keys");
   scene.settings = read_settings(top.find("render"), top.get("film"), path, overrides, scene.report.used_types);
   const CameraSpec camera = read_camera_spec(top.get("camera"), path);
   scene.camera = make_camera(camera, scene.settings.width, scene.settings.height);
@@ -105,6 +109,13 @@ Scene load_scene_unguarded(const std::string& text, const std::string& path, con
   read_shapes(top.get("shapes"), path, material_ids, material_types, textures, scene);
   top.finish();
 
+  finish_scene(scene, overrides);
+  return scene;
+}
+
+}  // namespace
+
+void finish_scene(Scene& scene, const RenderOverrides& overrides) {
   for (const Primitive& p : scene.primitives) {
     scene.features |= shape_feature(p.kind) | material_feature(scene.materials[p.material].kind);
     if (p.shading >= 0 && scene.triangle_shading[p.shading].has_normals) scene.features |= kFeatureShadingNormals;
@@ -119,14 +130,14 @@ Scene load_scene_unguarded(const std::string& text, const std::string& path, con
   install_acceleration(build_acceleration(scene.settings.accel, scene.primitives, scene.settings.grid_resolution),
                        scene);
   scene.report.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
-  return scene;
 }
-
-}  // namespace
 
 Scene load_scene_text(const std::string& text, const std::string& path, const RenderOverrides& overrides) {
   return naming_file_when_out_of_memory(path, "loading the scene, its meshes and textures and building its accelerator",
-                                        [&] { return load_scene_unguarded(text, path, overrides); });
+                                        [&] {
+                                          return is_gltf_path(path) ? load_gltf_scene(text, path, overrides)
+                                                                    : load_scene_unguarded(text, path, overrides);
+                                        });
 }
 
 Scene load_scene(const std::string& path, const RenderOverrides& overrides) {

@@ -18,14 +18,14 @@ std::vector<std::string> names_of() {
 
 const std::map<std::string, std::vector<std::string>>& accepted_scene_types() {
   static const std::map<std::string, std::vector<std::string>> types = {
-      {"shape", {"sphere", "plane", "triangle", "quad", "box", "mesh"}},
+      {"shape", {"sphere", "plane", "triangle", "quad", "box", "mesh", "gltf"}},
       {"material", names_of<MaterialKind>()},
       {"light", {"point"}},
       {"background", names_of<BackgroundKind>()},
       {"integrator", names_of<IntegratorKind>()},
       {"sampler", names_of<SamplerKind>()},
       {"accel", names_of<AccelKind>()},
-      {"texture", {"image", "checker", "specular_map", "normal_map", "bump_map"}},
+      {"texture", {"image", "checker", "specular_map", "normal_map", "bump_map", "metal_rough_map"}},
       {"transform", {"translate", "scale", "rotate", "rotate_xyz"}},
   };
   return types;

@@ -3,22 +3,16 @@
 #include <filesystem>
 
 #include "scene/material_reader.h"
+#include "io/text_file.h"
+#include "scene/gltf_scene.h"
 #include "scene/mesh.h"
-#include "scene/mesh_tangents.h"
+#include "scene/mesh_primitives.h"
 #include "scene/mtl_materials.h"
 #include "scene/scene_types.h"
 #include "scene/transform.h"
 
 namespace tracer {
 namespace {
-
-// Whether normalize(cross(e1, e2)), as surface.h computes a triangle's or quad's normal,
-// is a finite unit vector: false for zero area (collinear or coincident corners) and for
-// cross products whose squared length under- or overflows a float.
-bool has_unit_normal(Vec3 e1, Vec3 e2) {
-  const Vec3 n = normalize(cross(e1, e2));
-  return is_finite(n) && length(n) > 0.5f;
-}
 
 // Also records each step's kind in `used_types` ("transform:rotate").
 Transform read_transform(const Json& value, const std::string& path, const std::string& file,
@@ -70,6 +64,7 @@ class ShapeReader {
     const Json* tv = obj.find("transform");
     const Transform xf =
         tv ? read_transform(*tv, obj.child("transform"), scene_.file, scene_.report.used_types) : Transform{};
+    if (type == "gltf") return add_gltf(obj, xf);
     const Json* mat = obj.find("material");
     if (!mat && type == "mesh" && obj.find("file")) return add_mtl_mesh(obj, xf);
     if (!mat)
@@ -139,7 +134,7 @@ class ShapeReader {
     grey.kind = MaterialKind::Lambert;
     grey.albedo = {0.5f, 0.5f, 0.5f};
     for (uint32_t& t : grey.texture) t = kNoTexture;
-    grey.specular_map = grey.normal_map = grey.bump_map = kNoTexture;
+    grey.factor_map = grey.normal_map = grey.bump_map = kNoTexture;
     const uint32_t fallback = static_cast<uint32_t>(scene_.materials.size());
     scene_.materials.push_back(grey);
     scene_.material_names.push_back(file.filename().string() + ":(no usemtl)");
@@ -151,11 +146,26 @@ class ShapeReader {
     scene_.report.used_types.insert("shape:mesh");
   }
 
-  void add(const Primitive& p) {
-    if (!is_finite(p.a) || !is_finite(p.b) || !is_finite(p.c) || !is_finite(p.radius))
-      throw InputError(scene_.file + ": a transformed shape has non-finite coordinates");
-    scene_.primitives.push_back(p);
+  // A glTF file's meshes with their own materials (docs/gltf.md): its lights and cameras are
+  // left to the scene file. Its errors name the glTF file and the JSON path inside it.
+  void add_gltf(JsonObject& obj, const Transform& xf) {
+    if (obj.find("material")) obj.fail("material", "a gltf shape takes its file's materials");
+    const std::string file = (std::filesystem::path(dir_) / obj.string("file")).string();
+    scene_.report.input_files.insert(file);
+    try {
+      const GltfFile gltf = read_gltf_file(read_text_file(file, "glTF file"), file);
+      const GltfContents contents = add_gltf_file(gltf, xf, false, scene_);
+      if (contents.triangles == 0) obj.fail("file", "its default scene places no triangles");
+      for (const std::string& s : contents.ignored) scene_.report.gltf.push_back(file + ": ignored " + s);
+    } catch (const InputError& e) {
+      fail_at(scene_.file, obj.child("file"), e.what());
+    }
+    obj.finish();
+    ++scene_.report.shape_counts["gltf"];
+    scene_.report.used_types.insert("shape:gltf");
   }
+
+  void add(const Primitive& p) { append_primitive(scene_, p); }
 
   void add_quad(JsonObject& obj, Vec3 corner, Vec3 u, Vec3 v, uint32_t material) {
     if (!has_unit_normal(u, v))
@@ -246,46 +256,12 @@ class ShapeReader {
   // One material per triangle.
   void add_triangles(JsonObject& obj, std::vector<MeshTriangle> tris, const Transform& xf,
                      const std::vector<uint32_t>& materials) {
-    compute_vertex_tangents(tris);
-    const bool single = obj.string("type") == "triangle";
-    size_t kept = 0;
-    for (size_t i = 0; i < tris.size(); ++i) {
-      const MeshTriangle& t = tris[i];
-      const Vec3 a = xf.point(t.p[0]), b = xf.point(t.p[1]), c = xf.point(t.p[2]);
-      // A triangle without a geometric normal (surface.h) can never be shaded: left out.
-      if (!has_unit_normal(b - a, c - a)) continue;
-      ++kept;
-      const uint32_t material = materials[i];
-      int32_t shading = -1;
-      if (t.has_normals || t.has_uvs) {
-        TriangleShading sh{};
-        if (t.has_normals) {
-          for (int c = 0; c < 3; ++c)
-            if (!(length(t.n[c]) > 0.0f)) obj.fail("normals", "a vertex normal is zero");
-          sh.n0 = xf.normal(t.n[0]);
-          sh.n1 = xf.normal(t.n[1]);
-          sh.n2 = xf.normal(t.n[2]);
-          sh.has_normals = 1;
-        }
-        if (t.has_uvs) {
-          sh.u0 = t.uv[0][0], sh.v0 = t.uv[0][1], sh.u1 = t.uv[1][0], sh.v1 = t.uv[1][1];
-          sh.u2 = t.uv[2][0], sh.v2 = t.uv[2][1];
-          sh.has_uvs = 1;
-        }
-        if (t.has_tangents) {
-          sh.t0 = xf.vector(t.tangent[0]);
-          sh.t1 = xf.vector(t.tangent[1]);
-          sh.t2 = xf.vector(t.tangent[2]);
-          sh.has_tangents = 1;
-        }
-        shading = static_cast<int32_t>(scene_.triangle_shading.size());
-        scene_.triangle_shading.push_back(sh);
-      }
-      add({ShapeKind::Triangle, material, shading, 0.0f, a, b, c});
-    }
-    if (kept == 0 && single) obj.fail("vertices", "zero-area triangle (its vertices are collinear or coincide)");
+    const size_t count = tris.size();
+    const size_t kept =
+        append_mesh_triangles(scene_, std::move(tris), xf, materials, [&] { obj.fail("normals", "a vertex normal is zero"); });
+    if (kept == 0 && count == 1 && obj.string("type") == "triangle")
+      obj.fail("vertices", "zero-area triangle (its vertices are collinear or coincide)");
     if (kept == 0) obj.fail(obj.find("file") ? "file" : "indices", "every triangle of the mesh has zero area");
-    scene_.report.degenerate_triangles += static_cast<uint32_t>(tris.size() - kept);
   }
 
   Scene& scene_;

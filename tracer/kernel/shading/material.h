@@ -30,7 +30,9 @@ struct Material {
   float transparency;              // phong
   float ior;                       // dielectric, rough_dielectric, phong, metal_rough (its F0)
   uint32_t texture[kColourSlots];  // per ColourSlot: kNoTexture, or the texture replacing it
-  uint32_t specular_map;           // phong: scales specular; kNoTexture when absent
+  uint32_t factor_map;             // scales factors: phong's specular colour (the scene's specular_map);
+                                   // metal_rough's roughness by G and metallic by B (glTF's
+                                   // metallicRoughnessTexture); kNoTexture when absent
   uint32_t normal_map;             // tangent-space normals (2c - 1); kNoTexture when absent
   uint32_t bump_map;               // heights; kNoTexture when absent
 };

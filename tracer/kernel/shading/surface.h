@@ -121,8 +121,15 @@ TRACER_HD Material material_colours_at(const SceneView& scene, const Surface& s)
   Vec3* colour[kColourSlots] = {&m.albedo, &m.ambient, &m.specular, &m.tint, &m.radiance};
   for (uint32_t k = 0; k < kColourSlots; ++k)
     if (m.texture[k] != kNoTexture) *colour[k] = sample_texture(scene.textures, scene.texels, m.texture[k], s.u, s.v);
-  if (m.specular_map != kNoTexture)
-    m.specular = m.specular * sample_texture(scene.textures, scene.texels, m.specular_map, s.u, s.v);
+  if (m.factor_map != kNoTexture) {
+    const Vec3 f = sample_texture(scene.textures, scene.texels, m.factor_map, s.u, s.v);
+    if (m.kind == MaterialKind::MetalRough) {
+      m.roughness = m.roughness * f.y;
+      m.metallic = m.metallic * f.z;
+    } else {
+      m.specular = m.specular * f;
+    }
+  }
   return m;
 }
 

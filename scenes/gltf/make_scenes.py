@@ -1,0 +1,131 @@
+"""Writes the glTF scenes of this folder (python3 scenes/gltf/make_scenes.py; docs/gltf.md):
+  cornell-box.gltf (+ .bin)  the Cornell box's walls, blocks and lamp, diffuse and emissive, with
+                             its camera; cornell-box-twin.json is the same scene in the tracer's
+                             own format, number for number, and renders the same image
+  sphere-grid.glb            metal_rough spheres, metallic by row and roughness by column, a
+                             floor, a point light, an emissive panel and a camera
+  textured.glb               a node hierarchy (scaled, rotated, translated parents) of cubes with
+                             base colour, normal and metallic-roughness textures and a
+                             KHR_texture_transform
+The files are committed; run this after changing it."""
+import json
+import math
+import os
+
+from gltf_writer import Gltf, cube, f32, png, uv_sphere
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+WALLS = [  # (material, four corners), as scenes/cornell-box.json
+    ("white", [[552.8, 0, 0], [0, 0, 0], [0, 0, 559.2], [549.6, 0, 559.2]]),
+    ("white", [[556, 548.8, 0], [556, 548.8, 559.2], [0, 548.8, 559.2], [0, 548.8, 0]]),
+    ("white", [[549.6, 0, 559.2], [0, 0, 559.2], [0, 548.8, 559.2], [556, 548.8, 559.2]]),
+    ("green", [[0, 0, 559.2], [0, 0, 0], [0, 548.8, 0], [0, 548.8, 559.2]]),
+    ("red", [[552.8, 0, 0], [549.6, 0, 559.2], [556, 548.8, 559.2], [556, 548.8, 0]]),
+    ("lamp", [[343, 548.7, 227], [343, 548.7, 332], [213, 548.7, 332], [213, 548.7, 227]]),
+]
+BLOCK_TOPS = [([130, 165, 65], [82, 165, 225], [240, 165, 272], [290, 165, 114]),
+              ([423, 330, 247], [265, 330, 296], [314, 330, 456], [472, 330, 406])]
+COLOURS = {"white": [0.725, 0.71, 0.68], "red": [0.63, 0.065, 0.05], "green": [0.14, 0.45, 0.091]}
+LAMP_FACTOR, LAMP_STRENGTH = [1.0, 0.8, 0.6], 17.0
+YFOV = math.radians(39.3077)
+
+
+def block_quads(top):
+    """The top and four sides of a block standing on y = 0 under its top quad."""
+    quads = [list(top)]
+    for i in range(4):
+        a, b = top[i], top[(i + 1) % 4]
+        quads.append([[a[0], 0, a[2]], [b[0], 0, b[2]], list(b), list(a)])
+    return quads
+
+
+def cornell_quads():
+    quads = [(m, q) for m, q in WALLS]
+    for top in BLOCK_TOPS:
+        quads += [("white", q) for q in block_quads(top)]
+    return quads
+
+
+def cornell_box():
+    g = Gltf()
+    ids = {name: g.lambert(name, c) for name, c in COLOURS.items()}
+    ids["lamp"] = g.material("lamp", emissiveFactor=LAMP_FACTOR,
+                             pbrMetallicRoughness={"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0},
+                             extensions={"KHR_materials_emissive_strength": {"emissiveStrength": LAMP_STRENGTH}})
+    for i, (material, corners) in enumerate(cornell_quads()):
+        g.node(mesh=g.mesh("quad%d" % i, [c for p in corners for c in p], [0, 1, 2, 0, 2, 3], ids[material]))
+    # Looks down +z from in front of the open side: 180 degrees about y.
+    g.camera("front", YFOV, 640 / 480, translation=[278, 273, -800], rotation=[0, 1, 0, 0])
+    g.write_gltf(os.path.join(HERE, "cornell-box.gltf"), "cornell-box.bin")
+
+    # The twin: every number the glTF reader computes, written so the JSON reader gets the same float.
+    vfov = f32(YFOV * (180.0 / math.pi))
+    lamp = [f32(f32(c) * f32(LAMP_STRENGTH)) for c in LAMP_FACTOR]
+    twin = {"format": "tracer-scene/1",
+            "camera": {"from": [278, 273, -800], "to": [278, 273, -799], "up": [0, 1, 0], "vfov": vfov},
+            "film": {"width": 640, "height": 480},
+            "render": {"integrator": "path", "spp": 64, "sampler": "sobol", "max_depth": 8},
+            "background": {"type": "constant", "radiance": [0, 0, 0]},
+            "materials": dict({n: {"type": "lambert", "albedo": c} for n, c in COLOURS.items()},
+                              lamp={"type": "emissive", "radiance": lamp}),
+            "shapes": [{"type": "mesh", "material": m, "positions": q, "indices": [[0, 1, 2], [0, 2, 3]]}
+                       for m, q in cornell_quads()]}
+    with open(os.path.join(HERE, "cornell-box-twin.json"), "w") as f:
+        f.write(json.dumps(twin, indent=1) + "\n")
+
+
+def sphere_grid():
+    g = Gltf()
+    pos, nor, uv, idx = uv_sphere(0.4, 20, 10)
+    sphere = g.geometry(pos, idx, normals=nor, uvs=uv)
+    for row, metallic in enumerate([0.0, 0.5, 1.0]):
+        for col, roughness in enumerate([0.0, 0.25, 0.5, 0.75, 1.0]):
+            m = g.material("m%.1f-r%.2f" % (metallic, roughness),
+                           pbrMetallicRoughness={"baseColorFactor": [0.9, 0.6, 0.3, 1], "metallicFactor": metallic,
+                                                 "roughnessFactor": roughness})
+            mesh = g.primitive("sphere", sphere, m)
+            g.node(mesh=mesh, translation=[(col - 2) * 1.0, 0.4 + row * 1.0, 0])
+    floor = g.lambert("floor", [0.5, 0.5, 0.5])
+    g.node(mesh=g.mesh("floor", [-4, 0, -3, 4, 0, -3, 4, 0, 3, -4, 0, 3], [0, 2, 1, 0, 3, 2], floor))
+    panel = g.material("panel", emissiveFactor=[1, 1, 1],
+                       extensions={"KHR_materials_emissive_strength": {"emissiveStrength": 4.0}})
+    g.node(mesh=g.mesh("panel", [-2, 4, 1, 2, 4, 1, 2, 4, 3, -2, 4, 3], [0, 1, 2, 0, 2, 3], panel))
+    g.point_light([1, 0.95, 0.9], 20.0, translation=[0, 3.5, 4])
+    s = math.sin(math.radians(-8) / 2)
+    g.camera("front", math.radians(40), 4 / 3, translation=[0, 1.9, 6.5], rotation=[s, 0, 0, math.cos(math.radians(-8) / 2)])
+    g.write_glb(os.path.join(HERE, "sphere-grid.glb"))
+
+
+def textured():
+    g = Gltf()
+    colour = g.image(png(32, 32, lambda x, y: (220, 60, 40) if (x // 8 + y // 8) % 2 else (240, 220, 200)))
+    bumps = g.image(png(32, 32, lambda x, y: (128 + int(90 * math.sin(x / 32 * 2 * math.pi)), 128, 240)))
+    rough = g.image(png(16, 16, lambda x, y: (0, 40 + 12 * x, 255 if y < 8 else 0)))
+    transform = {"KHR_texture_transform": {"offset": [0.25, 0], "rotation": 0.3, "scale": [2, 2]}}
+    g.extensions.add("KHR_texture_transform")
+    m = g.material("tiles", pbrMetallicRoughness={"baseColorTexture": {"index": colour, "extensions": transform},
+                                                  "metallicRoughnessTexture": {"index": rough, "extensions": transform},
+                                                  "metallicFactor": 1, "roughnessFactor": 0.8},
+                   normalTexture={"index": bumps, "scale": 0.7, "extensions": transform})
+    plain = g.material("plain", pbrMetallicRoughness={"baseColorFactor": [0.2, 0.4, 0.8, 1], "metallicFactor": 0,
+                                                      "roughnessFactor": 0.3})
+    pos, nor, uv, idx = cube(0.5)
+    geometry = g.geometry(pos, idx, normals=nor, uvs=uv)
+    box, small = g.primitive("box", geometry, m), g.primitive("small", geometry, plain)
+    root = g.node(name="root", scale=[1.2, 1.2, 1.2], translation=[0, 0.6, 0])
+    g.node(parent=root, name="box", mesh=box, rotation=[0, math.sin(0.35), 0, math.cos(0.35)])
+    arm = g.node(parent=root, name="arm", translation=[1.1, 0, 0.3], rotation=[0, 0, math.sin(0.2), math.cos(0.2)])
+    g.node(parent=arm, name="small", mesh=small, scale=[0.4, 0.4, 0.4], translation=[0, 0.2, 0])
+    floor = g.lambert("floor", [0.6, 0.6, 0.6])
+    g.node(mesh=g.mesh("floor", [-3, 0, -3, 3, 0, -3, 3, 0, 3, -3, 0, 3], [0, 2, 1, 0, 3, 2], floor))
+    g.point_light([1, 1, 1], 15.0, translation=[1.5, 3, 2.5])
+    s = math.sin(math.radians(-15) / 2)
+    g.camera("front", math.radians(45), 4 / 3, translation=[0.4, 2.2, 4.2], rotation=[s, 0, 0, math.cos(math.radians(-15) / 2)])
+    g.write_glb(os.path.join(HERE, "textured.glb"))
+
+
+if __name__ == "__main__":
+    cornell_box()
+    sphere_grid()
+    textured()

@@ -1,0 +1,113 @@
+// glTF textures (docs/gltf.md): the metallic-roughness texture scales the factors (G the
+// roughness, B the metallic) exactly: a white texture leaves the material as its factors, a
+// zero channel zeroes its factor; the base colour texture's texels are sRGB-decoded and
+// multiplied by the factor; the normal map's scale is baked into its texels.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "gltf_builder.h"
+#include "test_util.h"
+
+namespace tracer {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// A quad (two triangles) facing the camera with uvs, material 0 metal_rough; a 2x2 texture
+// image "t.png" beside the file when `with_texture`.
+json textured_quad() {
+  const std::vector<float> p = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+  const std::vector<float> uv = {0, 1, 1, 1, 1, 0, 0, 0};
+  const std::vector<uint16_t> idx = {0, 1, 2, 0, 2, 3};
+  const std::string buffer = test::bytes_of(p) + test::bytes_of(uv) + test::bytes_of(idx);
+  json doc = test::triangle_gltf();
+  doc["buffers"][0] = {{"byteLength", buffer.size()}, {"uri", test::data_uri(buffer)}};
+  doc["bufferViews"] = {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 48}},
+                        {{"buffer", 0}, {"byteOffset", 48}, {"byteLength", 32}},
+                        {{"buffer", 0}, {"byteOffset", 80}, {"byteLength", 12}}};
+  doc["accessors"] = {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}},
+                      {{"bufferView", 1}, {"componentType", 5126}, {"count", 4}, {"type", "VEC2"}},
+                      {{"bufferView", 2}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}};
+  doc["meshes"][0]["primitives"][0] = {
+      {"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}}, {"indices", 2}, {"material", 0}};
+  doc["materials"][0]["pbrMetallicRoughness"] = {
+      {"baseColorFactor", {0.8, 0.6, 0.4, 1}}, {"metallicFactor", 0.7}, {"roughnessFactor", 0.4}};
+  doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"intensity", 20}}};
+  doc["nodes"][1]["extensions"]["KHR_lights_punctual"]["light"] = 0;
+  return doc;
+}
+
+class GltfTextures : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = test::temp_dir("gltf-textures"); }
+  void TearDown() override { fs::remove_all(dir_); }
+  void write_png(const std::string& name, Vec3 c) {
+    write_image(test::image_from(2, 2, [&](uint32_t, uint32_t) { return c; }), (dir_ / name).string());
+  }
+  Image render(const json& doc) {
+    RenderOverrides ov;
+    ov.width = 12;
+    ov.height = 6;
+    ov.spp = 4;
+    RenderStats stats;
+    return render_cpu(load_scene(test::write_gltf(dir_ / "t.gltf", doc), ov), 1, stats);
+  }
+  static bool same(const Image& a, const Image& b) {
+    return a.rgb.size() == b.rgb.size() && std::memcmp(a.rgb.data(), b.rgb.data(), a.rgb.size() * 4) == 0;
+  }
+  static json with_texture(json doc, const std::string& slot, const std::string& image) {
+    doc["images"] = {{{"uri", image}}};
+    doc["textures"] = {{{"source", 0}}};
+    if (slot == "normalTexture")
+      doc["materials"][0][slot] = {{"index", 0}, {"scale", 0.5}};
+    else
+      doc["materials"][0]["pbrMetallicRoughness"][slot] = {{"index", 0}};
+    return doc;
+  }
+  fs::path dir_;
+};
+
+TEST_F(GltfTextures, AMetallicRoughnessTextureScalesTheFactors) {
+  const json plain = textured_quad();
+  write_png("white.png", {1, 1, 1});
+  const Image factors = render(plain);
+  EXPECT_TRUE(same(factors, render(with_texture(plain, "metallicRoughnessTexture", "white.png"))));
+  // G = 0: roughness 0; B = 0: metallic 0 (R, occlusion, is not read).
+  write_png("no-roughness.png", {1, 0, 1});
+  json smooth = plain;
+  smooth["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = 0;
+  EXPECT_TRUE(same(render(smooth), render(with_texture(plain, "metallicRoughnessTexture", "no-roughness.png"))));
+  EXPECT_FALSE(same(render(smooth), factors));
+  write_png("no-metal.png", {0, 1, 0});
+  json dielectric = plain;
+  dielectric["materials"][0]["pbrMetallicRoughness"]["metallicFactor"] = 0;
+  EXPECT_TRUE(same(render(dielectric), render(with_texture(plain, "metallicRoughnessTexture", "no-metal.png"))));
+}
+
+TEST_F(GltfTextures, BaseColourTexelsAreDecodedAndMultipliedByTheFactor) {
+  write_png("white.png", {1, 1, 1});
+  const Scene s =
+      load_scene(test::write_gltf(dir_ / "t.gltf", with_texture(textured_quad(), "baseColorTexture", "white.png")));
+  const Material& m = s.materials[0];
+  ASSERT_NE(m.texture[kSlotAlbedo], kNoTexture);
+  const Texture& t = s.textures[m.texture[kSlotAlbedo]];
+  EXPECT_EQ(s.texels[t.offset], 0.8f);  // 1 (sRGB 255) x the factor
+  EXPECT_EQ(s.texels[t.offset + 1], 0.6f);
+  EXPECT_EQ(s.texels[t.offset + 2], 0.4f);
+  // A white texture equals no texture, bit for bit.
+  EXPECT_TRUE(same(render(textured_quad()), render(with_texture(textured_quad(), "baseColorTexture", "white.png"))));
+}
+
+TEST_F(GltfTextures, TheNormalMapsScaleIsBakedIntoItsTexels) {
+  write_png("tilted.png", {1, 0.5f, 1});  // x = +1 before the scale
+  const Scene s =
+      load_scene(test::write_gltf(dir_ / "t.gltf", with_texture(textured_quad(), "normalTexture", "tilted.png")));
+  const Texture& t = s.textures[s.materials[0].normal_map];
+  EXPECT_EQ(s.texels[t.offset], 0.75f);     // ((2 x 1 - 1) x 0.5 + 1) / 2
+  EXPECT_EQ(s.texels[t.offset + 2], 1.0f);  // z keeps its value
+}
+
+}  // namespace
+}  // namespace tracer

@@ -1,0 +1,194 @@
+#include "scene/gltf_file.h"
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "io/input_error.h"
+#include "io/json_reader.h"
+#include "scene/gltf_schema.h"
+
+namespace tracer {
+namespace {
+
+namespace fs = std::filesystem;
+
+// What the file-system callbacks know: the folder external files must lie in, and why the
+// last one was refused (tinygltf's own message would only say "not found").
+struct Confinement {
+  fs::path folder;  // canonical
+  std::string refusal;
+  std::set<std::string> files_read;
+};
+
+// Whether `path`, with every symlink resolved, lies inside the folder; `why` says why not.
+bool inside_folder(const std::string& path, Confinement& c, std::string& why) {
+  std::error_code ec;
+  const fs::path resolved = fs::weakly_canonical(fs::path(path), ec);
+  if (ec) {
+    why = path + ": cannot resolve it (" + ec.message() + ")";
+    return false;
+  }
+  const auto [end, unused] = std::mismatch(c.folder.begin(), c.folder.end(), resolved.begin(), resolved.end());
+  if (end != c.folder.end()) {
+    why = path + ": lies outside " + c.folder.string() + "; a glTF file's buffers and images must be in its folder";
+    return false;
+  }
+  const fs::file_status st = fs::status(resolved, ec);
+  if (ec || !fs::exists(st)) {
+    why = path + ": no such file";
+    return false;
+  }
+  if (!fs::is_regular_file(st)) {
+    why = path + ": not a regular file";
+    return false;
+  }
+  return true;
+}
+
+bool file_exists(const std::string& path, void* user) {
+  // tinygltf looks in the file's folder, then in the working directory ("./URI"): only the first.
+  if (path.rfind("./", 0) == 0) return false;
+  Confinement& c = *static_cast<Confinement*>(user);
+  std::string why;
+  if (inside_folder(path, c, why)) return true;
+  c.refusal = why;
+  return false;
+}
+
+std::string expand_nothing(const std::string& path, void*) { return path; }  // no ~ or $VAR expansion
+
+bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  Confinement& c = *static_cast<Confinement*>(user);
+  std::string why;
+  std::error_code ec;
+  if (!inside_folder(path, c, why)) {
+    *err = c.refusal = why;
+    return false;
+  }
+  const uint64_t size = fs::file_size(path, ec);
+  if (ec || size > kMaxGltfExternalBytes) {
+    *err = c.refusal = path + ": " + (ec ? ec.message() : "larger than 1 GiB, the limit for a buffer or image");
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  out->resize(size);
+  if (!in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
+    *err = c.refusal = path + ": cannot read it";
+    return false;
+  }
+  c.files_read.insert(path);
+  return true;
+}
+
+bool write_nothing(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  *err = "the tracer writes no glTF files";
+  return false;
+}
+
+// Keeps an image's encoded bytes for decode_gltf_image.
+bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                        const unsigned char* bytes, int size, void*) {
+  image->image.assign(bytes, bytes + size);
+  image->width = image->height = image->component = -1;
+  return true;
+}
+
+// A buffer's or image's URI is data, or a path relative to the file's folder: an absolute
+// path or another scheme (http:, file:) is refused by its JSON path before anything is read.
+void check_external_uris(const Json& root, const std::string& path) {
+  for (const char* array : {"buffers", "images"}) {
+    const auto list = root.find(array);
+    if (list == root.end()) continue;
+    for (size_t i = 0; i < list->size(); ++i) {
+      const auto uri = (*list)[i].find("uri");
+      if (uri == (*list)[i].end()) continue;
+      const std::string text = uri->get<std::string>();
+      const std::string at = std::string(array) + "[" + std::to_string(i) + "].uri";
+      if (text.rfind("data:", 0) == 0) continue;
+      if (!text.empty() && text[0] == '/')
+        fail_at(path, at,
+                "an absolute path; buffers and images must be in the glTF file's folder, named relative to it");
+      if (text.find(':') != std::string::npos)
+        fail_at(path, at, "names a URI scheme; the reader reads data URIs and files in the glTF file's folder");
+    }
+  }
+}
+
+constexpr unsigned char kGlbMagic[4] = {'g', 'l', 'T', 'F'};
+
+// The JSON text of a .gltf file, or of a .glb's first chunk (glTF 2.0, 4.4), for the checked
+// parse; an empty string when the binary header is too short to hold one (tinygltf says why).
+std::string json_text(const std::string& bytes) {
+  if (bytes.size() < 4 || std::memcmp(bytes.data(), kGlbMagic, 4) != 0) return bytes;
+  if (bytes.size() < 20) return "";
+  uint32_t chunk_length;
+  std::memcpy(&chunk_length, bytes.data() + 12, 4);
+  if (chunk_length > bytes.size() - 20) return "";
+  return bytes.substr(20, chunk_length);
+}
+
+}  // namespace
+
+bool is_gltf_path(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char ch) { return std::tolower(ch); });
+  return ext == ".gltf" || ext == ".glb";
+}
+
+GltfFile read_gltf_file(const std::string& bytes, const std::string& path) {
+  if (bytes.size() > 0xffffffffu) throw InputError(path + ": larger than 4 GiB, the limit of a glTF file");
+  const std::string json = json_text(bytes);
+  if (!json.empty()) {
+    const Json root = parse_json_text(json, path);  // syntax, depth and duplicate keys first
+    check_gltf_schema(root, path);
+    check_external_uris(root, path);
+  }
+  std::error_code ec;
+  Confinement confinement;
+  const fs::path dir = fs::absolute(fs::path(path), ec).parent_path();
+  confinement.folder = fs::weakly_canonical(dir, ec);
+  if (ec) throw InputError(path + ": cannot resolve its folder: " + ec.message());
+  tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks({file_exists, expand_nothing, read_whole_file, write_nothing, &confinement});
+  loader.SetImageLoader(keep_encoded_image, nullptr);
+  GltfFile file;
+  file.path = path;
+  std::string err, warn;
+  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), kGlbMagic, 4) == 0;
+  const bool ok = binary ? loader.LoadBinaryFromMemory(&file.model, &err, &warn,
+                                                       reinterpret_cast<const unsigned char*>(bytes.data()),
+                                                       static_cast<unsigned int>(bytes.size()), dir.string())
+                         : loader.LoadASCIIFromString(&file.model, &err, &warn, bytes.data(),
+                                                      static_cast<unsigned int>(bytes.size()), dir.string());
+  const auto trimmed = [](std::string s) {
+    while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+    return s;
+  };
+  if (!ok) {
+    std::string why = trimmed(err.empty() ? warn : err);
+    if (!confinement.refusal.empty()) why = confinement.refusal;
+    throw InputError(path + ": not a glTF 2.0 file the reader accepts: " + (why.empty() ? "tinygltf refused it" : why));
+  }
+  if (!warn.empty()) file.notes.push_back(trimmed(warn));
+  file.files_read = std::move(confinement.files_read);
+  return file;
+}
+
+ImagePixels decode_gltf_image(const GltfFile& file, int index, const std::string& use) {
+  const std::string where = file.path + ": " + use;
+  if (index < 0 || static_cast<size_t>(index) >= file.model.images.size())
+    throw InputError(where + ": names image " + std::to_string(index) + "; the file has " +
+                     std::to_string(file.model.images.size()));
+  const std::vector<unsigned char>& bytes = file.model.images[index].image;
+  const std::string name = where + ": images[" + std::to_string(index) + "]";
+  static const unsigned char png[4] = {0x89, 'P', 'N', 'G'}, jpeg[3] = {0xff, 0xd8, 0xff};
+  std::string format;
+  if (bytes.size() >= 4 && std::memcmp(bytes.data(), png, 4) == 0) format = "png";
+  if (bytes.size() >= 3 && std::memcmp(bytes.data(), jpeg, 3) == 0) format = "jpg";
+  if (format.empty()) throw InputError(name + ": not a PNG or JPEG image (the formats of glTF's core)");
+  return read_image_pixels_from_memory(bytes, format, name, 3);
+}
+
+}  // namespace tracer

@@ -1,0 +1,271 @@
+#include "scene/gltf_materials.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "io/json_reader.h"
+#include "kernel/base/detmath.h"
+#include "scene/texture_loader.h"
+
+namespace tracer {
+namespace {
+
+[[noreturn]] void fail(const GltfFile& file, const std::string& path, const std::string& message) {
+  fail_at(file.path, path, message);
+}
+
+float unit_factor(const GltfFile& file, double v, const std::string& path) {
+  if (!(v >= 0.0 && v <= 1.0)) fail(file, path, "must be in [0, 1], got " + std::to_string(v));
+  return static_cast<float>(v);
+}
+
+Vec3 unit_colour(const GltfFile& file, const std::vector<double>& v, size_t size, const std::string& path) {
+  if (v.size() != size) fail(file, path, "expected " + std::to_string(size) + " numbers");
+  return {unit_factor(file, v[0], path + "[0]"), unit_factor(file, v[1], path + "[1]"),
+          unit_factor(file, v[2], path + "[2]")};
+}
+
+const tinygltf::Value* extension(const tinygltf::ExtensionMap& extensions, const std::string& name) {
+  const auto it = extensions.find(name);
+  return it == extensions.end() || !it->second.IsObject() ? nullptr : &it->second;
+}
+
+// A number of an extension's object, or `fallback` when absent; errors name `path`.
+double extension_number(const GltfFile& file, const tinygltf::Value& ext, const std::string& key, double fallback,
+                        const std::string& path) {
+  if (!ext.Has(key)) return fallback;
+  const tinygltf::Value& v = ext.Get(key);
+  if (!v.IsNumber()) fail(file, path + "." + key, "expected a number");
+  const double d = v.GetNumberAsDouble();
+  if (!std::isfinite(d)) fail(file, path + "." + key, "must be finite");
+  return d;
+}
+
+// KHR_texture_transform of a texture reference, if it has one.
+bool read_uv_transform(const GltfFile& file, const tinygltf::ExtensionMap& extensions, const std::string& path,
+                       GltfUvTransform& out) {
+  const tinygltf::Value* ext = extension(extensions, "KHR_texture_transform");
+  if (!ext) return false;
+  const std::string at = path + ".extensions.KHR_texture_transform";
+  const auto pair = [&](const std::string& key, float fallback, float into[2]) {
+    into[0] = into[1] = fallback;
+    if (!ext->Has(key)) return;
+    const tinygltf::Value& v = ext->Get(key);
+    if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+      fail(file, at + "." + key, "expected two numbers");
+    for (int i = 0; i < 2; ++i) {
+      into[i] = static_cast<float>(v.Get(i).GetNumberAsDouble());
+      if (!std::isfinite(into[i])) fail(file, at + "." + key, "must be finite");
+    }
+  };
+  float scale[2];
+  pair("offset", 0.0f, out.offset);
+  pair("scale", 1.0f, scale);
+  const float rotation = static_cast<float>(extension_number(file, *ext, "rotation", 0.0, at));
+  float s, c;
+  det_sincos(rotation, s, c);
+  // T R S with R = [[cos, sin], [-sin, cos]] (the extension's matrix, row by row).
+  out.m[0][0] = c * scale[0], out.m[0][1] = s * scale[1];
+  out.m[1][0] = -s * scale[0], out.m[1][1] = c * scale[1];
+  return true;
+}
+
+bool same_transform(const GltfUvTransform& a, const GltfUvTransform& b) {
+  return a.m[0][0] == b.m[0][0] && a.m[0][1] == b.m[0][1] && a.m[1][0] == b.m[1][0] && a.m[1][1] == b.m[1][1] &&
+         a.offset[0] == b.offset[0] && a.offset[1] == b.offset[1];
+}
+
+}  // namespace
+
+void GltfUvTransform::apply(float uv[2]) const {
+  const float u = uv[0], v = uv[1];
+  uv[0] = offset[0] + (m[0][0] * u + m[0][1] * v);
+  uv[1] = offset[1] + (m[1][0] * u + m[1][1] * v);
+}
+
+void GltfMaterials::ignore(const std::string& what) {
+  if (std::find(ignored_.begin(), ignored_.end(), what) == ignored_.end()) ignored_.push_back(what);
+}
+
+GltfMaterials::Baked GltfMaterials::texture(int index, int tex_coord, Bake bake, Vec3 factor, const std::string& use) {
+  if (index < 0 || static_cast<size_t>(index) >= file_.model.textures.size())
+    fail(file_, use + ".index",
+         "names texture " + std::to_string(index) + "; the file has " + std::to_string(file_.model.textures.size()));
+  if (tex_coord != 0) {
+    ignore(use + ": texCoord " + std::to_string(tex_coord) + " (only TEXCOORD_0 is read; the texture is left out)");
+    return {kNoTexture, factor};
+  }
+  const auto key = std::make_tuple(index, static_cast<int>(bake), factor.x, factor.y, factor.z);
+  if (const auto known = textures_.find(key); known != textures_.end()) return known->second;
+  const tinygltf::Texture& t = file_.model.textures[index];
+  const std::string path = "textures[" + std::to_string(index) + "]";
+  if (t.source < 0) fail(file_, path + ".source", "missing: the texture names no image");
+  auto image = images_.find(t.source);
+  if (image == images_.end()) image = images_.emplace(t.source, decode_gltf_image(file_, t.source, path)).first;
+  const ImagePixels& pixels = image->second;
+  Texture tex{};
+  tex.kind = TextureKind::Image;
+  tex.wrap = TextureWrap::Repeat;
+  if (t.sampler >= 0) {
+    if (static_cast<size_t>(t.sampler) >= file_.model.samplers.size())
+      fail(file_, path + ".sampler",
+           "names sampler " + std::to_string(t.sampler) + "; the file has " +
+               std::to_string(file_.model.samplers.size()));
+    const tinygltf::Sampler& s = file_.model.samplers[t.sampler];
+    if (s.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE && s.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
+      tex.wrap = TextureWrap::Clamp;
+    else if (s.wrapS != s.wrapT || s.wrapS == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT)
+      ignore("samplers[" + std::to_string(t.sampler) + "]: mirrored or mixed wrap modes (drawn as repeat)");
+  }
+  tex.width = pixels.width;
+  tex.height = pixels.height;
+  tex.offset = static_cast<uint32_t>(scene_.texels.size());
+  const bool srgb = bake == Bake::SrgbTimes && !pixels.float_format;
+  const float factors[3] = {factor.x, factor.y, factor.z};
+  double sum[3] = {0, 0, 0};
+  for (size_t p = 0; p < size_t{pixels.width} * pixels.height; ++p)
+    for (int c = 0; c < 3; ++c) {
+      float v = pixels.values[p * pixels.channels_read + (pixels.channels_read < 3 ? 0 : c)];
+      if (!std::isfinite(v)) fail(file_, path, "its image holds a texel that is not finite");
+      if (srgb) v = srgb_to_linear(v);
+      if (bake == Bake::SrgbTimes) v = std::max(v, 0.0f) * factors[c];
+      // The normal map's scale multiplies x and y of the unpacked normal (glTF 2.0, 3.9.3).
+      if (bake == Bake::LinearNormal && c < 2 && factors[0] != 1.0f) v = ((v * 2.0f - 1.0f) * factors[0] + 1.0f) * 0.5f;
+      scene_.texels.push_back(v);
+      sum[c] += v;
+    }
+  const double n = double(pixels.width) * pixels.height;
+  const Baked baked{static_cast<uint32_t>(scene_.textures.size()),
+                    {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)}};
+  scene_.textures.push_back(tex);
+  scene_.features |= kFeatureTextures;
+  scene_.report.used_types.insert(bake == Bake::SrgbTimes      ? "texture:image"
+                                  : bake == Bake::LinearNormal ? "texture:normal_map"
+                                                               : "texture:metal_rough_map");
+  textures_.emplace(key, baked);
+  return baked;
+}
+
+Material GltfMaterials::convert(const tinygltf::Material& g, const std::string& path, GltfUvTransform& uv) {
+  Material m{};
+  m.kind = MaterialKind::MetalRough;
+  m.fresnel = FresnelKind::Schlick;
+  for (uint32_t& t : m.texture) t = kNoTexture;
+  m.factor_map = m.normal_map = m.bump_map = kNoTexture;
+  const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
+  const std::string pbr_path = path + ".pbrMetallicRoughness";
+  const Vec3 base = unit_colour(file_, pbr.baseColorFactor, 4, pbr_path + ".baseColorFactor");
+  m.albedo = base;
+  m.metallic = unit_factor(file_, pbr.metallicFactor, pbr_path + ".metallicFactor");
+  m.roughness = unit_factor(file_, pbr.roughnessFactor, pbr_path + ".roughnessFactor");
+  m.ior = 1.5f;
+  if (const tinygltf::Value* ior = extension(g.extensions, "KHR_materials_ior")) {
+    const double v = extension_number(file_, *ior, "ior", 1.5, path + ".extensions.KHR_materials_ior");
+    if (!(v >= 1.0 && v <= 10.0)) fail(file_, path + ".extensions.KHR_materials_ior.ior", "must be in [1, 10]");
+    m.ior = static_cast<float>(v);
+  }
+  if (const tinygltf::Value* tr = extension(g.extensions, "KHR_materials_transmission")) {
+    const std::string at = path + ".extensions.KHR_materials_transmission";
+    m.transmission =
+        unit_factor(file_, extension_number(file_, *tr, "transmissionFactor", 0.0, at), at + ".transmissionFactor");
+    if (tr->Has("transmissionTexture")) ignore(at + ".transmissionTexture (the factor alone is used)");
+  }
+
+  // One uv transform per material: the first texture's that has one.
+  bool has_transform = false;
+  const auto transform_of = [&](const tinygltf::ExtensionMap& ext, const std::string& at) {
+    GltfUvTransform t;
+    if (!read_uv_transform(file_, ext, at, t)) return;
+    if (!has_transform)
+      uv = t, has_transform = true;
+    else if (!same_transform(uv, t))
+      ignore(at + ": a second, different KHR_texture_transform (the first is used)");
+  };
+  if (pbr.baseColorTexture.index >= 0) {
+    const std::string at = pbr_path + ".baseColorTexture";
+    transform_of(pbr.baseColorTexture.extensions, at);
+    const Baked b = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, Bake::SrgbTimes, base, at);
+    m.texture[kSlotAlbedo] = b.texture;
+    m.albedo = b.mean;
+  }
+  if (pbr.metallicRoughnessTexture.index >= 0) {
+    const std::string at = pbr_path + ".metallicRoughnessTexture";
+    transform_of(pbr.metallicRoughnessTexture.extensions, at);
+    m.factor_map =
+        texture(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, Bake::Linear, {1, 1, 1}, at)
+            .texture;
+  }
+  if (g.normalTexture.index >= 0) {
+    const std::string at = path + ".normalTexture";
+    transform_of(g.normalTexture.extensions, at);
+    const float scale = static_cast<float>(g.normalTexture.scale);
+    if (!std::isfinite(scale)) fail(file_, at + ".scale", "must be finite");
+    m.normal_map =
+        texture(g.normalTexture.index, g.normalTexture.texCoord, Bake::LinearNormal, {scale, scale, scale}, at).texture;
+  }
+  if (const tinygltf::Value* sp = extension(g.extensions, "KHR_materials_specular")) {
+    // A dielectric without its specular layer is Lambert's diffuse surface: read as such.
+    const std::string at = path + ".extensions.KHR_materials_specular";
+    if (extension_number(file_, *sp, "specularFactor", 1.0, at) == 0.0 && m.metallic == 0.0f &&
+        m.transmission == 0.0f && m.factor_map == kNoTexture)
+      m.kind = MaterialKind::Lambert;
+    else
+      ignore(at + " (read only as specularFactor 0 on a dielectric: a Lambert surface)");
+  }
+  if (g.occlusionTexture.index >= 0) ignore(path + ".occlusionTexture (the tracer computes occlusion)");
+  if (g.alphaMode != "OPAQUE") ignore(path + ".alphaMode " + g.alphaMode + " (drawn opaque)");
+
+  Vec3 emission =
+      g.emissiveFactor.empty() ? Vec3{0, 0, 0} : unit_colour(file_, g.emissiveFactor, 3, path + ".emissiveFactor");
+  if (const tinygltf::Value* es = extension(g.extensions, "KHR_materials_emissive_strength")) {
+    const std::string at = path + ".extensions.KHR_materials_emissive_strength";
+    const double strength = extension_number(file_, *es, "emissiveStrength", 1.0, at);
+    if (!(strength >= 0.0 && strength <= 1e6)) fail(file_, at + ".emissiveStrength", "must be in [0, 1e6]");
+    emission = emission * static_cast<float>(strength);
+  }
+  if (std::max(emission.x, std::max(emission.y, emission.z)) > 0.0f) {
+    // An emitting surface is an area light: it reflects nothing (docs/gltf.md).
+    Material e{};
+    e.kind = MaterialKind::Emissive;
+    for (uint32_t& t : e.texture) t = kNoTexture;
+    e.factor_map = e.normal_map = e.bump_map = kNoTexture;
+    e.radiance = emission;
+    e.two_sided = g.doubleSided ? 1u : 0u;
+    if (g.emissiveTexture.index >= 0) {
+      const std::string at = path + ".emissiveTexture";
+      transform_of(g.emissiveTexture.extensions, at);
+      const Baked b = texture(g.emissiveTexture.index, g.emissiveTexture.texCoord, Bake::SrgbTimes, emission, at);
+      e.texture[kSlotRadiance] = b.texture;
+      if (b.texture != kNoTexture) e.radiance = b.mean;
+    }
+    return e;
+  }
+  return m;
+}
+
+uint32_t GltfMaterials::material(int index, GltfUvTransform& uv) {
+  if (const auto known = materials_.find(index); known != materials_.end()) {
+    uv = known->second.second;
+    return known->second.first;
+  }
+  if (index >= 0 && static_cast<size_t>(index) >= file_.model.materials.size())
+    fail(file_, "materials",
+         "material " + std::to_string(index) + " is named, but the file has " +
+             std::to_string(file_.model.materials.size()));
+  const std::string path = "materials[" + std::to_string(index) + "]";
+  // The specification's default material (3.9.1): base colour 1, metallic 1, roughness 1.
+  const tinygltf::Material fallback;
+  uv = GltfUvTransform{};
+  const Material m = convert(index < 0 ? fallback : file_.model.materials[index], path, uv);
+  const uint32_t id = static_cast<uint32_t>(scene_.materials.size());
+  scene_.materials.push_back(m);
+  const std::string name = index < 0 ? std::string("(default)") : file_.model.materials[index].name;
+  scene_.material_names.push_back(file_.path + ":" + (name.empty() ? path : name));
+  scene_.report.used_types.insert(m.kind == MaterialKind::Emissive  ? "material:emissive"
+                                  : m.kind == MaterialKind::Lambert ? "material:lambert"
+                                                                    : "material:metal_rough");
+  materials_.emplace(index, std::make_pair(id, uv));
+  return id;
+}
+
+}  // namespace tracer

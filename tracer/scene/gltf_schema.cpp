@@ -1,0 +1,201 @@
+#include "scene/gltf_schema.h"
+
+#include <algorithm>
+#include <map>
+#include <vector>
+
+namespace tracer {
+namespace {
+
+enum class Kind { String, Uint, Number, Bool, NumberArray, UintArray, StringArray, UintValues, Object, ObjectArray };
+
+struct Rule {
+  const char* key;
+  Kind kind;
+  const char* context = "";  // Object and ObjectArray: the context of the object(s), "" for any
+};
+
+// glTF 2.0's properties by the object that holds them (section 5, "Properties Reference").
+const std::map<std::string, std::vector<Rule>>& rules() {
+  using K = Kind;
+  static const std::vector<Rule> texture_info = {
+      {"index", K::Uint}, {"texCoord", K::Uint}, {"scale", K::Number}, {"strength", K::Number}};
+  static const std::map<std::string, std::vector<Rule>> table = {
+      {"root",
+       {{"asset", K::Object, "asset"},
+        {"scene", K::Uint},
+        {"scenes", K::ObjectArray, "scene"},
+        {"nodes", K::ObjectArray, "node"},
+        {"meshes", K::ObjectArray, "mesh"},
+        {"materials", K::ObjectArray, "material"},
+        {"accessors", K::ObjectArray, "accessor"},
+        {"bufferViews", K::ObjectArray, "bufferView"},
+        {"buffers", K::ObjectArray, "buffer"},
+        {"textures", K::ObjectArray, "texture"},
+        {"images", K::ObjectArray, "image"},
+        {"samplers", K::ObjectArray, "sampler"},
+        {"cameras", K::ObjectArray, "camera"},
+        {"skins", K::ObjectArray},
+        {"animations", K::ObjectArray},
+        {"extensionsUsed", K::StringArray},
+        {"extensionsRequired", K::StringArray}}},
+      {"asset",
+       {{"version", K::String}, {"minVersion", K::String}, {"generator", K::String}, {"copyright", K::String}}},
+      {"scene", {{"nodes", K::UintArray}}},
+      {"node",
+       {{"camera", K::Uint},
+        {"children", K::UintArray},
+        {"skin", K::Uint},
+        {"matrix", K::NumberArray},
+        {"mesh", K::Uint},
+        {"rotation", K::NumberArray},
+        {"scale", K::NumberArray},
+        {"translation", K::NumberArray},
+        {"weights", K::NumberArray}}},
+      {"mesh", {{"primitives", K::ObjectArray, "primitive"}, {"weights", K::NumberArray}}},
+      {"primitive",
+       {{"attributes", K::UintValues},
+        {"indices", K::Uint},
+        {"material", K::Uint},
+        {"mode", K::Uint},
+        {"targets", K::ObjectArray}}},
+      {"material",
+       {{"pbrMetallicRoughness", K::Object, "pbr"},
+        {"normalTexture", K::Object, "textureInfo"},
+        {"occlusionTexture", K::Object, "textureInfo"},
+        {"emissiveTexture", K::Object, "textureInfo"},
+        {"emissiveFactor", K::NumberArray},
+        {"alphaMode", K::String},
+        {"alphaCutoff", K::Number},
+        {"doubleSided", K::Bool}}},
+      {"pbr",
+       {{"baseColorFactor", K::NumberArray},
+        {"baseColorTexture", K::Object, "textureInfo"},
+        {"metallicFactor", K::Number},
+        {"roughnessFactor", K::Number},
+        {"metallicRoughnessTexture", K::Object, "textureInfo"}}},
+      {"textureInfo", texture_info},
+      {"accessor",
+       {{"bufferView", K::Uint},
+        {"byteOffset", K::Uint},
+        {"componentType", K::Uint},
+        {"normalized", K::Bool},
+        {"count", K::Uint},
+        {"type", K::String},
+        {"max", K::NumberArray},
+        {"min", K::NumberArray},
+        {"sparse", K::Object, "sparse"}}},
+      {"sparse", {{"count", K::Uint}, {"indices", K::Object, "sparsePart"}, {"values", K::Object, "sparsePart"}}},
+      {"sparsePart", {{"bufferView", K::Uint}, {"byteOffset", K::Uint}, {"componentType", K::Uint}}},
+      {"bufferView",
+       {{"buffer", K::Uint},
+        {"byteOffset", K::Uint},
+        {"byteLength", K::Uint},
+        {"byteStride", K::Uint},
+        {"target", K::Uint}}},
+      {"buffer", {{"uri", K::String}, {"byteLength", K::Uint}}},
+      {"texture", {{"sampler", K::Uint}, {"source", K::Uint}}},
+      {"image", {{"uri", K::String}, {"mimeType", K::String}, {"bufferView", K::Uint}}},
+      {"sampler", {{"magFilter", K::Uint}, {"minFilter", K::Uint}, {"wrapS", K::Uint}, {"wrapT", K::Uint}}},
+      {"camera",
+       {{"type", K::String}, {"perspective", K::Object, "projection"}, {"orthographic", K::Object, "projection"}}},
+      {"projection",
+       {{"aspectRatio", K::Number},
+        {"yfov", K::Number},
+        {"zfar", K::Number},
+        {"znear", K::Number},
+        {"xmag", K::Number},
+        {"ymag", K::Number}}},
+      {"", {}},
+  };
+  return table;
+}
+
+// The extensions the reader understands (docs/gltf.md); a file that requires another is refused.
+const std::vector<std::string> kReadExtensions = {"KHR_lights_punctual",    "KHR_materials_emissive_strength",
+                                                  "KHR_materials_ior",      "KHR_materials_transmission",
+                                                  "KHR_materials_specular", "KHR_texture_transform"};
+
+template <class Test>
+bool every(const Json& v, Test test) {
+  return v.is_array() && std::all_of(v.begin(), v.end(), test);
+}
+
+bool has_kind(const Json& v, Kind kind) {
+  switch (kind) {
+    case Kind::String: return v.is_string();
+    case Kind::Uint: return v.is_number_unsigned();
+    case Kind::Number: return v.is_number();
+    case Kind::Bool: return v.is_boolean();
+    case Kind::NumberArray: return every(v, [](const Json& e) { return e.is_number(); });
+    case Kind::UintArray: return every(v, [](const Json& e) { return e.is_number_unsigned(); });
+    case Kind::StringArray: return every(v, [](const Json& e) { return e.is_string(); });
+    case Kind::UintValues:
+      return v.is_object() && std::all_of(v.begin(), v.end(), [](const Json& e) { return e.is_number_unsigned(); });
+    case Kind::Object: return v.is_object();
+    case Kind::ObjectArray: return every(v, [](const Json& e) { return e.is_object(); });
+  }
+  return false;
+}
+
+const char* kind_name(Kind kind) {
+  switch (kind) {
+    case Kind::String: return "a string";
+    case Kind::Uint: return "a whole number >= 0";
+    case Kind::Number: return "a number";
+    case Kind::Bool: return "true or false";
+    case Kind::NumberArray: return "an array of numbers";
+    case Kind::UintArray: return "an array of whole numbers >= 0";
+    case Kind::StringArray: return "an array of strings";
+    case Kind::UintValues: return "an object of whole numbers >= 0";
+    case Kind::Object: return "an object";
+    case Kind::ObjectArray: return "an array of objects";
+  }
+  return "";
+}
+
+std::string child(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+void check_object(const Json& object, const std::string& context, const std::string& path, const std::string& file) {
+  const std::vector<Rule>& table = rules().at(context);
+  for (const auto& item : object.items()) {
+    const std::string at = child(path, item.key());
+    const Json& v = item.value();
+    if (item.key() == "name" && !v.is_string()) fail_at(file, at, "expected a string, got " + describe(v));
+    if (item.key() == "extensions") {
+      if (!v.is_object()) fail_at(file, at, "expected an object, got " + describe(v));
+      for (const auto& ext : v.items()) {
+        if (!ext.value().is_object())
+          fail_at(file, child(at, ext.key()), "expected an object, got " + describe(ext.value()));
+        // The texture references inside the extensions the tracer reads.
+        for (const auto& part : ext.value().items())
+          if (part.value().is_object() && part.key().size() > 7 &&
+              part.key().compare(part.key().size() - 7, 7, "Texture") == 0)
+            check_object(part.value(), "textureInfo", child(child(at, ext.key()), part.key()), file);
+      }
+    }
+    const auto rule = std::find_if(table.begin(), table.end(), [&](const Rule& r) { return item.key() == r.key; });
+    if (rule == table.end()) continue;  // extras, and properties the tracer neither reads nor follows
+    if (!has_kind(v, rule->kind))
+      fail_at(file, at, std::string("expected ") + kind_name(rule->kind) + ", got " + describe(v));
+    if (rule->kind == Kind::Object && *rule->context) check_object(v, rule->context, at, file);
+    if (rule->kind == Kind::ObjectArray && *rule->context)
+      for (size_t i = 0; i < v.size(); ++i) check_object(v[i], rule->context, at + "[" + std::to_string(i) + "]", file);
+  }
+}
+
+}  // namespace
+
+void check_gltf_schema(const Json& root, const std::string& file) {
+  if (!root.is_object()) fail_at(file, "", "a glTF file is a JSON object, got " + describe(root));
+  check_object(root, "root", "", file);
+  if (const auto it = root.find("extensionsRequired"); it != root.end())
+    for (size_t i = 0; i < it->size(); ++i) {
+      const std::string name = (*it)[i].get<std::string>();
+      if (std::find(kReadExtensions.begin(), kReadExtensions.end(), name) == kReadExtensions.end())
+        fail_at(file, "extensionsRequired[" + std::to_string(i) + "]",
+                "the file requires " + name + ", which the tracer does not read");
+    }
+}
+
+}  // namespace tracer
