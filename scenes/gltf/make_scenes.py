@@ -7,6 +7,9 @@
   textured.glb               a node hierarchy (scaled, rotated, translated parents) of cubes with
                              base colour, normal and metallic-roughness textures and a
                              KHR_texture_transform
+  conventions.glb            a diffuse plane under a 10 cd point light 2 m above it, beside an
+                             emissive quad of strength 2, seen from above: docs/gltf.md renders
+                             it in Blender too (blender_compare.sh) to check camera and units
 The files are committed; run this after changing it."""
 import json
 import math
@@ -125,7 +128,25 @@ def textured():
     g.write_glb(os.path.join(HERE, "textured.glb"))
 
 
+def conventions():
+    g = Gltf()
+    # Roughness 0: Blender's Principled diffuse (Disney's) is Lambert's near the normal only then.
+    plane = g.material("plane", pbrMetallicRoughness={"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0,
+                                                      "roughnessFactor": 0},
+                       extensions={"KHR_materials_specular": {"specularFactor": 0}})
+    g.node(mesh=g.mesh("plane", [0, -1, 0, 2, -1, 0, 2, 1, 0, 0, 1, 0], [0, 1, 2, 0, 2, 3], plane))
+    lamp = g.material("lamp", emissiveFactor=[1, 1, 1],
+                      pbrMetallicRoughness={"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0},
+                      extensions={"KHR_materials_emissive_strength": {"emissiveStrength": 2.0},
+                                  "KHR_materials_specular": {"specularFactor": 0}})
+    g.node(mesh=g.mesh("lamp", [-2, -1, 0, -0.5, -1, 0, -0.5, 1, 0, -2, 1, 0], [0, 1, 2, 0, 2, 3], lamp))
+    g.point_light([1, 1, 1], 10.0, translation=[1, 0, 2])
+    g.camera("top", math.radians(60), 4 / 3, translation=[0, 0, 5])
+    g.write_glb(os.path.join(HERE, "conventions.glb"))
+
+
 if __name__ == "__main__":
     cornell_box()
     sphere_grid()
     textured()
+    conventions()

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Renders a glTF file with the tracer and with Blender Cycles (blender_render.py: Blender's own
+# glTF importer, KHR_lights_punctual as W = 4 pi cd) at the same size, samples and depth, and
+# prints both images' means over a 3 x 3 grid of regions and their ratio (docs/gltf.md,
+# "Checked against Blender"). Needs Debian's blender, python3-numpy and python3-openimageio.
+# From the repository root, after bash ci/build.sh:
+#   bash scenes/gltf/blender_compare.sh FILE.glb [SPP] [WIDTH] [HEIGHT]
+set -euo pipefail
+file=$1 spp=${2:-1024} width=${3:-160} height=${4:-120}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+build/tracer render "$file" --spp "$spp" --width "$width" --height "$height" --quiet -o "$work/tracer.exr" >/dev/null
+blender -b -noaudio --factory-startup --python "$(dirname "$0")/blender_render.py" -- "$file" "$work/blender.exr" \
+  --spp "$spp" --width "$width" --height "$height" --lighting COMPAT >"$work/blender.log" 2>&1 ||
+  { tail -20 "$work/blender.log"; exit 1; }
+/usr/bin/python3 - "$work/tracer.exr" "$work/blender.exr" <<'PY'
+import sys
+import OpenImageIO as oiio
+ours, theirs = (oiio.ImageBuf(f).get_pixels(oiio.FLOAT)[:, :, :3] for f in sys.argv[1:3])
+h, w = ours.shape[:2]
+print("whole image: tracer %.4f, Blender %.4f, ratio %.3f" % (ours.mean(), theirs.mean(), ours.mean() / theirs.mean()))
+print("regions (tracer / Blender = ratio), top row first:")
+for i in range(3):
+    cells = []
+    for j in range(3):
+        a = ours[i * h // 3:(i + 1) * h // 3, j * w // 3:(j + 1) * w // 3].mean()
+        b = theirs[i * h // 3:(i + 1) * h // 3, j * w // 3:(j + 1) * w // 3].mean()
+        cells.append("%.4f / %.4f = %s" % (a, b, "%.4f" % (a / b) if b > 0 else "-"))
+    print("  " + "   ".join(cells))
+PY
