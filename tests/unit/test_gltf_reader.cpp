@@ -181,6 +181,9 @@ TEST_F(GltfReader, HostileHierarchiesAndFiles) {
   doc = test::triangle_gltf();
   doc["nodes"][0]["matrix"] = {1, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   expect_error(doc, "nodes[0].matrix: is not affine");
+  doc = test::triangle_gltf();
+  doc["nodes"][0]["translation"] = {0, 1e300, 0};  // no float holds it
+  expect_error(doc, "nodes[0]: 1000000");
   fs::create_directories(dir_ / "in");
   std::ofstream(dir_ / "outside.bin") << std::string(42, '\0');
   fs::create_symlink(dir_ / "outside.bin", dir_ / "in" / "link.bin");

@@ -1,9 +1,11 @@
 #include "scene/gltf_file.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "io/input_error.h"
 #include "io/json_reader.h"
@@ -174,6 +176,12 @@ GltfFile read_gltf_file(const std::string& bytes, const std::string& path) {
   if (!warn.empty()) file.notes.push_back(trimmed(warn));
   file.files_read = std::move(confinement.files_read);
   return file;
+}
+
+float gltf_float(const GltfFile& file, double value, const std::string& path) {
+  if (!(std::abs(value) <= static_cast<double>(std::numeric_limits<float>::max())))
+    throw InputError(file.path + ": " + path + ": " + std::to_string(value) + " is not a finite float");
+  return static_cast<float>(value);
 }
 
 ImagePixels decode_gltf_image(const GltfFile& file, int index, const std::string& use) {

@@ -32,6 +32,10 @@ GltfFile read_gltf_file(const std::string& bytes, const std::string& path);
 // JSON path of the texture that refers to it.
 ImagePixels decode_gltf_image(const GltfFile& file, int index, const std::string& use);
 
-bool is_gltf_path(const std::string& path);  // a .gltf or .glb extension, any case
+bool is_gltf_path(const std::string& path);
+
+// A JSON number as a float: an InputError naming the file and `path` unless it is finite and
+// within float's range (a double beyond it has no float to become).
+float gltf_float(const GltfFile& file, double value, const std::string& path);  // a .gltf or .glb extension, any case
 
 }  // namespace tracer

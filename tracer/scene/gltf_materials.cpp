@@ -53,15 +53,13 @@ bool read_uv_transform(const GltfFile& file, const tinygltf::ExtensionMap& exten
     const tinygltf::Value& v = ext->Get(key);
     if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
       fail(file, at + "." + key, "expected two numbers");
-    for (int i = 0; i < 2; ++i) {
-      into[i] = static_cast<float>(v.Get(i).GetNumberAsDouble());
-      if (!std::isfinite(into[i])) fail(file, at + "." + key, "must be finite");
-    }
+    for (int i = 0; i < 2; ++i)
+      into[i] = gltf_float(file, v.Get(i).GetNumberAsDouble(), at + "." + key + "[" + std::to_string(i) + "]");
   };
   float scale[2];
   pair("offset", 0.0f, out.offset);
   pair("scale", 1.0f, scale);
-  const float rotation = static_cast<float>(extension_number(file, *ext, "rotation", 0.0, at));
+  const float rotation = gltf_float(file, extension_number(file, *ext, "rotation", 0.0, at), at + ".rotation");
   float s, c;
   det_sincos(rotation, s, c);
   // T R S with R = [[cos, sin], [-sin, cos]] (the extension's matrix, row by row).
@@ -198,8 +196,7 @@ Material GltfMaterials::convert(const tinygltf::Material& g, const std::string& 
   if (g.normalTexture.index >= 0) {
     const std::string at = path + ".normalTexture";
     transform_of(g.normalTexture.extensions, at);
-    const float scale = static_cast<float>(g.normalTexture.scale);
-    if (!std::isfinite(scale)) fail(file_, at + ".scale", "must be finite");
+    const float scale = gltf_float(file_, g.normalTexture.scale, at + ".scale");
     m.normal_map =
         texture(g.normalTexture.index, g.normalTexture.texCoord, Bake::LinearNormal, {scale, scale, scale}, at).texture;
   }

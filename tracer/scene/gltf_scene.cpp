@@ -17,8 +17,7 @@ std::string at(const std::string& array, size_t i) { return array + "[" + std::t
 // A node's local transform: its matrix (column-major, affine), or T R S (glTF 2.0, 3.5.3).
 Transform node_transform(const GltfFile& file, const tinygltf::Node& node, const std::string& path) {
   for (const auto* v : {&node.matrix, &node.translation, &node.rotation, &node.scale})
-    for (double d : *v)
-      if (!std::isfinite(static_cast<float>(d))) fail_at(file.path, path, "a transform number is not a finite float");
+    for (double d : *v) gltf_float(file, d, path);  // every cast below is then in range
   Transform t;
   if (!node.matrix.empty()) {
     const std::vector<double>& m = node.matrix;
@@ -262,9 +261,10 @@ class GltfSceneReader {
     Vec3 colour{1, 1, 1};
     if (!l.color.empty()) {
       if (l.color.size() != 3) fail_at(file_.path, path + ".color", "expected 3 numbers");
-      colour = {static_cast<float>(l.color[0]), static_cast<float>(l.color[1]), static_cast<float>(l.color[2])};
+      colour = {gltf_float(file_, l.color[0], path + ".color[0]"), gltf_float(file_, l.color[1], path + ".color[1]"),
+                gltf_float(file_, l.color[2], path + ".color[2]")};
     }
-    const float intensity = static_cast<float>(l.intensity);
+    const float intensity = gltf_float(file_, l.intensity, path + ".intensity");
     if (!(intensity >= 0.0f && intensity < 1e30f) || !(colour.x >= 0 && colour.y >= 0 && colour.z >= 0) ||
         !is_finite(colour))
       fail_at(file_.path, path, "color and intensity must be finite and >= 0");
