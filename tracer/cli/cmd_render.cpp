@@ -23,6 +23,7 @@
 #include "render/render_adaptive.h"
 #include "render/render_cpu.h"
 #include "render/render_cuda.h"
+#include "scene/gltf_file.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
@@ -105,7 +106,8 @@ static int run_render(const RenderCommand& cmd) {
   if (cmd.device == "cuda") cuda_device_description();  // fail before loading when there is no GPU
   const auto t_load = Clock::now();
   const RenderOverrides overrides = scene_overrides(cmd);
-  const std::string scene_text = read_text_file(cmd.scene, "scene file");
+  const std::string scene_text =
+      read_text_file(cmd.scene, "scene file", is_gltf_path(cmd.scene) ? kMaxGltfFileBytes : UINT64_MAX);
   const Scene scene = load_scene_text(scene_text, cmd.scene, overrides);  // loading includes the BVH build
   const double load_build_s = seconds_since(t_load);
   refuse_overwriting_inputs(scene, output, cmd);

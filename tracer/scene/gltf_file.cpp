@@ -140,7 +140,7 @@ bool is_gltf_path(const std::string& path) {
 }
 
 GltfFile read_gltf_file(const std::string& bytes, const std::string& path) {
-  if (bytes.size() > 0xffffffffu) throw InputError(path + ": larger than 4 GiB, the limit of a glTF file");
+  if (bytes.size() > kMaxGltfFileBytes) throw InputError(path + ": larger than 4 GiB, the limit of a glTF file");
   const std::string json = json_text(bytes);
   if (!json.empty()) {
     const Json root = parse_json_text(json, path);  // syntax, depth and duplicate keys first

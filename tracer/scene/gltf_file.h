@@ -15,6 +15,8 @@
 
 namespace tracer {
 
+// The largest glTF file (a .glb's length field is 32 bits).
+constexpr uint64_t kMaxGltfFileBytes = 0xffffffffull;
 // The largest external buffer or image the reader follows.
 constexpr uint64_t kMaxGltfExternalBytes = 1ull << 30;
 

@@ -125,8 +125,6 @@ class GltfSceneReader {
       const uint32_t material = materials_.material(prim.material, uv);
       materials_used_.insert(material);
       std::vector<MeshTriangle> tris = triangles(prim, path, uv);
-      if (scene_.primitives.size() + tris.size() > kMaxGltfTriangles)
-        fail_at(file_.path, node_path, "places more than 2^25 triangles, the limit of a glTF file");
       contents_.triangles += static_cast<uint32_t>(tris.size());
       const std::vector<uint32_t> ids(tris.size(), material);
       append_mesh_triangles(scene_, std::move(tris), world, ids,
@@ -169,6 +167,8 @@ class GltfSceneReader {
       for (size_t i = 0; i < vertices; ++i) index[i] = static_cast<uint32_t>(i);
     }
     const std::vector<uint32_t> corners = triangle_corners(prim.mode, index, path);
+    if (scene_.primitives.size() + corners.size() / 3 > kMaxGltfTriangles)
+      fail_at(file_.path, path, "would place more than 2^24 triangles, the limit of a glTF file (instances count)");
     std::vector<MeshTriangle> tris(corners.size() / 3);
     for (size_t t = 0; t < tris.size(); ++t) {
       MeshTriangle& tri = tris[t];

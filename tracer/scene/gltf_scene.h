@@ -14,8 +14,9 @@
 
 namespace tracer {
 
-// The most triangles a glTF file may place (instancing multiplies a mesh's).
-constexpr uint64_t kMaxGltfTriangles = 1ull << 25;
+// The most triangles a glTF file may place (instancing multiplies a mesh's): checked before a
+// primitive's triangles are built.
+constexpr uint64_t kMaxGltfTriangles = 1ull << 24;
 
 struct GltfCamera {
   int index;         // into the file's cameras

@@ -141,7 +141,8 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Re
 }
 
 Scene load_scene(const std::string& path, const RenderOverrides& overrides) {
-  return load_scene_text(read_text_file(path, "scene file"), path, overrides);
+  return load_scene_text(read_text_file(path, "scene file", is_gltf_path(path) ? kMaxGltfFileBytes : UINT64_MAX), path,
+                         overrides);
 }
 
 std::vector<std::string> feature_names(uint32_t features) {

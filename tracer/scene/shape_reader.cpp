@@ -153,7 +153,7 @@ class ShapeReader {
     const std::string file = (std::filesystem::path(dir_) / obj.string("file")).string();
     scene_.report.input_files.insert(file);
     try {
-      const GltfFile gltf = read_gltf_file(read_text_file(file, "glTF file"), file);
+      const GltfFile gltf = read_gltf_file(read_text_file(file, "glTF file", kMaxGltfFileBytes), file);
       const GltfContents contents = add_gltf_file(gltf, xf, false, scene_);
       if (contents.triangles == 0) obj.fail("file", "its default scene places no triangles");
       for (const std::string& s : contents.ignored) scene_.report.gltf.push_back(file + ": ignored " + s);
