@@ -13,12 +13,14 @@ namespace {
 
 enum Counter { kCamera, kSecondary, kShadow, kNonfinite, kOverflow, kCounterCount };
 
-// 16x16 blocks; each thread loops over its pixel's samples in index order.
-__global__ void render_kernel(const SceneView scene, SampleRange range, FilmSum* film, unsigned long long* counters) {
+// 16x16 blocks; each thread loops over its pixel's samples in index order, with the code of
+// the integrator kKind alone (render_pixel_as).
+template <IntegratorKind kKind>
+__device__ void render_pixels(const SceneView& scene, SampleRange range, FilmSum* film, unsigned long long* counters) {
   const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
   if (x >= scene.settings.width || y >= scene.settings.height) return;
   RayCounts counts = {0, 0, 0};
-  const FilmSum sum = render_pixel(scene, x, y, range.begin, range.end, counts);
+  const FilmSum sum = render_pixel_as<kKind>(scene, x, y, range.begin, range.end, counts);
   film[static_cast<size_t>(y) * scene.settings.width + x] = sum;
   // Integer sums: the totals do not depend on the order threads add them in.
   atomicAdd(&counters[kCamera], static_cast<unsigned long long>(counts.camera));
@@ -26,6 +28,56 @@ __global__ void render_kernel(const SceneView scene, SampleRange range, FilmSum*
   atomicAdd(&counters[kShadow], static_cast<unsigned long long>(counts.shadow));
   if (sum.nonfinite) atomicAdd(&counters[kNonfinite], static_cast<unsigned long long>(sum.nonfinite));
   if (sum.overflow) atomicAdd(&counters[kOverflow], static_cast<unsigned long long>(sum.overflow));
+}
+
+// The megakernel, one per integrator and named for it, so that none holds another's registers
+// and stack (docs/cuda.md, "Resource budgets").
+__global__ void whitted_render_kernel(const SceneView scene, SampleRange range, FilmSum* film,
+                                      unsigned long long* counters) {
+  render_pixels<IntegratorKind::Whitted>(scene, range, film, counters);
+}
+
+__global__ void path_render_kernel(const SceneView scene, SampleRange range, FilmSum* film,
+                                   unsigned long long* counters) {
+  render_pixels<IntegratorKind::Path>(scene, range, film, counters);
+}
+
+// normals, albedo and depth
+__global__ void view_render_kernel(const SceneView scene, SampleRange range, FilmSum* film,
+                                   unsigned long long* counters) {
+  render_pixels<IntegratorKind::Normals>(scene, range, film, counters);
+}
+
+using RenderKernel = void (*)(const SceneView, SampleRange, FilmSum*, unsigned long long*);
+
+RenderKernel render_kernel_for(IntegratorKind kind) {
+  switch (kind) {
+    case IntegratorKind::Whitted: return whitted_render_kernel;
+    case IntegratorKind::Path: return path_render_kernel;
+    default: return view_render_kernel;
+  }
+}
+
+constexpr int kRenderThreads = 256;  // 16x16
+
+std::string describe_render_kernel(const char* name, RenderKernel kernel, const cudaDeviceProp& prop) {
+  cudaFuncAttributes attr{};
+  TRACER_CUDA_CHECK(cudaFuncGetAttributes(&attr, kernel));
+  int blocks = 0;
+  TRACER_CUDA_CHECK(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&blocks, kernel, kRenderThreads, 0));
+  const int by_registers = attr.numRegs > 0 ? prop.regsPerMultiprocessor / (attr.numRegs * kRenderThreads) : blocks;
+  const int by_threads = prop.maxThreadsPerMultiProcessor / kRenderThreads;
+  const char* limit = by_registers <= by_threads && by_registers <= prop.maxBlocksPerMultiProcessor ? "registers"
+                      : by_threads <= prop.maxBlocksPerMultiProcessor                               ? "threads per SM"
+                                                                                                    : "blocks per SM";
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "%s: %d registers, %zu bytes of local memory (stack and spills) per thread; 16x16 blocks: "
+                "%d resident per SM of %d threads = %.0f %% occupancy, limited by %s (%d SMs, %d registers per SM)",
+                name, attr.numRegs, static_cast<size_t>(attr.localSizeBytes), blocks,
+                prop.maxThreadsPerMultiProcessor, 100.0 * blocks * kRenderThreads / prop.maxThreadsPerMultiProcessor,
+                limit, prop.multiProcessorCount, prop.regsPerMultiprocessor);
+  return text;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
@@ -36,24 +88,9 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 
 std::string describe_render_kernel() {
   const cudaDeviceProp prop = select_cuda_device();
-  cudaFuncAttributes attr{};
-  TRACER_CUDA_CHECK(cudaFuncGetAttributes(&attr, render_kernel));
-  constexpr int kThreads = 256;
-  int blocks = 0;
-  TRACER_CUDA_CHECK(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&blocks, render_kernel, kThreads, 0));
-  const int by_registers = attr.numRegs > 0 ? prop.regsPerMultiprocessor / (attr.numRegs * kThreads) : blocks;
-  const int by_threads = prop.maxThreadsPerMultiProcessor / kThreads;
-  const char* limit = by_registers <= by_threads && by_registers <= prop.maxBlocksPerMultiProcessor ? "registers"
-                      : by_threads <= prop.maxBlocksPerMultiProcessor                               ? "threads per SM"
-                                                                                                    : "blocks per SM";
-  char text[512];
-  std::snprintf(text, sizeof text,
-                "render_kernel: %d registers, %zu bytes of local memory (stack and spills) per thread; 16x16 blocks: "
-                "%d resident per SM of %d threads = %.0f %% occupancy, limited by %s (%d SMs, %d registers per SM)",
-                attr.numRegs, static_cast<size_t>(attr.localSizeBytes), blocks, prop.maxThreadsPerMultiProcessor,
-                100.0 * blocks * kThreads / prop.maxThreadsPerMultiProcessor, limit, prop.multiProcessorCount,
-                prop.regsPerMultiprocessor);
-  return text;
+  return describe_render_kernel("whitted_render_kernel", whitted_render_kernel, prop) + "\n" +
+         describe_render_kernel("path_render_kernel", path_render_kernel, prop) + "\n" +
+         describe_render_kernel("view_render_kernel", view_render_kernel, prop);
 }
 
 GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, SampleRange range,
@@ -89,7 +126,7 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
     const CudaEvent start, stop;
     const dim3 block(16, 16), grid((rs.width + 15) / 16, (rs.height + 15) / 16);
     TRACER_CUDA_CHECK(cudaEventRecord(start.event));
-    render_kernel<<<grid, block>>>(device_scene.view(), range, film.get(), counters.get());
+    render_kernel_for(rs.integrator)<<<grid, block>>>(device_scene.view(), range, film.get(), counters.get());
     TRACER_CUDA_CHECK(cudaGetLastError());
     TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
     r.run.kernel_seconds = seconds_between(start, stop);

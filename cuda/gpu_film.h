@@ -22,9 +22,10 @@ struct GpuFilm {
   GpuRun run;
 };
 
-// The render kernel on this device: registers and local memory per thread (ptxas's
-// figures, as the driver reports them), resident 16x16 blocks per multiprocessor, the
-// occupancy they give and what limits it. DeviceUnavailable without a usable GPU.
+// The render kernels on this device, one line for each integrator's: registers and local
+// memory per thread (ptxas's figures, as the driver reports them), resident 16x16 blocks per
+// multiprocessor, the occupancy they give and what limits it. DeviceUnavailable without a
+// usable GPU.
 std::string describe_render_kernel();
 
 // The same for the stream schedule's four stage kernels (gpu_stream.cu), a line each.

@@ -22,18 +22,54 @@ __global__ void begin_batch_kernel(StreamTarget target, uint64_t first, size_t c
   work[i] = static_cast<uint32_t>(i);
 }
 
-// One stage over a queue; the stage is a template argument, so each kernel holds its code alone.
-template <StreamStage kStage>
-__global__ void stage_kernel(const SceneView scene, StreamStates st, const uint32_t* queue, size_t size,
-                             unsigned long long* counters) {
+// Stage kStage over a queue, its ray counts added to the counters; the shade stage with the
+// code of the integrator kKind alone (stream_shade_as).
+template <StreamStage kStage, IntegratorKind kKind = IntegratorKind::Path>
+__device__ void run_stage(const SceneView& scene, const StreamStates& st, const uint32_t* queue, size_t size,
+                          unsigned long long* counters) {
   const size_t q = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (q >= size) return;
   RayCounts counts = {0, 0, 0};
-  stream_stage(scene, kStage, st, queue[q], counts);
+  if constexpr (kStage == StreamStage::Shade)
+    stream_shade_as<kKind>(scene, st, queue[q], counts);
+  else
+    stream_stage(scene, kStage, st, queue[q], counts);
   // Integer sums: the totals do not depend on the order threads add them in.
   if (counts.camera) atomicAdd(&counters[0], static_cast<unsigned long long>(counts.camera));
   if (counts.secondary) atomicAdd(&counters[1], static_cast<unsigned long long>(counts.secondary));
   if (counts.shadow) atomicAdd(&counters[2], static_cast<unsigned long long>(counts.shadow));
+}
+
+// Each stage is a kernel of its own, and the shade stage one per integrator, each named for
+// what it does: each holds only its own code, and ptxas' report and profilers name it
+// (docs/cuda.md, "Resource budgets").
+#define TRACER_STAGE_KERNEL(name, ...)                                                                       \
+  __global__ void name(const SceneView scene, StreamStates st, const uint32_t* queue, size_t size,             \
+                       unsigned long long* counters) {                                                          \
+    run_stage<__VA_ARGS__>(scene, st, queue, size, counters);                                                  \
+  }
+TRACER_STAGE_KERNEL(generate_stage_kernel, StreamStage::Generate)
+TRACER_STAGE_KERNEL(closest_hit_stage_kernel, StreamStage::Closest)
+TRACER_STAGE_KERNEL(path_shade_stage_kernel, StreamStage::Shade, IntegratorKind::Path)
+TRACER_STAGE_KERNEL(whitted_shade_stage_kernel, StreamStage::Shade, IntegratorKind::Whitted)
+TRACER_STAGE_KERNEL(view_shade_stage_kernel, StreamStage::Shade, IntegratorKind::Normals)  // normals, albedo, depth
+TRACER_STAGE_KERNEL(shadow_any_hit_stage_kernel, StreamStage::Shadow)
+#undef TRACER_STAGE_KERNEL
+
+using StageKernel = void (*)(const SceneView, StreamStates, const uint32_t*, size_t, unsigned long long*);
+
+StageKernel stage_kernel_for(StreamStage stage, IntegratorKind kind) {
+  switch (stage) {
+    case StreamStage::Generate: return generate_stage_kernel;
+    case StreamStage::Closest: return closest_hit_stage_kernel;
+    case StreamStage::Shadow: return shadow_any_hit_stage_kernel;
+    case StreamStage::Shade: break;
+  }
+  switch (kind) {
+    case IntegratorKind::Path: return path_shade_stage_kernel;
+    case IntegratorKind::Whitted: return whitted_shade_stage_kernel;
+    default: return view_shade_stage_kernel;
+  }
 }
 
 // The batch's radiance into the film, one thread per pixel, its samples in order.
@@ -96,20 +132,7 @@ struct CudaStream {
   void run(StreamStage stage, StreamQueue q, size_t size) {
     if (size == 0) return;
     const uint32_t grid = blocks_for(size);
-    switch (stage) {
-      case StreamStage::Generate:
-        stage_kernel<StreamStage::Generate><<<grid, kBlock>>>(scene, states, queue(q), size, counters);
-        break;
-      case StreamStage::Closest:
-        stage_kernel<StreamStage::Closest><<<grid, kBlock>>>(scene, states, queue(q), size, counters);
-        break;
-      case StreamStage::Shade:
-        stage_kernel<StreamStage::Shade><<<grid, kBlock>>>(scene, states, queue(q), size, counters);
-        break;
-      case StreamStage::Shadow:
-        stage_kernel<StreamStage::Shadow><<<grid, kBlock>>>(scene, states, queue(q), size, counters);
-        break;
-    }
+    stage_kernel_for(stage, scene.settings.integrator)<<<grid, kBlock>>>(scene, states, queue(q), size, counters);
     TRACER_CUDA_CHECK(cudaGetLastError());
   }
 
@@ -164,10 +187,12 @@ std::string describe_kernel(const char* name, Kernel kernel, const cudaDevicePro
 
 std::string describe_stream_kernels() {
   const cudaDeviceProp prop = select_cuda_device();
-  return describe_kernel("stream generate", stage_kernel<StreamStage::Generate>, prop) + "\n" +
-         describe_kernel("stream closest", stage_kernel<StreamStage::Closest>, prop) + "\n" +
-         describe_kernel("stream shade", stage_kernel<StreamStage::Shade>, prop) + "\n" +
-         describe_kernel("stream shadow", stage_kernel<StreamStage::Shadow>, prop);
+  return describe_kernel("generate_stage_kernel", generate_stage_kernel, prop) + "\n" +
+         describe_kernel("closest_hit_stage_kernel", closest_hit_stage_kernel, prop) + "\n" +
+         describe_kernel("path_shade_stage_kernel", path_shade_stage_kernel, prop) + "\n" +
+         describe_kernel("whitted_shade_stage_kernel", whitted_shade_stage_kernel, prop) + "\n" +
+         describe_kernel("view_shade_stage_kernel", view_shade_stage_kernel, prop) + "\n" +
+         describe_kernel("shadow_any_hit_stage_kernel", shadow_any_hit_stage_kernel, prop);
 }
 
 size_t GpuStream::device_bytes(const RenderSettings& rs, uint64_t total) {

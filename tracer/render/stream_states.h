@@ -41,6 +41,7 @@ StreamStates allocate_stream_states(const RenderSettings& rs, size_t width, Allo
   st.shadow_emitter = array(static_cast<uint32_t*>(nullptr), path || whitted);
   st.shadow_contribution = array(static_cast<Vec3*>(nullptr), path);
   st.stack_size = whitted ? whitted_stack_size(rs.max_depth) : 0u;
+  st.width = static_cast<uint32_t>(width);
   st.vertex = array(static_cast<WhittedVertex*>(nullptr), whitted);
   st.stack = array(static_cast<WhittedTask*>(nullptr), whitted, width * st.stack_size);
   st.top = array(static_cast<uint32_t*>(nullptr), whitted);

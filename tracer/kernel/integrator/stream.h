@@ -44,11 +44,14 @@ struct StreamStates {
   float* shadow_tmax;
   uint32_t* shadow_emitter;
   Vec3* shadow_contribution;
-  // Whitted: the vertex being lit and the depth-first stack, stack_size entries per state
+  // Whitted: the vertex being lit and the depth-first stack, stack_size entries per state,
+  // slot-major: entry k of state i at stack[k * width + i], so the states of a warp reading
+  // their k-th entries read adjacent memory (coalesced on a GPU)
   WhittedVertex* vertex;
   WhittedTask* stack;
   uint32_t* top;
   uint32_t stack_size;
+  uint32_t width;  // states in the batch
 };
 
 TRACER_HD PathState load_path(const StreamStates& st, uint32_t i) {
@@ -77,7 +80,7 @@ TRACER_HD void store_shadow_ray(const StreamStates& st, uint32_t i, const Ray& r
 // The Whitted state's next task popped into its ray, or done when the stack is empty.
 TRACER_HD uint8_t whitted_pop(const StreamStates& st, uint32_t i) {
   if (st.top[i] == 0u) return kStreamDone;
-  const WhittedTask task = st.stack[i * st.stack_size + --st.top[i]];
+  const WhittedTask task = st.stack[static_cast<size_t>(--st.top[i]) * st.width + i];
   st.vertex[i].task = task;
   st.origin[i] = task.ray.origin;
   st.dir[i] = task.ray.dir;
@@ -96,7 +99,7 @@ TRACER_HD uint8_t whitted_shade(const SceneView& scene, const StreamStates& st, 
     return kStreamShadow | kStreamResume;
   }
   int top = static_cast<int>(st.top[i]);
-  whitted_finish(scene, v, st.radiance[i], st.stack + static_cast<size_t>(i) * st.stack_size, top, counts);
+  whitted_finish(scene, v, st.radiance[i], st.stack + i, st.width, top, counts);
   st.top[i] = static_cast<uint32_t>(top);
   return whitted_pop(st, i);
 }
@@ -121,26 +124,34 @@ TRACER_HD void stream_generate(const SceneView& scene, const StreamStates& st, u
   }
 }
 
+// The shade stage by the integrator kKind (Normals: any debug view), as render_sample_as: a GPU
+// kernel compiled for one integrator holds only its code (cuda/gpu_stream.cu).
+template <IntegratorKind kKind>
+TRACER_HD void stream_shade_as(const SceneView& scene, const StreamStates& st, uint32_t i, RayCounts& counts) {
+  if constexpr (kKind == IntegratorKind::Path) {
+    PathState p = load_path(st, i);
+    ShadowQuery shadow;
+    const PathStep step = path_shade(scene, st.pixel[i], st.sample[i], st.hit[i], p, shadow, counts);
+    store_path(st, i, p);
+    if (step.shadow) {
+      store_shadow_ray(st, i, shadow.ray, shadow.tmax, shadow.emitter);
+      st.shadow_contribution[i] = shadow.contribution;
+    }
+    st.next[i] =
+        static_cast<uint8_t>((step.shadow ? unsigned{kStreamShadow} : 0u) | (step.alive ? unsigned{kStreamTrace} : 0u));
+  } else if constexpr (kKind == IntegratorKind::Whitted) {
+    st.next[i] = whitted_shade(scene, st, i, counts);
+  } else {
+    st.radiance[i] = debug_view(scene, {st.origin[i], st.dir[i]}, st.hit[i]);
+    st.next[i] = kStreamDone;
+  }
+}
+
 TRACER_HD void stream_shade(const SceneView& scene, const StreamStates& st, uint32_t i, RayCounts& counts) {
   switch (scene.settings.integrator) {
-    case IntegratorKind::Path: {
-      PathState p = load_path(st, i);
-      ShadowQuery shadow;
-      const PathStep step = path_shade(scene, st.pixel[i], st.sample[i], st.hit[i], p, shadow, counts);
-      store_path(st, i, p);
-      if (step.shadow) {
-        store_shadow_ray(st, i, shadow.ray, shadow.tmax, shadow.emitter);
-        st.shadow_contribution[i] = shadow.contribution;
-      }
-      st.next[i] = static_cast<uint8_t>((step.shadow ? unsigned{kStreamShadow} : 0u) |
-                                        (step.alive ? unsigned{kStreamTrace} : 0u));
-      break;
-    }
-    case IntegratorKind::Whitted: st.next[i] = whitted_shade(scene, st, i, counts); break;
-    default:
-      st.radiance[i] = debug_view(scene, {st.origin[i], st.dir[i]}, st.hit[i]);
-      st.next[i] = kStreamDone;
-      break;
+    case IntegratorKind::Path: stream_shade_as<IntegratorKind::Path>(scene, st, i, counts); break;
+    case IntegratorKind::Whitted: stream_shade_as<IntegratorKind::Whitted>(scene, st, i, counts); break;
+    default: stream_shade_as<IntegratorKind::Normals>(scene, st, i, counts); break;
   }
 }
 

@@ -156,9 +156,10 @@ TRACER_HD_STEP bool whitted_next_light(const SceneView& scene, WhittedVertex& v,
 }
 
 // The lit vertex's share of the radiance, and its reflection and refraction rays pushed
-// (refraction first, so the reflection is traced first).
+// (refraction first, so the reflection is traced first). Entry k of the stack is
+// stack[k * stride]: 1 in the megakernel's own array, the batch's width in the stream's.
 TRACER_HD_STEP void whitted_finish(const SceneView& scene, const WhittedVertex& v, Vec3& radiance, WhittedTask* stack,
-                                   int& top, RayCounts& counts) {
+                                   size_t stride, int& top, RayCounts& counts) {
   const WhittedTask& task = v.task;
   radiance += task.weight * v.local;
   if (task.depth >= scene.settings.max_depth) return;
@@ -176,7 +177,7 @@ TRACER_HD_STEP void whitted_finish(const SceneView& scene, const WhittedVertex& 
       const Vec3 weight = task.weight * v.w.kt * (1.0f - f);
       if (max_component(weight) > 0.0f) {
         ++counts.secondary;
-        stack[top++] = {
+        stack[static_cast<size_t>(top++) * stride] = {
             {offset_ray_origin(v.s.p, v.s.ng, refracted, scene.offset_scale), refracted}, weight, task.depth + 1};
       }
     } else {
@@ -187,7 +188,7 @@ TRACER_HD_STEP void whitted_finish(const SceneView& scene, const WhittedVertex& 
   if ((scene.settings.effects & kEffectReflection) && max_component(weight) > 0.0f) {
     const Vec3 reflected = reflect(task.ray.dir, v.n);
     ++counts.secondary;
-    stack[top++] = {
+    stack[static_cast<size_t>(top++) * stride] = {
         {offset_ray_origin(v.s.p, v.s.ng, reflected, scene.offset_scale), reflected}, weight, task.depth + 1};
   }
 }
@@ -209,7 +210,7 @@ TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, R
     float tmax;
     while (whitted_next_light(scene, v, shadow, tmax, counts))
       if (!trace_any(scene, shadow, tmax)) whitted_add_light(scene, v);
-    whitted_finish(scene, v, radiance, stack, top, counts);
+    whitted_finish(scene, v, radiance, stack, 1, top, counts);
   }
   return radiance;
 }

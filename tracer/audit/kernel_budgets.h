@@ -1,0 +1,61 @@
+// The resource budget of every CUDA kernel of the tracer on sm_90 (docs/cuda.md, "Resource
+// budgets"): registers per thread, stack frame and spilled bytes per thread, static shared
+// memory per block. `tracer audit resources` (test audit.resources, label determinism) fails
+// when a kernel exceeds its row or has none. `block` is the kernel's launch width, for the
+// occupancy docs/cuda.md derives. A row is lowered when a change frees resources, and raised
+// only by a commit that says why.
+#pragma once
+#include <string>
+
+namespace tracer {
+
+struct KernelBudget {
+  const char* kernel;  // kernel_name(): "path_render_kernel"; a template keeps its arguments
+  int registers, stack_bytes, spill_bytes, shared_bytes;
+  int block;  // threads per block at launch
+};
+
+inline constexpr KernelBudget kKernelBudgets[] = {
+    // kernel                            registers stack spill shared block
+    // the megakernel, one per integrator (cuda/gpu_film.cu), 16x16 blocks
+    {"path_render_kernel",               158,  784, 0, 0, 256},
+    {"whitted_render_kernel",            180, 3424, 0, 0, 256},
+    {"view_render_kernel",                90,  304, 0, 0, 256},
+    // adaptive sampling (cuda/gpu_adaptive.cu)
+    {"path_adaptive_pass_kernel",        146,  784, 0, 0, 128},
+    {"whitted_adaptive_pass_kernel",     171, 3424, 0, 0, 128},
+    {"view_adaptive_pass_kernel",         80,  272, 0, 0, 128},
+    {"mark_unconverged_kernel",           40,    0, 0, 0, 128},
+    {"keep_kernel",                       16,    0, 0, 0, 128},
+    // the stream schedule (cuda/gpu_stream.cu)
+    {"begin_batch_kernel",                20,    0, 0, 0, 128},
+    {"generate_stage_kernel",             26,    0, 0, 0, 128},
+    {"closest_hit_stage_kernel",          69,  272, 0, 0, 128},
+    {"path_shade_stage_kernel",          101,    0, 0, 0, 128},
+    {"whitted_shade_stage_kernel",        89,    0, 0, 0, 128},
+    {"view_shade_stage_kernel",           45,    0, 0, 0, 128},
+    {"shadow_any_hit_stage_kernel",       72,  272, 0, 0, 128},
+    {"split_kernel",                      17,    0, 0, 0, 128},
+    {"end_batch_kernel",                  28,    0, 0, 0, 128},
+    // the LBVH build (cuda/lbvh_gpu.cu)
+    {"key_kernel",                        13,    0, 0, 0, 256},
+    {"radix_kernel",                      20,    0, 0, 0, 256},
+    {"gather_kernel",                     24,    0, 0, 0, 256},
+    {"climb_kernel",                      30,    0, 0, 0, 256},
+    // parity cases (cuda/parity/parity_gpu.cu)
+    {"math_kernel",                       29,    0, 0, 0, 256},
+    {"philox_kernel",                     18,    0, 0, 0, 256},
+    {"shape_kernel",                      44,    0, 0, 0, 256},
+    {"bsdf_kernel",                       56,    0, 0, 0, 256},
+    {"adaptive_kernel",                   46,    0, 0, 0, 256},
+    {"trace_kernel",                      88,  272, 0, 0, 256},
+    {"sample_kernel",                    195, 2912, 0, 0, 256},
+};
+
+inline const KernelBudget* find_kernel_budget(const std::string& name) {
+  for (const KernelBudget& b : kKernelBudgets)
+    if (name == b.kernel) return &b;
+  return nullptr;
+}
+
+}  // namespace tracer
