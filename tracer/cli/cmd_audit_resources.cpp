@@ -1,12 +1,13 @@
 // `tracer audit resources`: every CUDA kernel's registers, stack frame, spills and static
-// shared memory on sm_90, from ptxas' report of this build (BUILD/**/*.o.resources, kept by
-// cmake/nvcc_resource_usage.sh while the build compiles), against the budgets of
+// shared memory on sm_90, from ptxas' report of this build (OBJECT.o.resources beside each CUDA
+// object, kept by cmake/nvcc_resource_usage.sh while the build compiles), against the budgets of
 // tracer/audit/kernel_budgets.h, with the occupancy each implies (docs/cuda.md). Exit 0 within
 // budget, 1 otherwise, 2 bad input, 77 when this build has no CUDA compiler.
 #include <cstdio>
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <sstream>
 
 #include "audit/kernel_budgets.h"
 #include "audit/kernel_resources.h"
@@ -29,20 +30,17 @@ int run_audit_resources(const std::string& build_option) {
   if (!fs::is_directory(build)) throw InputError(build + ": not a directory (--build)");
   std::vector<KernelResources> kernels;
   size_t reports = 0;
-  for (auto it = fs::recursive_directory_iterator(build, fs::directory_options::skip_permission_denied);
-       it != fs::recursive_directory_iterator(); ++it) {
-    const fs::path& p = it->path();
-    if (p.extension() != ".resources" || !it->is_regular_file()) continue;
-    for (KernelResources& k : parse_resource_report(read_text_file(p.string(), "resource report", 64ull << 20)))
+  std::stringstream names(TRACER_AUDIT_RESOURCE_REPORTS);  // one per CUDA object, relative to the build
+  for (std::string name; std::getline(names, name, ';');) {
+    const fs::path report = fs::path(build) / name;
+    if (!fs::is_regular_file(report)) {
+      std::printf("FAIL no resource report %s: build with the CUDA launcher, cmake/nvcc_resource_usage.sh\n",
+                  report.string().c_str());
+      return 1;
+    }
+    for (KernelResources& k : parse_resource_report(read_text_file(report.string(), "resource report", 64ull << 20)))
       kernels.push_back(std::move(k));
     ++reports;
-  }
-  if (reports == 0) {
-    std::printf(
-        "FAIL no resource reports (*.o.resources) under %s: build it with its CUDA launcher, "
-        "cmake/nvcc_resource_usage.sh\n",
-        build.c_str());
-    return 1;
   }
   std::map<std::string, const KernelResources*> by_name;  // sm_90 kernels of the tracer, sorted
   for (const KernelResources& k : kernels)
