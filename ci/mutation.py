@@ -37,6 +37,7 @@ class Mutant:
         self.sample = False
         self.equivalent = ""  # why it is unbiased; its own test must kill it
         self.killer = ""  # for an equivalent mutant: the ctest -R pattern of its test
+        self.first = ""  # tests run before the rest (ctest -R): those that killed it before
         self.before, self.after = [], []
 
 
@@ -55,7 +56,7 @@ def read_mutants(path):
                     mutants.append(current)
                 elif current is None:
                     sys.exit(f"{where}: '## {key}' before any '## name'")
-                elif key in ("feature", "file", "equivalent", "killer"):
+                elif key in ("feature", "file", "equivalent", "killer", "first"):
                     setattr(current, key, value.strip())
                 elif key == "sample":
                     current.sample = value.strip() == "yes"
@@ -142,12 +143,22 @@ def campaign(mutants, scratch, jobs):
             else:
                 test = ["ctest", "--test-dir", build, "-LE", EXCLUDED_LABELS, "-j", str(jobs), "--timeout", "600",
                         "--stop-on-failure"]
+                # An equivalent mutant runs its killer alone; another runs the tests named by
+                # 'first' before the rest, which run only when none of those fails: the same
+                # verdict sooner.
                 if m.equivalent:
-                    test += ["-R", m.killer]
-                stale = os.path.join(build, "Testing", "Temporary", "LastTestsFailed.log")
-                if os.path.exists(stale):
-                    os.remove(stale)  # ctest leaves the last failing run's list when all pass
-                code = run(test, scratch, log)
+                    passes = [test + ["-R", m.killer]]
+                elif m.first:  # a pattern that matches no test falls through to the rest
+                    passes = [test + ["-R", m.first, "--no-tests=ignore"], test]
+                else:
+                    passes = [test]
+                for command in passes:
+                    stale = os.path.join(build, "Testing", "Temporary", "LastTestsFailed.log")
+                    if os.path.exists(stale):
+                        os.remove(stale)  # ctest leaves the last failing run's list when all pass
+                    code = run(command, scratch, log)
+                    if code != 0:
+                        break
                 killers = failed_tests(build, log)
                 row["verdict"] = "killed" if code != 0 else "SURVIVED"
                 row["by"] = ", ".join(killers[:3])
