@@ -78,6 +78,19 @@ def cornell_box():
         f.write(json.dumps(twin, indent=1) + "\n")
 
 
+def floor(g, x, z, grey):
+    """A grey Lambert floor at y = 0 over [-x, x] by [-z, z], facing up."""
+    m = g.lambert("floor", [grey, grey, grey])
+    g.node(mesh=g.mesh("floor", [-x, 0, -z, x, 0, -z, x, 0, z, -x, 0, z], [0, 2, 1, 0, 3, 2], m))
+
+
+def pitched_camera(g, yfov_degrees, translation, pitch_degrees):
+    """A 4:3 camera named "front" at `translation`, looking down -z tilted by `pitch_degrees` about x."""
+    half = math.radians(pitch_degrees) / 2
+    g.camera("front", math.radians(yfov_degrees), 4 / 3, translation=translation,
+             rotation=[math.sin(half), 0, 0, math.cos(half)])
+
+
 def sphere_grid():
     g = Gltf()
     pos, nor, uv, idx = uv_sphere(0.4, 20, 10)
@@ -89,14 +102,12 @@ def sphere_grid():
                                                  "roughnessFactor": roughness})
             mesh = g.primitive("sphere", sphere, m)
             g.node(mesh=mesh, translation=[(col - 2) * 1.0, 0.4 + row * 1.0, 0])
-    floor = g.lambert("floor", [0.5, 0.5, 0.5])
-    g.node(mesh=g.mesh("floor", [-4, 0, -3, 4, 0, -3, 4, 0, 3, -4, 0, 3], [0, 2, 1, 0, 3, 2], floor))
+    floor(g, 4, 3, 0.5)
     panel = g.material("panel", emissiveFactor=[1, 1, 1],
                        extensions={"KHR_materials_emissive_strength": {"emissiveStrength": 4.0}})
     g.node(mesh=g.mesh("panel", [-2, 4, 1, 2, 4, 1, 2, 4, 3, -2, 4, 3], [0, 1, 2, 0, 2, 3], panel))
     g.point_light([1, 0.95, 0.9], 20.0, translation=[0, 3.5, 4])
-    s = math.sin(math.radians(-8) / 2)
-    g.camera("front", math.radians(40), 4 / 3, translation=[0, 1.9, 6.5], rotation=[s, 0, 0, math.cos(math.radians(-8) / 2)])
+    pitched_camera(g, 40, [0, 1.9, 6.5], -8)
     g.write_glb(os.path.join(HERE, "sphere-grid.glb"))
 
 
@@ -120,11 +131,9 @@ def textured():
     g.node(parent=root, name="box", mesh=box, rotation=[0, math.sin(0.35), 0, math.cos(0.35)])
     arm = g.node(parent=root, name="arm", translation=[1.1, 0, 0.3], rotation=[0, 0, math.sin(0.2), math.cos(0.2)])
     g.node(parent=arm, name="small", mesh=small, scale=[0.4, 0.4, 0.4], translation=[0, 0.2, 0])
-    floor = g.lambert("floor", [0.6, 0.6, 0.6])
-    g.node(mesh=g.mesh("floor", [-3, 0, -3, 3, 0, -3, 3, 0, 3, -3, 0, 3], [0, 2, 1, 0, 3, 2], floor))
+    floor(g, 3, 3, 0.6)
     g.point_light([1, 1, 1], 15.0, translation=[1.5, 3, 2.5])
-    s = math.sin(math.radians(-15) / 2)
-    g.camera("front", math.radians(45), 4 / 3, translation=[0.4, 2.2, 4.2], rotation=[s, 0, 0, math.cos(math.radians(-15) / 2)])
+    pitched_camera(g, 45, [0.4, 2.2, 4.2], -15)
     g.write_glb(os.path.join(HERE, "textured.glb"))
 
 
