@@ -2,6 +2,7 @@
 // ulp in one pixel, a moved sphere fails, every broken input fails with a clear message,
 // NaN always fails, identical images pass, and checking never writes under golden/.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <limits>

@@ -1,6 +1,7 @@
 // The CLI end to end: every kind of bad input gets one clear error naming the file and
 // key, exit code 2, and no output file; compare's exit codes; info's report.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <fstream>
 #include <sstream>

@@ -4,6 +4,7 @@
 // sphere), and any-hit throughput for shadow rays from the primary hits to a point above
 // the scene; on all cores. A checksum of the hits shows every structure found the same.
 // Every build time and rate is the median of --repeats runs (Embree's too).
+#include <nlohmann/json.hpp>
 #include <omp.h>
 
 #include <chrono>

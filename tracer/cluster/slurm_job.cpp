@@ -1,5 +1,6 @@
 #include "cluster/slurm_job.h"
 
+#include <nlohmann/json.hpp>
 #include <sys/stat.h>
 
 #include <filesystem>

@@ -1,6 +1,7 @@
 #include "io/json_reader.h"
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <vector>
 

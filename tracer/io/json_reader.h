@@ -2,7 +2,7 @@
 // says where it is ("scene.json: shapes[3].radius: expected a number, got \"1\""), and
 // every object is closed by finish(), which rejects keys nobody read.
 #pragma once
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // declarations only: the .cpp files that read values include json.hpp
 #include <optional>
 #include <set>
 #include <string>

@@ -1,6 +1,7 @@
 #include "options/render_options.h"
 
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <type_traits>
 
 #include "options/effects.h"

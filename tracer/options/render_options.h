@@ -3,7 +3,7 @@
 // command line, recorded in a golden's manifest entry and in a partial file's identity, and
 // reported by --stats, all by looping over that one list.
 #pragma once
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // declarations only: the .cpp files that read values include json.hpp
 #include <optional>
 #include <string>
 #include <vector>

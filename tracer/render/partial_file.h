@@ -6,6 +6,7 @@
 // sums, each three int64 and two uint32, little-endian. Reading checks every header
 // number's range, the size before allocating, the checksum and each sum's range.
 #pragma once
+#include <nlohmann/json.hpp>  // PartialHeader holds a Json
 #include <string>
 
 #include "io/json_reader.h"

@@ -3,6 +3,7 @@
 // camera: --camera NAME|INDEX, else the first a node places, else one framing the bounds.
 #include <cmath>
 #include <cstdlib>
+#include <nlohmann/json.hpp>
 
 #include "accel/bounds.h"
 #include "io/input_error.h"

@@ -1,5 +1,7 @@
 #include "scene/settings_reader.h"
 
+#include <nlohmann/json.hpp>
+
 #include "kernel/integrator/ray_counts.h"
 #include "options/enum_names.h"
 

@@ -1,6 +1,7 @@
 #include "scene/shape_reader.h"
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "scene/material_reader.h"
 #include "io/text_file.h"
