@@ -1,20 +1,22 @@
 #!/usr/bin/env bash
-# CI's extra jobs after the README's test command (ci/test.sh): the second compiler (clang)
-# running the unit, analytic, extremes, determinism and golden labels (every golden bit for
-# bit); the sanitizer build running the unit, analytic, extremes and determinism labels under
-# ASan + UBSan with no recovery; the device-semantics build (the GPU's min/max rules in host
-# kernel code, docs/cuda.md) rendering every golden and running the GPU pack that the default
-# build writes; the libFuzzer targets, 60 s each (docs/fuzzing.md); the `slurm` label against
-# a one-node cluster started by ci/slurm-up.sh and stopped by ci/slurm-down.sh
-# (docs/distributed.md); the mutation campaign's sample (ci/mutation.py --sample, a few
-# mutants of different features, each killed without the goldens: docs/mutation.md).
+# CI's extra jobs after the README's test command (ci/test.sh):
+#  - sanitize: one clang build with ASan + UBSan (no recovery) and the libFuzzer targets; it
+#    runs the unit, analytic, extremes, determinism and golden labels (the second compiler
+#    renders every golden bit for bit, under the sanitizers) and the fuzz label (each libFuzzer
+#    target for 60 s, docs/fuzzing.md);
+#  - device-semantics: the GPU's min/max rules in host kernel code (docs/cuda.md), rendering
+#    every golden and running the GPU pack that the default build writes;
+#  - slurm: the `slurm` label against a one-node cluster started by ci/slurm-up.sh and stopped
+#    by ci/slurm-down.sh (docs/distributed.md);
+#  - mutation: the mutation campaign's sample (ci/mutation.py --sample, a few mutants of
+#    different features, each killed without the goldens: docs/mutation.md).
 # device-semantics and slurm use the default build of ci/test.sh.
 # The presets build the CPU renderer only; the dependencies are those of ci/install-deps.sh.
-# Arguments pick jobs (default: clang asan device-semantics fuzz slurm mutation).
+# Arguments pick jobs (default: sanitize device-semantics slurm mutation).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=("$@")
-[ ${#jobs[@]} -gt 0 ] || jobs=(clang asan device-semantics fuzz slurm mutation)
+[ ${#jobs[@]} -gt 0 ] || jobs=(sanitize device-semantics slurm mutation)
 for job in "${jobs[@]}"; do
   started=$SECONDS
   if [ "$job" = slurm ]; then
@@ -41,6 +43,7 @@ for job in "${jobs[@]}"; do
   echo "== $job: configure, build, test"
   cmake --preset "$job" >/dev/null
   cmake --build --preset "$job" -j "$(nproc)"
+  echo "== $job: built in $((SECONDS - started)) s"
   ctest --preset "$job"
   echo "== $job: done in $((SECONDS - started)) s"
 done

@@ -22,7 +22,7 @@ test_packages=(
   assimp-testmodels                       # glTF files, broken ones included: the glTF reader's corpus test
   fonts-dejavu-core                       # the font of the bench converge plot
   libembree-dev                           # the Embree row of bench rays (benchmark only)
-  clang libomp-dev libclang-rt-14-dev     # the second compiler, its OpenMP runtime, libFuzzer and sanitizers (ci/extra.sh)
+  clang libomp-dev libclang-rt-14-dev     # the second compiler, its OpenMP runtime, libFuzzer and sanitizers (ci/extra.sh sanitize)
 )
 case "${1:-all}" in
   build) packages=("${build_packages[@]}") ;;

@@ -14,6 +14,7 @@
 #include "image/pixel_hash.h"
 #include "parity/parallel_for.h"
 #include "parity/parity_inputs.h"
+#include "sanitizer.h"
 #include "test_util.h"
 
 namespace tracer {
@@ -59,7 +60,7 @@ TEST(GpuPack, RunnerOnTheCpuReproducesEveryGoldenHashAndParityAnswer) {
 }
 
 TEST(GpuPack, StaysWellUnderTheDeviceCallLimit) {
-#if defined(__SANITIZE_ADDRESS__)
+#if TRACER_UNDER_ADDRESS_SANITIZER
   GTEST_SKIP() << "an AddressSanitizer build's runner is twice the size (16 MB); the pack carried to a GPU is the "
                   "default build's";
 #endif
@@ -135,8 +136,8 @@ TEST(GpuPack, RefusesADirectoryThatIsNotEmptyAndLeavesIt) {
 }
 
 TEST(GpuRunner, LinksOnlyLibcLibmAndTheLoader) {
-#ifdef __SANITIZE_ADDRESS__
-  GTEST_SKIP() << "a sanitizer build (cmake --preset asan) links its runtime into tracer-gpu";
+#if TRACER_UNDER_ADDRESS_SANITIZER
+  GTEST_SKIP() << "a sanitizer build (cmake --preset sanitize) links its runtime into tracer-gpu";
 #endif
   std::string out;
   ASSERT_EQ(test::run_command("ldd " + runner(), &out), 0) << out;

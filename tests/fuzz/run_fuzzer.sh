@@ -20,8 +20,13 @@ dict=()
 [ -f "$source/dict/$name.dict" ] && dict=("-dict=$source/dict/$name.dict")
 # A target whose libraries leak where we cannot free (suppressions/NAME.lsan says what and why)
 # needs full malloc stacks: the libraries are built without frame pointers.
+# A suppressions file the caller's LSAN_OPTIONS names (the sanitize preset's) is kept: both go
+# into one file, since a flag given twice keeps only its last value.
 if [ -f "$source/suppressions/$name.lsan" ]; then
-  export LSAN_OPTIONS="suppressions=$source/suppressions/$name.lsan${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
+  cat "$source/suppressions/$name.lsan" >"$work/lsan.supp"
+  inherited=$(sed -n 's/.*suppressions=\([^:]*\).*/\1/p' <<<"${LSAN_OPTIONS:-}")
+  if [ -n "$inherited" ]; then cat "$inherited" >>"$work/lsan.supp"; fi
+  export LSAN_OPTIONS="${LSAN_OPTIONS:+$LSAN_OPTIONS:}suppressions=$work/lsan.supp"
   export ASAN_OPTIONS="fast_unwind_on_malloc=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 fi
 set +e

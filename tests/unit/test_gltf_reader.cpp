@@ -172,6 +172,12 @@ TEST_F(GltfReader, HostileAccessorsAndBuffers) {
   doc = test::triangle_gltf();
   doc["bufferViews"][0]["byteStride"] = 4;
   expect_error(doc, "bufferViews[0].byteStride");
+  // An image's view is read while tinygltf loads the file (before the checks above): the
+  // sanitize build's fuzzer found it read past the buffer.
+  doc = test::triangle_gltf();
+  doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 8}, {"byteLength", 100}});
+  doc["images"] = {{{"bufferView", 2}, {"mimeType", "image/png"}}};
+  expect_error(doc, "images[0].bufferView: bytes [8, +100) lie outside buffer 0 of 42 bytes");
 }
 
 TEST_F(GltfReader, HostileHierarchiesAndFiles) {

@@ -12,6 +12,7 @@
 #include "bundle/scene_bundle.h"
 #include "io/sha1.h"
 #include "image/image_io.h"
+#include "sanitizer.h"
 #include "scene/scene_loader.h"
 #include "test_util.h"
 
@@ -445,7 +446,7 @@ TEST_F(HostileInput, AnImageHeaderIsCheckedBeforeItsPixelsAreAllocated) {
 // limit was killed by SIGSEGV (OpenImageIO's failed allocation went unnoticed), and a render
 // named only its command line. Every allocation failure is now reported with the file, exit 2.
 TEST_F(HostileInput, RunningOutOfMemoryNamesTheFileAndIsNeverASignal) {
-#if defined(__SANITIZE_ADDRESS__)
+#if TRACER_UNDER_ADDRESS_SANITIZER
   GTEST_SKIP() << "ulimit -v cannot hold an AddressSanitizer build (its shadow memory reserves terabytes)";
 #endif
   // 16384 x 16384 is within the limits; its 3.2 GB of floats are not within 1.5 GB.

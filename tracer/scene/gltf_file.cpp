@@ -90,9 +90,22 @@ bool write_nothing(std::string* err, const std::string&, const std::vector<unsig
   return false;
 }
 
-// Keeps an image's encoded bytes for decode_gltf_image.
-bool keep_encoded_image(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
-                        const unsigned char* bytes, int size, void*) {
+// Keeps an image's encoded bytes for decode_gltf_image. tinygltf 2.7 passes an image's buffer
+// view without checking that it lies inside its buffer (a fuzzed .glb read past the buffer's
+// end), so `model` (the one being loaded: its buffers and views come before its images) checks it.
+bool keep_encoded_image(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
+                        const unsigned char* bytes, int size, void* model_being_loaded) {
+  if (image->bufferView >= 0) {
+    const auto& model = *static_cast<const tinygltf::Model*>(model_being_loaded);
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(image->bufferView)];
+    const size_t buffer_bytes = model.buffers[static_cast<size_t>(view.buffer)].data.size();
+    if (view.byteOffset > buffer_bytes || view.byteLength > buffer_bytes - view.byteOffset || size < 0) {
+      *err += "images[" + std::to_string(index) + "].bufferView: bytes [" + std::to_string(view.byteOffset) + ", +" +
+              std::to_string(view.byteLength) + ") lie outside buffer " + std::to_string(view.buffer) + " of " +
+              std::to_string(buffer_bytes) + " bytes";
+      return false;
+    }
+  }
   image->image.assign(bytes, bytes + size);
   image->width = image->height = image->component = -1;
   return true;
@@ -155,9 +168,9 @@ GltfFile read_gltf_file(const std::string& bytes, const std::string& path) {
   if (ec) throw InputError(path + ": cannot resolve its folder: " + ec.message());
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({file_exists, expand_nothing, read_whole_file, write_nothing, &confinement});
-  loader.SetImageLoader(keep_encoded_image, nullptr);
   GltfFile file;
   file.path = path;
+  loader.SetImageLoader(keep_encoded_image, &file.model);
   std::string err, warn;
   const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), kGlbMagic, 4) == 0;
   const bool ok = binary ? loader.LoadBinaryFromMemory(&file.model, &err, &warn,
