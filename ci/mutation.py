@@ -109,23 +109,57 @@ def failed_tests(build, log):
         return [line.strip().split(":", 1)[-1] for line in f if line.strip()]
 
 
+TEST_DEFINITION = re.compile(r"\bTEST(?:_F|_P)?\(\s*(\w+)\s*,\s*(\w+)\s*\)")
+
+
+def test_targets(scratch, pattern):
+    """The test executables (tests/LABEL/NAME.cpp builds target NAME) defining a test whose
+    Suite.Name the ctest pattern matches; empty when none does (then everything is built)."""
+    targets = set()
+    for folder, _, files in os.walk(os.path.join(scratch, "tests")):
+        for name in files:
+            if name.startswith("test_") and name.endswith(".cpp"):
+                with open(os.path.join(folder, name), encoding="utf-8") as f:
+                    for suite, test in TEST_DEFINITION.findall(f.read()):
+                        if re.search(pattern, f"{suite}.{test}"):
+                            targets.add(name[:-4])
+    return sorted(targets)
+
+
+def targets_of(mutant, scratch):
+    """What a mutant's first verdict needs built: tracer (the golden update) and the
+    executables of its killer or first tests; None: everything."""
+    pattern = mutant.killer if mutant.equivalent else mutant.first
+    tests = test_targets(scratch, pattern) if pattern else []
+    return ["tracer"] + tests if tests else None
+
+
+def build_command(build, jobs, targets):
+    command = ["cmake", "--build", build, "-j", str(jobs)]
+    return command + ["--target"] + targets if targets else command
+
+
 def campaign(mutants, scratch, jobs):
     build = os.path.join(scratch, "build")
     log = os.path.join(scratch, "mutation.log")
     tracer = os.path.join(build, "tracer")
     configure = ["cmake", "-S", scratch, "-B", build, "-DCMAKE_BUILD_TYPE=Release", "-DTRACER_WITH_CUDA=OFF",
                  "-DTRACER_CPU_VARIANTS=OFF"]
-    if run(configure, scratch, log) != 0 or run(["cmake", "--build", build, "-j", str(jobs)], scratch, log) != 0:
+    # Mutants whose first verdict comes from named tests (the sample's) need only tracer and
+    # those tests' executables built; the rest of the suite is built when a mutant gets past them.
+    needed = [targets_of(m, scratch) for m in mutants]
+    first_build = None if None in needed else sorted({t for targets in needed for t in targets})
+    if run(configure, scratch, log) != 0 or run(build_command(build, jobs, first_build), scratch, log) != 0:
         sys.exit(f"the unmutated tree does not build; see {log}")
     rows = []
-    for m in mutants:
+    for m, targets in zip(mutants, needed):
         start = time.time()
         run(["git", "checkout", "--quiet", "--", "."], scratch, log)
         row = {"mutant": m, "goldens": "-", "verdict": "", "by": ""}
         problem = apply(m, scratch)
         if problem:
             row["verdict"] = problem
-        elif run(["cmake", "--build", build, "-j", str(jobs)], scratch, log) != 0:
+        elif run(build_command(build, jobs, targets), scratch, log) != 0:
             row["verdict"] = "does not build"
         else:
             update = subprocess.run([tracer, "golden", "update", "--force", "--root", scratch],
@@ -153,15 +187,21 @@ def campaign(mutants, scratch, jobs):
                 else:
                     passes = [test]
                 for command in passes:
+                    if command is test and targets and run(build_command(build, jobs, None), scratch, log) != 0:
+                        code = None  # the rest of the suite does not build with the mutant
+                        break
                     stale = os.path.join(build, "Testing", "Temporary", "LastTestsFailed.log")
                     if os.path.exists(stale):
                         os.remove(stale)  # ctest leaves the last failing run's list when all pass
                     code = run(command, scratch, log)
                     if code != 0:
                         break
-                killers = failed_tests(build, log)
-                row["verdict"] = "killed" if code != 0 else "SURVIVED"
-                row["by"] = ", ".join(killers[:3])
+                if code is None:
+                    row["verdict"] = "does not build"
+                else:
+                    killers = failed_tests(build, log)
+                    row["verdict"] = "killed" if code != 0 else "SURVIVED"
+                    row["by"] = ", ".join(killers[:3])
         row["seconds"] = time.time() - start
         rows.append(row)
         print(f"{m.name:40} {row['goldens']:>3} goldens  {row['verdict']:10} {row['by']}  ({row['seconds']:.0f} s)",
