@@ -77,6 +77,17 @@ uint32_t index_value(const unsigned char* p, int type) {
   return v;
 }
 
+}  // namespace
+
+std::string gltf_view_outside_its_buffer(const tinygltf::Model& model, const tinygltf::BufferView& view) {
+  const uint64_t buffer_bytes = model.buffers[static_cast<size_t>(view.buffer)].data.size();
+  if (view.byteOffset <= buffer_bytes && view.byteLength <= buffer_bytes - view.byteOffset) return "";
+  return "bytes [" + std::to_string(view.byteOffset) + ", +" + std::to_string(view.byteLength) +
+         ") lie outside buffer " + std::to_string(view.buffer) + " of " + std::to_string(buffer_bytes) + " bytes";
+}
+
+namespace {
+
 // `count` elements of `element_bytes` each, `stride` apart, from byte `offset` of a buffer
 // view: the view must lie inside its buffer and the elements inside the view. Returns the
 // first element's address.
@@ -92,12 +103,8 @@ const unsigned char* checked_elements(const tinygltf::Model& model, int view_ind
   if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size())
     fail_at(file, view_path + ".buffer",
             "names buffer " + std::to_string(view.buffer) + "; the file has " + std::to_string(model.buffers.size()));
-  const uint64_t buffer_bytes = model.buffers[view.buffer].data.size();
-  if (view.byteOffset > buffer_bytes || view.byteLength > buffer_bytes - view.byteOffset)
-    fail_at(file, view_path + ".byteLength",
-            "bytes [" + std::to_string(view.byteOffset) + ", +" + std::to_string(view.byteLength) +
-                ") lie outside buffer " + std::to_string(view.buffer) + " of " + std::to_string(buffer_bytes) +
-                " bytes");
+  const std::string outside = gltf_view_outside_its_buffer(model, view);
+  if (!outside.empty()) fail_at(file, view_path + ".byteLength", outside);
   // Neither factor exceeds 2^32 here, so the product cannot overflow 64 bits.
   const uint64_t span = (count - 1) * stride + element_bytes;
   if (offset > view.byteLength || span > view.byteLength - offset)

@@ -9,6 +9,7 @@
 
 namespace tinygltf {
 class Model;
+struct BufferView;
 }
 
 namespace tracer {
@@ -21,6 +22,10 @@ constexpr uint64_t kMaxGltfAccessorCount = 1ull << 26;
 // exactly that many components. `use` names what refers to it (the JSON path of the key).
 std::vector<float> read_gltf_floats(const tinygltf::Model& model, int accessor, int components, const std::string& file,
                                     const std::string& use);
+
+// Empty when the view's bytes lie inside its buffer (view.buffer already checked to name one);
+// otherwise "bytes [OFFSET, +LENGTH) lie outside buffer B of N bytes", for the caller's path.
+std::string gltf_view_outside_its_buffer(const tinygltf::Model& model, const tinygltf::BufferView& view);
 
 // A scalar accessor of unsigned bytes, shorts or ints, as vertex indices.
 std::vector<uint32_t> read_gltf_indices(const tinygltf::Model& model, int accessor, const std::string& file,

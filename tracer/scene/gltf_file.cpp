@@ -10,6 +10,7 @@
 
 #include "io/input_error.h"
 #include "io/json_reader.h"
+#include "scene/gltf_accessor.h"
 #include "scene/gltf_schema.h"
 
 namespace tracer {
@@ -98,11 +99,11 @@ bool keep_encoded_image(tinygltf::Image* image, const int index, std::string* er
   if (image->bufferView >= 0) {
     const auto& model = *static_cast<const tinygltf::Model*>(model_being_loaded);
     const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(image->bufferView)];
-    const size_t buffer_bytes = model.buffers[static_cast<size_t>(view.buffer)].data.size();
-    if (view.byteOffset > buffer_bytes || view.byteLength > buffer_bytes - view.byteOffset || size < 0) {
-      *err += "images[" + std::to_string(index) + "].bufferView: bytes [" + std::to_string(view.byteOffset) + ", +" +
-              std::to_string(view.byteLength) + ") lie outside buffer " + std::to_string(view.buffer) + " of " +
-              std::to_string(buffer_bytes) + " bytes";
+    std::string why = gltf_view_outside_its_buffer(model, view);
+    if (why.empty() && size < 0)  // the view's length as tinygltf's int
+      why = std::to_string(view.byteLength) + " bytes, more than the 2 GiB tinygltf passes for an image";
+    if (!why.empty()) {
+      *err += "images[" + std::to_string(index) + "].bufferView: " + why;
       return false;
     }
   }
