@@ -373,6 +373,10 @@ TEST_F(HostileInput, ADuplicateKeyIsRefusedNamingIt) {
 // enclosing array after every object, so 400,000 spheres took 37 s (1.5 s per 100,000, 5.6 s
 // per 200,000). Linear now (about 1 s here); the limit only guards against the quadratic.
 TEST_F(HostileInput, ASceneOfManySpheresLoadsInLinearTime) {
+#if TRACER_UNDER_ADDRESS_SANITIZER
+  GTEST_SKIP() << "the limit tells linear from quadratic in a release build; instrumented, the linear loader "
+                  "itself took over 20 s on a 2-core machine";
+#endif
   constexpr int kSpheres = 400000;
   std::string shapes;
   shapes.reserve(kSpheres * 72);
