@@ -3,20 +3,18 @@
 #  - sanitize: one clang build with ASan + UBSan (no recovery) and the libFuzzer targets; it
 #    runs the unit, analytic, extremes, determinism and golden labels (the second compiler
 #    renders every golden bit for bit, under the sanitizers) and the fuzz label (each libFuzzer
-#    target for 60 s, docs/fuzzing.md);
-#  - device-semantics: the GPU's min/max rules in host kernel code (docs/cuda.md), rendering
-#    every golden and running the GPU pack that the default build writes;
+#    target for 30 s, docs/fuzzing.md);
 #  - slurm: the `slurm` label against a one-node cluster started by ci/slurm-up.sh and stopped
 #    by ci/slurm-down.sh (docs/distributed.md);
 #  - mutation: the mutation campaign's sample (ci/mutation.py --sample, a few mutants of
 #    different features, each killed without the goldens: docs/mutation.md).
-# device-semantics and slurm use the default build of ci/test.sh.
+# slurm uses the default build of ci/test.sh.
 # The presets build the CPU renderer only; the dependencies are those of ci/install-deps.sh.
-# Arguments pick jobs (default: sanitize device-semantics slurm mutation).
+# Arguments pick jobs (default: sanitize slurm mutation).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=("$@")
-[ ${#jobs[@]} -gt 0 ] || jobs=(sanitize device-semantics slurm mutation)
+[ ${#jobs[@]} -gt 0 ] || jobs=(sanitize slurm mutation)
 for job in "${jobs[@]}"; do
   started=$SECONDS
   if [ "$job" = slurm ]; then

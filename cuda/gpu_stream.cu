@@ -4,6 +4,7 @@
 #include "cuda_device.h"
 #include "cuda_event.h"
 #include "gpu_stream.h"
+#include "kernel/accel/trace_variants.h"
 #include "render/stream_schedule.h"
 
 namespace tracer {
@@ -43,29 +44,66 @@ __device__ void run_stage(const SceneView& scene, const StreamStates& st, const 
 // Each stage is a kernel of its own, and the shade stage one per integrator, each named for
 // what it does: each holds only its own code, and ptxas' report and profilers name it
 // (docs/cuda.md, "Resource budgets").
-#define TRACER_STAGE_KERNEL(name, ...)                                                                       \
-  __global__ void name(const SceneView scene, StreamStates st, const uint32_t* queue, size_t size,             \
-                       unsigned long long* counters) {                                                          \
-    run_stage<__VA_ARGS__>(scene, st, queue, size, counters);                                                  \
+#define TRACER_STAGE_KERNEL(name, ...)                                                             \
+  __global__ void name(const SceneView scene, StreamStates st, const uint32_t* queue, size_t size, \
+                       unsigned long long* counters) {                                             \
+    run_stage<__VA_ARGS__>(scene, st, queue, size, counters);                                      \
   }
 TRACER_STAGE_KERNEL(generate_stage_kernel, StreamStage::Generate)
-TRACER_STAGE_KERNEL(closest_hit_stage_kernel, StreamStage::Closest)
 TRACER_STAGE_KERNEL(path_shade_stage_kernel, StreamStage::Shade, IntegratorKind::Path)
 TRACER_STAGE_KERNEL(whitted_shade_stage_kernel, StreamStage::Shade, IntegratorKind::Whitted)
 TRACER_STAGE_KERNEL(view_shade_stage_kernel, StreamStage::Shade, IntegratorKind::Normals)  // normals, albedo, depth
-TRACER_STAGE_KERNEL(shadow_any_hit_stage_kernel, StreamStage::Shadow)
 #undef TRACER_STAGE_KERNEL
+
+// The closest-hit and shadow stages with the trace code kCode (kernel/accel/trace_code.h).
+// They count no rays.
+template <uint32_t kCode, bool kShadow>
+__device__ void run_trace_stage(const SceneView& scene, const StreamStates& st, const uint32_t* queue, size_t size) {
+  const size_t q = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (q >= size) return;
+  if constexpr (kShadow)
+    stream_shadow<kCode>(scene, st, queue[q]);
+  else
+    stream_closest<kCode>(scene, st, queue[q]);
+}
+
+// A trace stage kernel held to `blocks` blocks of kBlock threads per SM (65,536 / (blocks *
+// 128) registers); what ptxas reports for each is in docs/cuda.md, "Resource budgets".
+#define TRACER_TRACE_KERNEL(kernel, code, shadow, blocks)                                                       \
+  __global__ void __launch_bounds__(kBlock, blocks)                                                             \
+      kernel(const SceneView scene, StreamStates st, const uint32_t* queue, size_t size, unsigned long long*) { \
+    run_trace_stage<code, shadow>(scene, st, queue, size);                                                      \
+  }
+// The full code, for scenes no variant holds: 72 registers, 7 blocks.
+TRACER_TRACE_KERNEL(closest_hit_stage_kernel, kTraceAll, false, 7)
+TRACER_TRACE_KERNEL(shadow_any_hit_stage_kernel, kTraceAll, true, 7)
+// A pair per trace variant (kernel/accel/trace_variants.h), only its structure's traversal and
+// its shapes' tests: 64 registers, 8 blocks.
+#define TRACER_TRACE_VARIANT_KERNELS(name, code)                   \
+  TRACER_TRACE_KERNEL(closest_hit_##name##_kernel, code, false, 8) \
+  TRACER_TRACE_KERNEL(shadow_any_hit_##name##_kernel, code, true, 8)
+TRACER_TRACE_VARIANTS(TRACER_TRACE_VARIANT_KERNELS)
+#undef TRACER_TRACE_VARIANT_KERNELS
+#undef TRACER_TRACE_KERNEL
 
 using StageKernel = void (*)(const SceneView, StreamStates, const uint32_t*, size_t, unsigned long long*);
 
-StageKernel stage_kernel_for(StreamStage stage, IntegratorKind kind) {
+#define TRACER_CLOSEST_KERNEL(name, code) closest_hit_##name##_kernel,
+#define TRACER_SHADOW_KERNEL(name, code) shadow_any_hit_##name##_kernel,
+constexpr StageKernel kClosestKernels[] = {TRACER_TRACE_VARIANTS(TRACER_CLOSEST_KERNEL)};
+constexpr StageKernel kShadowKernels[] = {TRACER_TRACE_VARIANTS(TRACER_SHADOW_KERNEL)};
+#undef TRACER_CLOSEST_KERNEL
+#undef TRACER_SHADOW_KERNEL
+
+StageKernel stage_kernel_for(StreamStage stage, const SceneView& scene) {
+  const int variant = trace_variant_of(scene.features, scene.settings);
   switch (stage) {
     case StreamStage::Generate: return generate_stage_kernel;
-    case StreamStage::Closest: return closest_hit_stage_kernel;
-    case StreamStage::Shadow: return shadow_any_hit_stage_kernel;
+    case StreamStage::Closest: return variant < 0 ? closest_hit_stage_kernel : kClosestKernels[variant];
+    case StreamStage::Shadow: return variant < 0 ? shadow_any_hit_stage_kernel : kShadowKernels[variant];
     case StreamStage::Shade: break;
   }
-  switch (kind) {
+  switch (scene.settings.integrator) {
     case IntegratorKind::Path: return path_shade_stage_kernel;
     case IntegratorKind::Whitted: return whitted_shade_stage_kernel;
     default: return view_shade_stage_kernel;
@@ -132,7 +170,7 @@ struct CudaStream {
   void run(StreamStage stage, StreamQueue q, size_t size) {
     if (size == 0) return;
     const uint32_t grid = blocks_for(size);
-    stage_kernel_for(stage, scene.settings.integrator)<<<grid, kBlock>>>(scene, states, queue(q), size, counters);
+    stage_kernel_for(stage, scene)<<<grid, kBlock>>>(scene, states, queue(q), size, counters);
     TRACER_CUDA_CHECK(cudaGetLastError());
   }
 
@@ -187,12 +225,18 @@ std::string describe_kernel(const char* name, Kernel kernel, const cudaDevicePro
 
 std::string describe_stream_kernels() {
   const cudaDeviceProp prop = select_cuda_device();
+  std::string variants;
+  for (int v = 0; v < kTraceVariantCount; ++v) {
+    const std::string name = kTraceVariants[v].name;
+    variants += "\n" + describe_kernel(("closest_hit_" + name + "_kernel").c_str(), kClosestKernels[v], prop) + "\n" +
+                describe_kernel(("shadow_any_hit_" + name + "_kernel").c_str(), kShadowKernels[v], prop);
+  }
   return describe_kernel("generate_stage_kernel", generate_stage_kernel, prop) + "\n" +
          describe_kernel("closest_hit_stage_kernel", closest_hit_stage_kernel, prop) + "\n" +
          describe_kernel("path_shade_stage_kernel", path_shade_stage_kernel, prop) + "\n" +
          describe_kernel("whitted_shade_stage_kernel", whitted_shade_stage_kernel, prop) + "\n" +
          describe_kernel("view_shade_stage_kernel", view_shade_stage_kernel, prop) + "\n" +
-         describe_kernel("shadow_any_hit_stage_kernel", shadow_any_hit_stage_kernel, prop);
+         describe_kernel("shadow_any_hit_stage_kernel", shadow_any_hit_stage_kernel, prop) + variants;
 }
 
 size_t GpuStream::device_bytes(const RenderSettings& rs, uint64_t total) {

@@ -20,6 +20,7 @@
 #include "io/output_paths.h"
 #include "io/sha1.h"
 #include "io/text_file.h"
+#include "kernel/accel/trace_variants.h"
 #include "parity/parity_gpu.h"
 #include "parity/parity_suite.h"
 #include "render/device_error.h"
@@ -283,12 +284,18 @@ int run_pack(const Options& o) {
     try {
       if (kind == "golden" || kind == "sample-map") {
         const SceneBundle b = read_scene_bundle(dir + file);
-        const Rendered r =
-            render_bundle(b, schedule.empty() ? o : with_schedule(o, schedule, dir + "pack.tsv: " + name), dir + file);
+        const Options ro = schedule.empty() ? o : with_schedule(o, schedule, dir + "pack.tsv: " + name);
+        const Rendered r = render_bundle(b, ro, dir + file);
         const std::string& got = kind == "golden" ? r.hash : r.sample_map_hash;
         pass = got == expected;
+        // The stream schedule's trace kernels on the GPU (kernel/accel/trace_variants.h).
+        const SceneView view = view_for(b, ro);
+        const std::string trace =
+            view.settings.schedule == Schedule::Stream
+                ? std::string(", trace ") + trace_variant_name(trace_variant_of(view.features, view.settings))
+                : "";
         char text[160];
-        std::snprintf(text, sizeof text, "%.6f s, %.1f Mrays/s", r.best_seconds, mrays_per_second(r));
+        std::snprintf(text, sizeof text, "%.6f s, %.1f Mrays/s%s", r.best_seconds, mrays_per_second(r), trace.c_str());
         detail = pass                             ? text
                  : r.adaptive || kind == "golden" ? "got " + got + ", expected " + expected
                                                   : "a sample map needs an adaptive render; the bundle is uniform";

@@ -12,6 +12,7 @@
 #include "golden/golden_manifest.h"
 #include "image/image_io.h"
 #include "image/pixel_hash.h"
+#include "kernel/accel/trace_variants.h"
 #include "parity/parallel_for.h"
 #include "parity/parity_inputs.h"
 #include "sanitizer.h"
@@ -52,6 +53,13 @@ TEST(GpuPack, RunnerOnTheCpuReproducesEveryGoldenHashAndParityAnswer) {
       EXPECT_NE(out.substr(at, 60).find("PASS"), std::string::npos) << out.substr(at, 200);
     }
   }
+  // Each trace variant of the GPU's stream schedule renders a golden in the pack: a golden's own
+  // stream row, or one with another structure (NAME@ACCEL@stream). The runner names the variant
+  // a stream row runs on the GPU.
+  for (const TraceVariant& v : kTraceVariants)
+    EXPECT_NE(out.find(std::string(", trace ") + v.name + "\n"), std::string::npos)
+        << v.name << " renders no golden in the pack:\n"
+        << out;
   for (const char* c : {"math-sin", "math-pow", "philox", "shapes", "trace-mesh-bvh", "trace-mesh-lbvh",
                         "trace-mesh-kdtree", "trace-mesh-grid", "trace-mesh-none", "adaptive-decision", "lbvh-build-1m",
                         "sample-cornell-box", "stream-cornell-box", "stream-cornell-box-path"})

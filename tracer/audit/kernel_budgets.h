@@ -18,23 +18,36 @@ struct KernelBudget {
 inline constexpr KernelBudget kKernelBudgets[] = {
     // kernel                            registers stack spill shared block
     // the megakernel, one per integrator (cuda/gpu_film.cu), 16x16 blocks
-    {"path_render_kernel",               158,  784, 0, 0, 256},
-    {"whitted_render_kernel",            180, 3424, 0, 0, 256},
-    {"view_render_kernel",                90,  304, 0, 0, 256},
+    {"path_render_kernel",               156,  784, 0, 0, 256},
+    {"whitted_render_kernel",            203, 3424, 0, 0, 256},
+    {"view_render_kernel",                86,  288, 0, 0, 256},
     // adaptive sampling (cuda/gpu_adaptive.cu)
     {"path_adaptive_pass_kernel",        146,  784, 0, 0, 128},
-    {"whitted_adaptive_pass_kernel",     171, 3424, 0, 0, 128},
-    {"view_adaptive_pass_kernel",         80,  272, 0, 0, 128},
+    {"whitted_adaptive_pass_kernel",     193, 3424, 0, 0, 128},
+    {"view_adaptive_pass_kernel",         78,  288, 0, 0, 128},
     {"mark_unconverged_kernel",           40,    0, 0, 0, 128},
     {"keep_kernel",                       16,    0, 0, 0, 128},
     // the stream schedule (cuda/gpu_stream.cu)
     {"begin_batch_kernel",                20,    0, 0, 0, 128},
     {"generate_stage_kernel",             26,    0, 0, 0, 128},
-    {"closest_hit_stage_kernel",          69,  272, 0, 0, 128},
+    {"closest_hit_stage_kernel",          72,  288, 0, 0, 128},
     {"path_shade_stage_kernel",          101,    0, 0, 0, 128},
     {"whitted_shade_stage_kernel",        89,    0, 0, 0, 128},
     {"view_shade_stage_kernel",           45,    0, 0, 0, 128},
-    {"shadow_any_hit_stage_kernel",       72,  272, 0, 0, 128},
+    {"shadow_any_hit_stage_kernel",       70,  288, 0, 0, 128},
+    // the trace variants' stages (kernel/accel/trace_variants.h), held to 64 registers
+    {"closest_hit_bvh_triangles_kernel",  64,  272, 0, 0, 128},
+    {"shadow_any_hit_bvh_triangles_kernel", 64, 272, 0, 0, 128},
+    {"closest_hit_bvh_spheres_kernel",    50,  272, 0, 0, 128},
+    {"shadow_any_hit_bvh_spheres_kernel", 56,  272, 0, 0, 128},
+    {"closest_hit_kdtree_triangles_kernel", 64,  0, 0, 0, 128},
+    {"shadow_any_hit_kdtree_triangles_kernel", 62, 0, 0, 0, 128},
+    {"closest_hit_kdtree_spheres_kernel", 47,    0, 0, 0, 128},
+    {"shadow_any_hit_kdtree_spheres_kernel", 56,  0, 0, 0, 128},
+    {"closest_hit_grid_triangles_kernel", 64,   32, 4, 0, 128},
+    {"shadow_any_hit_grid_triangles_kernel", 64, 24, 0, 0, 128},
+    {"closest_hit_grid_spheres_kernel",   53,   24, 0, 0, 128},
+    {"shadow_any_hit_grid_spheres_kernel", 56,  24, 0, 0, 128},
     {"split_kernel",                      17,    0, 0, 0, 128},
     {"end_batch_kernel",                  28,    0, 0, 0, 128},
     // the LBVH build (cuda/lbvh_gpu.cu)
@@ -45,11 +58,11 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // parity cases (cuda/parity/parity_gpu.cu)
     {"math_kernel",                       29,    0, 0, 0, 256},
     {"philox_kernel",                     18,    0, 0, 0, 256},
-    {"shape_kernel",                      44,    0, 0, 0, 256},
+    {"shape_kernel",                      42,    0, 0, 0, 256},
     {"bsdf_kernel",                       56,    0, 0, 0, 256},
     {"adaptive_kernel",                   46,    0, 0, 0, 256},
     {"trace_kernel",                      88,  272, 0, 0, 256},
-    {"sample_kernel",                    195, 2912, 0, 0, 256},
+    {"sample_kernel",                    193, 2912, 0, 0, 256},
 };
 
 inline const KernelBudget* find_kernel_budget(const std::string& name) {

@@ -16,10 +16,12 @@
 #include "io/input_error.h"
 #include "io/new_directory.h"
 #include "io/output_batch.h"
+#include "kernel/accel/trace_variants.h"
 #include "options/enum_names.h"
 #include "parity/parallel_for.h"
 #include "parity/parity_suite.h"
 #include "scene/scene_loader.h"
+#include "scene/scene_types.h"
 
 namespace tracer {
 
@@ -201,21 +203,55 @@ uint64_t directory_bytes(const fs::path& dir) {
   return bytes;
 }
 
+void write_scene_bundle(const Scene& scene, const std::string& scene_file, const fs::path& path) {
+  write_bundle(path.string(),
+               encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, scene_file)));
+}
+
+// Rows "golden NAME@ACCEL@stream" for the stream schedule's trace variants
+// (kernel/accel/trace_variants.h) that no golden runs with its own structure: the first golden
+// whose scene runs the variant with another structure, rendered with that one. Every structure
+// renders every golden's image (tests/determinism/test_accel_identity.cpp), so the expected
+// hash is the golden's.
+std::string trace_variant_rows(const GoldenManifest& manifest, const fs::path& out, std::vector<bool>& covered) {
+  std::string rows;
+  for (const GoldenEntry& e : manifest.entries) {
+    if (e.image != GoldenImage::Render) continue;
+    const Scene golden = load_scene(manifest.scene_path(e), RenderOverrides{e.options});
+    for (const std::string& accel : accepted_scene_types().at("accel")) {
+      RenderOverrides options{e.options};
+      options.accel = parse_enum<AccelKind>(accel, "accel");
+      RenderSettings settings = golden.settings;
+      settings.accel = *options.accel;
+      const int v = trace_variant_of(golden.features, settings);
+      if (v < 0 || covered[v]) continue;
+      covered[v] = true;
+      const std::string name = e.name + "@" + accel, file = "bundles/" + name + ".bundle";
+      write_scene_bundle(load_scene(manifest.scene_path(e), options), e.scene, out / file);
+      rows += "golden " + name + "@stream " + file + " " + e.hash + " stream:4099\n";
+    }
+  }
+  return rows;
+}
+
 void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::path& out) {
   const GoldenManifest manifest = read_manifest(cmd.root);
   fs::create_directories(out / "bundles");
   fs::create_directories(out / "parity");
   std::string list = "# kind name file expected: the golden's pixel hash, or - (the parity case holds its own)\n";
+  std::vector<bool> traced(kTraceVariantCount);
   for (const GoldenEntry& e : manifest.entries) {
     const Scene scene = load_scene(manifest.scene_path(e), RenderOverrides{e.options});
     const std::string file = "bundles/" + e.name + ".bundle";
-    write_bundle((out / file).string(),
-                 encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, e.scene)));
+    write_scene_bundle(scene, e.scene, out / file);
     const std::string kind = e.image == GoldenImage::SampleMap ? "sample-map " : "golden ";
     list += kind + e.name + " " + file + " " + e.hash + " megakernel\n";
     // The stream schedule at a width that splits pixels between batches: the same image.
     list += kind + e.name + "@stream " + file + " " + e.hash + " stream:4099\n";
+    const int v = trace_variant_of(scene.features, scene.settings);
+    if (v >= 0) traced[v] = true;
   }
+  list += trace_variant_rows(manifest, out, traced);
   const unsigned threads = cmd.threads > 0 ? static_cast<unsigned>(cmd.threads) : default_thread_count();
   for (const ParityCase& c : parity_cases(manifest)) {
     const parity::ParityAnswers cpu = parity::reference_parity_answers(c, threads);

@@ -1,10 +1,11 @@
 // `tracer info SCENE`: what the loader made of a scene: shapes and primitives, materials and
 // lights, the feature mask, a glTF file's contents and what it left out, the acceleration
-// structure and how long loading took.
+// structure and how long loading took, and the trace variant the GPU's stream schedule runs.
 #include <chrono>
 #include <cstdio>
 
 #include "cli/command_registry.h"
+#include "kernel/accel/trace_variants.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
@@ -34,16 +35,18 @@ static int run_info(const std::string& scene_path) {
                                                                    : std::to_string(accel.nodes) + " nodes";
   std::printf("\naccel      %s: %s over %zu bounded primitives, %zu unbounded; load and build %.3f s\n",
               accel.name.c_str(), size.c_str(), scene.bounded.size(), scene.unbounded.size(), seconds);
+  std::printf("gpu trace  %s (the stream schedule's closest-hit and shadow kernels, docs/cuda.md)\n",
+              trace_variant_name(trace_variant_of(scene.features, scene.settings)));
   return 0;
 }
 
 }  // namespace
 
-const RegisterCommand kInfoCommand({"", "info", "primitive counts, feature mask and acceleration stats",
-                                    [](CLI::App& app) {
-                                      auto scene = std::make_shared<std::string>();
-                                      app.add_option("scene", *scene, "scene file (JSON), or a glTF 2.0 file")->required();
-                                      return [scene] { return run_info(*scene); };
-                                    }});
+const RegisterCommand kInfoCommand(
+    {"", "info", "primitive counts, feature mask and acceleration stats", [](CLI::App& app) {
+       auto scene = std::make_shared<std::string>();
+       app.add_option("scene", *scene, "scene file (JSON), or a glTF 2.0 file")->required();
+       return [scene] { return run_info(*scene); };
+     }});
 
 }  // namespace tracer

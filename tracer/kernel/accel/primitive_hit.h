@@ -2,6 +2,7 @@
 // (kernel/accel/trace.h dispatches the queries). The closest hit is the minimum of
 // (t, primitive id) compared lexicographically (DESIGN.md rule 4).
 #pragma once
+#include "kernel/accel/trace_code.h"
 #include "kernel/geom/plane.h"
 #include "kernel/geom/quad.h"
 #include "kernel/geom/sphere.h"
@@ -22,26 +23,32 @@ TRACER_HD void keep_if_closer(Hit& best, float t, uint32_t id, float b1, float b
   if (t < best.t || id < best.prim) best = {t, id, b1, b2};
 }
 
-// Tests one primitive; keeps it when (t, id) is below the best so far.
+// Tests one primitive; keeps it when (t, id) is below the best so far. A shape or triangle
+// test outside kCode (trace_code.h) is never in the scenes that run it.
+template <uint32_t kCode = kTraceAll>
 TRACER_HD void test_primitive(const SceneView& scene, uint32_t id, const Ray& ray, const RayShear& shear, Hit& best) {
   const Primitive& p = scene.primitives[id];
   float t = 0.0f, b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;
   bool hit = false;
   switch (p.kind) {  // a shape compiled out of this variant (features.h) is never in its scenes
     case ShapeKind::Sphere:
-      if (compiled_in(kFeatureSphere)) hit = intersect_sphere(p.a, p.radius, ray, 0.0f, best.t, t);
+      if (compiled_in(kFeatureSphere) && traces<kCode>(kFeatureSphere))
+        hit = intersect_sphere(p.a, p.radius, ray, 0.0f, best.t, t);
       break;
     case ShapeKind::Plane:
-      if (compiled_in(kFeaturePlane)) hit = intersect_plane(p.a, p.b, ray, 0.0f, best.t, t);
+      if (compiled_in(kFeaturePlane) && traces<kCode>(kFeaturePlane))
+        hit = intersect_plane(p.a, p.b, ray, 0.0f, best.t, t);
       break;
     case ShapeKind::Triangle:
-      if (!compiled_in(kFeatureTriangle)) break;
-      hit = scene.settings.triangle_test == TriangleTest::Watertight
+      if (!compiled_in(kFeatureTriangle) || !traces<kCode>(kFeatureTriangle)) break;
+      hit = traces<kCode>(kTraceWatertight) &&
+                    (!traces<kCode>(kTraceMollerTrumbore) || scene.settings.triangle_test == TriangleTest::Watertight)
                 ? intersect_triangle(p.a, p.b, p.c, ray, shear, 0.0f, best.t, t, b0, b1, b2)
                 : intersect_triangle_moller_trumbore(p.a, p.b, p.c, ray, 0.0f, best.t, t, b0, b1, b2);
       break;
     case ShapeKind::Quad:
-      if (compiled_in(kFeatureQuad)) hit = intersect_quad(p.a, p.b, p.c, ray, 0.0f, best.t, t, b1, b2);
+      if (compiled_in(kFeatureQuad) && traces<kCode>(kFeatureQuad))
+        hit = intersect_quad(p.a, p.b, p.c, ray, 0.0f, best.t, t, b1, b2);
       break;
   }
   if (hit) keep_if_closer(best, t, id, b1, b2);

@@ -15,17 +15,20 @@
 
 namespace tracer {
 
-// Tests the planes, then the bounded primitives through the scene's structure.
+// Tests the planes, then the bounded primitives through the scene's structure. A structure
+// outside kCode (trace_code.h) is never the one of the scenes that run it.
+template <uint32_t kCode = kTraceAll>
 TRACER_HD void trace_into(const SceneView& scene, const Ray& ray, Hit& best, bool any) {
   const RayShear shear = make_ray_shear(ray.dir);
   for (uint32_t i = 0; i < scene.unbounded_count; ++i) {
-    test_primitive(scene, scene.unbounded[i], ray, shear, best);
+    test_primitive<kCode>(scene, scene.unbounded[i], ray, shear, best);
     if (any && best.prim != kNoHit) return;
   }
   switch (scene.settings.accel) {
     case AccelKind::None:
+      if (!traces<kCode>(kTraceBruteForce)) break;
       for (uint32_t i = 0; i < scene.bounded_count; ++i) {
-        test_primitive(scene, scene.bounded[i], ray, shear, best);
+        test_primitive<kCode>(scene, scene.bounded[i], ray, shear, best);
         if (any && best.prim != kNoHit) return;
       }
       break;
@@ -36,31 +39,42 @@ TRACER_HD void trace_into(const SceneView& scene, const Ray& ray, Hit& best, boo
         break;
       }
 #endif
-      traverse_bvh(scene, ray, shear, best, any);
+      [[fallthrough]];
+    case AccelKind::Lbvh:
+      if (traces<kCode>(kTraceBvh)) traverse_bvh<kCode>(scene, ray, shear, best, any);
       break;
-    case AccelKind::Lbvh: traverse_bvh(scene, ray, shear, best, any); break;
     case AccelKind::Kdtree:
-    case AccelKind::KdtreeMedian: traverse_kdtree(scene, ray, shear, best, any); break;
-    case AccelKind::Grid: traverse_grid(scene, ray, shear, best, any); break;
+    case AccelKind::KdtreeMedian:
+      if (traces<kCode>(kTraceKdtree)) traverse_kdtree<kCode>(scene, ray, shear, best, any);
+      break;
+    case AccelKind::Grid:
+      if (traces<kCode>(kTraceGrid)) traverse_grid<kCode>(scene, ray, shear, best, any);
+      break;
   }
 }
 
-// Closest hit with t in (0, tmax].
-TRACER_HD Hit trace_closest(const SceneView& scene, const Ray& ray, float tmax) {
-  TRACER_TRACE_HOOK(ray, tmax, false);
-  Hit best = {tmax, kNoHit, 0.0f, 0.0f};
-  trace_into(scene, ray, best, false);
+// The one query. With `any`, whether anything lies at t in (0, tmax), the shadow ray's
+// question: t <= the float just below tmax, so a hit exactly at the light does not occlude;
+// the answer is a property of the set of primitives, so the order of visits cannot change it.
+// Without, the closest hit with t in (0, tmax].
+template <uint32_t kCode = kTraceAll>
+TRACER_HD Hit trace_query(const SceneView& scene, const Ray& ray, float tmax, bool any) {
+  TRACER_TRACE_HOOK(ray, tmax, any);
+  Hit best = {any ? float_of_bits(bits_of(tmax) - 1u) : tmax, kNoHit, 0.0f, 0.0f};
+  trace_into<kCode>(scene, ray, best, any);
   return best;
 }
 
-// Any hit with t in (0, tmax): the shadow-ray query. The answer is a property of the set
-// of primitives, so the order of visits cannot change it.
+// Closest hit with t in (0, tmax].
+template <uint32_t kCode = kTraceAll>
+TRACER_HD Hit trace_closest(const SceneView& scene, const Ray& ray, float tmax) {
+  return trace_query<kCode>(scene, ray, tmax, false);
+}
+
+// Any hit with t in (0, tmax).
+template <uint32_t kCode = kTraceAll>
 TRACER_HD bool trace_any(const SceneView& scene, const Ray& ray, float tmax) {
-  TRACER_TRACE_HOOK(ray, tmax, true);
-  // Ask for t <= the float just below tmax: a hit exactly at the light does not occlude.
-  Hit probe = {float_of_bits(bits_of(tmax) - 1u), kNoHit, 0.0f, 0.0f};
-  trace_into(scene, ray, probe, true);
-  return probe.prim != kNoHit;
+  return trace_query<kCode>(scene, ray, tmax, true).prim != kNoHit;
 }
 
 }  // namespace tracer

@@ -6,6 +6,7 @@
 
 namespace tracer {
 
+template <uint32_t kCode = kTraceAll>
 TRACER_HD void traverse_bvh(const SceneView& scene, const Ray& ray, const RayShear& shear, Hit& best, bool any) {
   if (scene.bvh_node_count == 0) return;
   const RayBoxQuery q = make_ray_box_query(ray);
@@ -18,7 +19,7 @@ TRACER_HD void traverse_bvh(const SceneView& scene, const Ray& ray, const RayShe
     const BvhNode& n = scene.bvh_nodes[node];
     if (n.count > 0) {
       for (uint32_t i = 0; i < n.count; ++i) {
-        test_primitive(scene, scene.bounded[n.first + i], ray, shear, best);
+        test_primitive<kCode>(scene, scene.bounded[n.first + i], ray, shear, best);
         if (any && best.prim != kNoHit) return;
       }
     } else {

@@ -9,6 +9,7 @@
 
 namespace tracer {
 
+template <uint32_t kCode = kTraceAll>
 TRACER_HD void traverse_kdtree(const SceneView& scene, const Ray& ray, const RayShear& shear, Hit& best, bool any) {
   if (scene.kd_node_count == 0) return;
   const Vec3 inv = inverse_direction(ray.dir);
@@ -42,7 +43,7 @@ TRACER_HD void traverse_kdtree(const SceneView& scene, const Ray& ray, const Ray
     }
     const KdNode& leaf = scene.kd_nodes[node];
     for (uint32_t i = 0; i < leaf.b; ++i) {
-      test_primitive(scene, scene.kd_prims[leaf.a + i], ray, shear, best);
+      test_primitive<kCode>(scene, scene.kd_prims[leaf.a + i], ray, shear, best);
       if (any && best.prim != kNoHit) return;
     }
     if (best.t < t_hi - scene.kd_pad) return;

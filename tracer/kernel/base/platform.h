@@ -91,7 +91,7 @@ TRACER_HD T max_of(T a, T b) {
   return a > b ? a : b;
 }
 #if defined(TRACER_DEVICE_SEMANTICS)
-// The host build that emulates the GPU (preset device-semantics, docs/cuda.md): float
+// Kernel code that emulates the GPU on the host (tracer-gpu-device-semantics, docs/cuda.md): float
 // min/max follow PTX min.f32/max.f32 (PTX ISA, "Floating Point Instructions: min, max"):
 // a NaN operand yields the other one, and -0 orders below +0. Where nvcc emits min/max for
 // min_of/max_of, this is what the GPU computes; rendering every golden with it shows that

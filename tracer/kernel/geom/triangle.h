@@ -3,6 +3,8 @@
 // functions are evaluated so that a point on a shared edge is inside both triangles;
 // edge functions that come out exactly 0 are recomputed in double, as the paper does.
 #pragma once
+#include <glm/gtc/type_ptr.hpp>
+
 #include "kernel/base/vec3.h"
 
 namespace tracer {
@@ -31,12 +33,19 @@ TRACER_HD RayShear make_ray_shear(Vec3 d) {
 }
 
 // On a hit writes t and the barycentric weights (b0, b1, b2) of v0, v1, v2.
-TRACER_HD bool intersect_triangle(Vec3 v0, Vec3 v1, Vec3 v2, const Ray& ray, const RayShear& s, float tmin, float tmax,
-                                  float& t_out, float& b0, float& b1, float& b2) {
-  const Vec3 a = v0 - ray.origin, b = v1 - ray.origin, c = v2 - ray.origin;
-  const float ax = a[s.kx] - s.sx * a[s.kz], ay = a[s.ky] - s.sy * a[s.kz];
-  const float bx = b[s.kx] - s.sx * b[s.kz], by = b[s.ky] - s.sy * b[s.kz];
-  const float cx = c[s.kx] - s.sx * c[s.kz], cy = c[s.ky] - s.sy * c[s.kz];
+TRACER_HD bool intersect_triangle(const Vec3& v0, const Vec3& v1, const Vec3& v2, const Ray& ray, const RayShear& s,
+                                  float tmin, float tmax, float& t_out, float& b0, float& b1, float& b2) {
+  // The vertices relative to the origin, permuted to (kx, ky, kz). A vertex is read through
+  // its address (GLM's value_ptr), so the GPU loads the three components it needs instead of
+  // holding all nine to select from: the trace kernels then fit 64 registers (docs/cuda.md).
+  const float ox = ray.origin[s.kx], oy = ray.origin[s.ky], oz = ray.origin[s.kz];
+  const float *p0 = glm::value_ptr(v0), *p1 = glm::value_ptr(v1), *p2 = glm::value_ptr(v2);
+  const Vec3 a = {p0[s.kx] - ox, p0[s.ky] - oy, p0[s.kz] - oz};
+  const Vec3 b = {p1[s.kx] - ox, p1[s.ky] - oy, p1[s.kz] - oz};
+  const Vec3 c = {p2[s.kx] - ox, p2[s.ky] - oy, p2[s.kz] - oz};
+  const float ax = a.x - s.sx * a.z, ay = a.y - s.sy * a.z;
+  const float bx = b.x - s.sx * b.z, by = b.y - s.sy * b.z;
+  const float cx = c.x - s.sx * c.z, cy = c.y - s.sy * c.z;
   float u = cx * by - cy * bx;
   float v = ax * cy - ay * cx;
   float w = bx * ay - by * ax;
@@ -48,7 +57,7 @@ TRACER_HD bool intersect_triangle(Vec3 v0, Vec3 v1, Vec3 v2, const Ray& ray, con
   if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f)) return false;
   const float det = u + v + w;
   if (det == 0.0f) return false;
-  const float az = s.sz * a[s.kz], bz = s.sz * b[s.kz], cz = s.sz * c[s.kz];
+  const float az = s.sz * a.z, bz = s.sz * b.z, cz = s.sz * c.z;
   const float t_scaled = u * az + v * bz + w * cz;
   const float t = t_scaled / det;
   if (!(t > tmin && t <= tmax)) return false;
@@ -59,7 +68,7 @@ TRACER_HD bool intersect_triangle(Vec3 v0, Vec3 v1, Vec3 v2, const Ray& ray, con
   const float max_zt = max_of(abs_of(az), max_of(abs_of(bz), abs_of(cz)));
   const float max_xt = max_of(abs_of(ax), max_of(abs_of(bx), abs_of(cx)));
   const float max_yt = max_of(abs_of(ay), max_of(abs_of(by), abs_of(cy)));
-  const float max_z = max_of(abs_of(a[s.kz]), max_of(abs_of(b[s.kz]), abs_of(c[s.kz])));
+  const float max_z = max_of(abs_of(a.z), max_of(abs_of(b.z), abs_of(c.z)));
   const float delta_z = error_gamma(3) * max_zt;
   const float delta_x = error_gamma(5) * (max_xt + 2.0f * abs_of(s.sx) * max_z);
   const float delta_y = error_gamma(5) * (max_yt + 2.0f * abs_of(s.sy) * max_z);

@@ -57,9 +57,10 @@ TRACER_HD ShadowQuery shadow_query(const SceneView& scene, const Surface& s, con
   return {ray, kInfinity, ls.prim, {0.0f, 0.0f, 0.0f}};
 }
 
+template <uint32_t kCode = kTraceAll>
 TRACER_HD bool light_visible(const SceneView& scene, const ShadowQuery& q) {
-  if (q.emitter == kNoHit) return !trace_any(scene, q.ray, q.tmax);
-  return trace_closest(scene, q.ray, q.tmax).prim == q.emitter;
+  // One traversal, any hit or the closest: the kernel holds one copy of it.
+  return trace_query<kCode>(scene, q.ray, q.tmax, q.emitter == kNoHit).prim == q.emitter;
 }
 
 // One vertex of the path: `hit` is the closest hit of st.ray. Adds the emission it sees,

@@ -155,9 +155,17 @@ TRACER_HD void stream_shade(const SceneView& scene, const StreamStates& st, uint
   }
 }
 
+// The closest-hit stage for state i, with the trace code kCode (kernel/accel/trace_code.h).
+template <uint32_t kCode = kTraceAll>
+TRACER_HD void stream_closest(const SceneView& scene, const StreamStates& st, uint32_t i) {
+  st.hit[i] = trace_closest<kCode>(scene, {st.origin[i], st.dir[i]}, kInfinity);
+}
+
+// The shadow stage for state i, with the trace code kCode.
+template <uint32_t kCode = kTraceAll>
 TRACER_HD void stream_shadow(const SceneView& scene, const StreamStates& st, uint32_t i) {
   const ShadowQuery q = {{st.shadow_origin[i], st.shadow_dir[i]}, st.shadow_tmax[i], st.shadow_emitter[i], {}};
-  if (!light_visible(scene, q)) return;
+  if (!light_visible<kCode>(scene, q)) return;
   if (scene.settings.integrator == IntegratorKind::Whitted)
     whitted_add_light(scene, st.vertex[i]);
   else
@@ -169,7 +177,7 @@ TRACER_HD void stream_stage(const SceneView& scene, StreamStage stage, const Str
                             RayCounts& counts) {
   switch (stage) {
     case StreamStage::Generate: stream_generate(scene, st, i, counts); break;
-    case StreamStage::Closest: st.hit[i] = trace_closest(scene, {st.origin[i], st.dir[i]}, kInfinity); break;
+    case StreamStage::Closest: stream_closest(scene, st, i); break;
     case StreamStage::Shade: stream_shade(scene, st, i, counts); break;
     case StreamStage::Shadow: stream_shadow(scene, st, i); break;
   }

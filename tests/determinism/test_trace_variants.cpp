@@ -1,0 +1,82 @@
+// The GPU stream schedule's trace variants (kernel/accel/trace_variants.h): each is the trace
+// code compiled with only one structure's traversal and one set of shapes, and runs only the
+// scenes whose needs it holds. Here, on the CPU, the same template code: each variant answers
+// every probe ray of every shipped scene it runs, under every structure it holds, exactly as
+// the full code does; and a scene runs on the variant the table says.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "kernel/accel/trace.h"
+#include "kernel/accel/trace_variants.h"
+#include "options/enum_names.h"
+#include "probe_rays.h"
+#include "scene/scene_loader.h"
+#include "scene/scene_types.h"
+#include "test_util.h"
+
+namespace tracer {
+namespace {
+
+// Each variant's two queries, instantiated with its code.
+struct VariantQueries {
+  Hit (*closest)(const SceneView&, const Ray&, float);
+  bool (*any)(const SceneView&, const Ray&, float);
+};
+#define TRACER_VARIANT_QUERIES(name, code) {trace_closest<code>, trace_any<code>},
+constexpr VariantQueries kQueries[] = {TRACER_TRACE_VARIANTS(TRACER_VARIANT_QUERIES)};
+#undef TRACER_VARIANT_QUERIES
+
+TEST(TraceVariants, EachVariantAnswersAsTheFullCodeInEveryShippedSceneItRuns) {
+  int scenes_run[kTraceVariantCount] = {};
+  for (const auto& scene_path : test::shipped_scenes())
+    for (const std::string& accel : accepted_scene_types().at("accel")) {
+      RenderOverrides ov;
+      ov.accel = parse_enum<AccelKind>(accel, "accel");
+      const Scene scene = load_scene(scene_path.string(), ov);
+      const int v = trace_variant_of(scene.features, scene.settings);
+      if (v < 0) continue;
+      ++scenes_run[v];
+      SceneView view = scene.view();
+      view.wide_node_count = 0;  // the GPU walks bvh's binary tree
+      for (const Ray& ray : test::probe_rays(scene)) {
+        const Hit full = trace_closest(view, ray, kInfinity), h = kQueries[v].closest(view, ray, kInfinity);
+        ASSERT_EQ(std::memcmp(&h, &full, sizeof(Hit)), 0)
+            << scene_path << " with " << accel << ", variant " << kTraceVariants[v].name << ": prim " << h.prim << " t "
+            << h.t << " against prim " << full.prim << " t " << full.t;
+        const float tmax = full.prim != kNoHit ? full.t * 1.5f : 1e3f;
+        ASSERT_EQ(kQueries[v].any(view, ray, tmax), trace_any(view, ray, tmax))
+            << scene_path << " with " << accel << ", variant " << kTraceVariants[v].name;
+        // The any-hit query at exactly the closest hit's t: a hit at tmax does not occlude.
+        if (full.prim != kNoHit) ASSERT_EQ(kQueries[v].any(view, ray, full.t), trace_any(view, ray, full.t));
+      }
+    }
+  for (int v = 0; v < kTraceVariantCount; ++v)
+    EXPECT_GT(scenes_run[v], 0) << kTraceVariants[v].name << " runs no shipped scene: nothing checks it";
+}
+
+TEST(TraceVariants, ASceneRunsOnTheFirstVariantThatHoldsItsNeeds) {
+  const auto name = [](uint32_t features, AccelKind accel, TriangleTest test = TriangleTest::Watertight) {
+    return std::string(trace_variant_name(trace_variant_for(trace_code_needed(features, accel, test))));
+  };
+  const uint32_t lambert = kFeatureLambert | kFeatureEmissive | kFeatureTextures;  // not shapes: no trace code
+  EXPECT_EQ(name(kFeatureTriangle | lambert, AccelKind::Bvh), "bvh_triangles");
+  EXPECT_EQ(name(kFeatureTriangle | kFeaturePlane, AccelKind::Lbvh), "bvh_triangles");
+  EXPECT_EQ(name(kFeatureSphere | kFeaturePlane, AccelKind::Bvh), "bvh_spheres");
+  EXPECT_EQ(name(kFeatureTriangle, AccelKind::KdtreeMedian), "kdtree_triangles");
+  EXPECT_EQ(name(kFeatureSphere, AccelKind::Kdtree), "kdtree_spheres");
+  EXPECT_EQ(name(kFeatureTriangle, AccelKind::Grid), "grid_triangles");
+  EXPECT_EQ(name(kFeatureSphere | lambert, AccelKind::Grid), "grid_spheres");
+  // a plane alone needs no structure's shapes: the first row of its structure holds it
+  EXPECT_EQ(name(kFeaturePlane, AccelKind::Grid), "grid_triangles");
+  // what no row holds runs on the full code
+  EXPECT_EQ(name(kFeatureTriangle, AccelKind::Bvh, TriangleTest::MollerTrumbore), "full");
+  EXPECT_EQ(name(kFeatureTriangle | kFeatureSphere, AccelKind::Bvh), "full");
+  EXPECT_EQ(name(kFeatureQuad, AccelKind::Bvh), "full");
+  EXPECT_EQ(name(kFeatureSphere, AccelKind::None), "full");
+  // a sphere scene's triangle test setting is no need of it
+  EXPECT_EQ(name(kFeatureSphere, AccelKind::Bvh, TriangleTest::MollerTrumbore), "bvh_spheres");
+}
+
+}  // namespace
+}  // namespace tracer

@@ -1,0 +1,60 @@
+// The code a trace query is compiled with (the idea of Cycles' kernel feature bits, applied to
+// traversal): which shape tests, which triangle tests and which structures' traversals. Every
+// query takes it as a template argument that defaults to all of it, which is what the CPU
+// compiles (a CPU does not pay for code a scene never runs). A GPU pays for it in registers:
+// the stream schedule's closest-hit and any-hit kernels come in variants compiled with only
+// what a kind of scene needs (cuda/trace_variants.h), each a few dozen registers smaller.
+// A variant runs only scenes whose needs it holds, so its answers are those of the full code.
+#pragma once
+#include "kernel/base/features.h"
+#include "kernel/scene/render_settings.h"
+
+namespace tracer {
+
+enum TraceCodeBit : uint32_t {
+  // The shape tests: the shapes' FeatureBit values (kFeatureSphere, Plane, Triangle, Quad).
+  kTraceShapes = kFeatureSphere | kFeaturePlane | kFeatureTriangle | kFeatureQuad,
+  // The triangle tests (RenderSettings::triangle_test).
+  kTraceWatertight = 1u << 16,
+  kTraceMollerTrumbore = 1u << 17,
+  // The traversals (RenderSettings::accel): bvh and lbvh share one, as do the two kd-trees.
+  kTraceBruteForce = 1u << 20,
+  kTraceBvh = 1u << 21,
+  kTraceKdtree = 1u << 22,
+  kTraceGrid = 1u << 23,
+};
+
+constexpr uint32_t kTraceAll = 0xffffffffu;
+
+// The traversal bit of a structure.
+TRACER_HD constexpr uint32_t trace_accel_bit(AccelKind accel) {
+  switch (accel) {
+    case AccelKind::None: return kTraceBruteForce;
+    case AccelKind::Bvh:
+    case AccelKind::Lbvh: return kTraceBvh;
+    case AccelKind::Kdtree:
+    case AccelKind::KdtreeMedian: return kTraceKdtree;
+    case AccelKind::Grid: return kTraceGrid;
+  }
+  return kTraceAll;
+}
+
+// The triangle-test bit of a setting.
+TRACER_HD constexpr uint32_t trace_triangle_test_bit(TriangleTest test) {
+  return test == TriangleTest::Watertight ? kTraceWatertight : kTraceMollerTrumbore;
+}
+
+// Whether code `bits` is in kCode: a query compiled without it skips it.
+template <uint32_t kCode>
+TRACER_HD constexpr bool traces(uint32_t bits) {
+  return (kCode & bits) != 0;
+}
+
+// The code that traces a scene: the shapes it holds (its FeatureBit mask), the triangle test
+// its settings name when it holds triangles, and its structure's traversal.
+TRACER_HD constexpr uint32_t trace_code_needed(uint32_t features, AccelKind accel, TriangleTest test) {
+  const uint32_t shapes = features & kTraceShapes;
+  return shapes | ((shapes & kFeatureTriangle) != 0 ? trace_triangle_test_bit(test) : 0u) | trace_accel_bit(accel);
+}
+
+}  // namespace tracer

@@ -1,0 +1,46 @@
+// The trace code of the GPU stream schedule's closest-hit and any-hit kernels (cuda/gpu_stream.cu
+// compiles a pair per row, named closest_hit_NAME_kernel and shadow_any_hit_NAME_kernel): a
+// scene runs on the first row whose code holds what it needs (trace_code_needed), else on
+// closest_hit_stage_kernel and shadow_any_hit_stage_kernel, which hold all of it. Each row
+// is a structure with one set of shapes: what ptxas' report shows to fit in 64 registers
+// without spills (docs/cuda.md, "Resource budgets"); the planes are in every row, at the
+// cost of no register.
+#pragma once
+#include "kernel/accel/trace_code.h"
+
+namespace tracer {
+
+#define TRACER_TRACE_VARIANTS(X)                                                          \
+  X(bvh_triangles, kTraceBvh | kFeatureTriangle | kFeaturePlane | kTraceWatertight)       \
+  X(bvh_spheres, kTraceBvh | kFeatureSphere | kFeaturePlane)                              \
+  X(kdtree_triangles, kTraceKdtree | kFeatureTriangle | kFeaturePlane | kTraceWatertight) \
+  X(kdtree_spheres, kTraceKdtree | kFeatureSphere | kFeaturePlane)                        \
+  X(grid_triangles, kTraceGrid | kFeatureTriangle | kFeaturePlane | kTraceWatertight)     \
+  X(grid_spheres, kTraceGrid | kFeatureSphere | kFeaturePlane)
+
+struct TraceVariant {
+  const char* name;
+  uint32_t code;  // TraceCodeBit mask
+};
+
+#define TRACER_TRACE_VARIANT_ROW(name, code) {#name, code},
+inline constexpr TraceVariant kTraceVariants[] = {TRACER_TRACE_VARIANTS(TRACER_TRACE_VARIANT_ROW)};
+#undef TRACER_TRACE_VARIANT_ROW
+inline constexpr int kTraceVariantCount = sizeof kTraceVariants / sizeof kTraceVariants[0];
+
+// The index of the first variant whose code holds `needed`, or -1: the full code.
+inline int trace_variant_for(uint32_t needed) {
+  for (int v = 0; v < kTraceVariantCount; ++v)
+    if ((kTraceVariants[v].code & needed) == needed) return v;
+  return -1;
+}
+
+// The variant a scene runs on: `features` is its FeatureBit mask.
+inline int trace_variant_of(uint32_t features, const RenderSettings& rs) {
+  return trace_variant_for(trace_code_needed(features, rs.accel, rs.triangle_test));
+}
+
+// The variant's name, "full" for -1.
+inline const char* trace_variant_name(int variant) { return variant < 0 ? "full" : kTraceVariants[variant].name; }
+
+}  // namespace tracer
