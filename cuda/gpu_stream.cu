@@ -1,4 +1,5 @@
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include "cuda_device.h"
@@ -222,6 +223,15 @@ std::string describe_kernel(const char* name, Kernel kernel, const cudaDevicePro
 }
 
 }  // namespace
+
+void launch_trace_stage(const SceneView& device_view, StreamStage stage, const StreamStates& states,
+                        const uint32_t* queue, size_t size) {
+  if (stage != StreamStage::Closest && stage != StreamStage::Shadow)
+    throw std::logic_error("launch_trace_stage: not a trace stage");
+  if (size == 0) return;
+  stage_kernel_for(stage, device_view)<<<blocks_for(size), kBlock>>>(device_view, states, queue, size, nullptr);
+  TRACER_CUDA_CHECK(cudaGetLastError());
+}
 
 std::string describe_stream_kernels() {
   const cudaDeviceProp prop = select_cuda_device();

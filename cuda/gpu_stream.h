@@ -12,6 +12,12 @@
 
 namespace tracer {
 
+// The closest-hit (StreamStage::Closest) or shadow stage (StreamStage::Shadow) with the
+// scene's trace variant over the states queue[0, size) of `states` (device memory), on the
+// default stream: what `tracer bench rays --device cuda` times (trace_rays_cuda.cu).
+void launch_trace_stage(const SceneView& device_view, StreamStage stage, const StreamStates& states,
+                        const uint32_t* queue, size_t size);
+
 class GpuStream {
  public:
   // Device bytes of the states and queues for at most `total` samples in flight at a time.

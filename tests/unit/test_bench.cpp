@@ -101,6 +101,30 @@ TEST(Bench, RaysGivesEveryStructureTheSameHits) {
   std::filesystem::remove_all(dir);
 }
 
+// With --device cuda each structure gets a GPU row whose hits must equal the CPU's; on a
+// machine or build without a GPU the command says so before any work, exit 2.
+TEST(Bench, RaysOnTheGpuMatchTheCpuOrSayWhyNot) {
+  const auto dir = test::temp_dir("bench-rays-cuda");
+  const std::string obj = (dir / "cubes.obj").string();
+  std::string output;
+  ASSERT_EQ(test::run_tracer("generate cubes --triangles 600 -o " + obj, &output), 0) << output;
+  const int code =
+      test::run_tracer("bench rays " + obj + " --rays 4096 --threads 1 --accel bvh,grid --device cuda", &output);
+  if (code == 0) {
+    for (const char* row : {"\nbvh cuda ", "\ngrid cuda "}) {
+      const size_t at = output.find(row);
+      ASSERT_NE(at, std::string::npos) << row << " in " << output;
+      EXPECT_NE(output.substr(at, output.find('\n', at + 1) - at).find(" same (trace "), std::string::npos) << output;
+    }
+  } else {
+    EXPECT_EQ(code, 2) << output;
+    EXPECT_NE(output.find("CUDA"), std::string::npos) << output;
+    EXPECT_EQ(output.find("\nbvh "), std::string::npos) << "a row before the refusal:\n" << output;
+  }
+  EXPECT_EQ(test::run_tracer("bench rays " + obj + " --device metal", &output), 2);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Bench, GeneratedMeshesAreDeterministic) {
   const auto dir = test::temp_dir("generate");
   for (const char* kind : {"terrain", "sphere", "boxes", "cubes", "mixed"}) {

@@ -3,9 +3,11 @@
 // for 2^22 incoherent rays (origins uniform in the scene's box, directions uniform on the
 // sphere), and any-hit throughput for shadow rays from the primary hits to a point above
 // the scene; on all cores. A checksum of the hits shows every structure found the same.
-// Every build time and rate is the median of --repeats runs (Embree's too).
-#include <nlohmann/json.hpp>
+// Every build time and rate is the median of --repeats runs (Embree's too). With --device
+// cuda, each structure has a second row: the same rays traced by the GPU stream schedule's
+// closest-hit and shadow kernels (render/trace_cuda.h), kernel time only.
 #include <omp.h>
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -22,12 +24,15 @@
 #include "cli/commands.h"
 #include "io/input_error.h"
 #include "io/json_reader.h"
+#include "kernel/accel/trace_variants.h"
 #include "kernel/base/philox.h"
 #include "kernel/geom/ray_offset.h"
 #include "kernel/shading/sampling.h"
 #include "kernel/shading/surface.h"
 #include "options/enum_names.h"
 #include "render/cpu_kernel.h"
+#include "render/render_cuda.h"
+#include "render/trace_cuda.h"
 #include "scene/camera_setup.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_types.h"
@@ -35,7 +40,7 @@
 namespace tracer {
 
 struct BenchRaysCommand {
-  std::string scene, accel;
+  std::string scene, accel, device = "cpu";
   uint32_t incoherent = 1u << 22, grid_resolution = 0, repeats = 3;
   int threads = 0;
 };
@@ -119,6 +124,16 @@ double build_seconds(const Scene& scene, uint32_t repeats) {
 
 uint64_t mix(uint64_t h, uint64_t v) { return (h ^ v) * 0x100000001B3ull; }
 
+// The hits' checksum: every structure and device must give the same.
+uint64_t checksum(const std::vector<Hit>& primary, const std::vector<Hit>& incoherent,
+                  const std::vector<uint8_t>& occluded) {
+  uint64_t sum = 0;
+  for (const auto* hits : {&primary, &incoherent})
+    for (const Hit& h : *hits) sum = mix(mix(sum, h.prim), bits_of(h.t));
+  for (uint8_t o : occluded) sum = mix(sum, o);
+  return sum;
+}
+
 }  // namespace
 
 static int run_bench_rays(const BenchRaysCommand& cmd) {
@@ -130,10 +145,12 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     std::stringstream list(cmd.accel);
     for (std::string a; std::getline(list, a, ',');) accels.push_back(parse_enum<AccelKind>(a, "--accel " + cmd.accel));
   }
+  // A GPU that is missing is said before any work (DeviceUnavailable, exit 2).
+  const std::string gpu = cmd.device == "cuda" ? "; GPU " + cuda_device_description() : "";
   std::printf(
-      "tracer bench rays %s: %d threads; primary: %ux%u pinhole, incoherent: %u rays, shadow: any-hit; "
+      "tracer bench rays %s: %d threads%s; primary: %ux%u pinhole, incoherent: %u rays, shadow: any-hit; "
       "medians of %u runs\n",
-      cmd.scene.c_str(), threads, kCamera, kCamera, cmd.incoherent, cmd.repeats);
+      cmd.scene.c_str(), threads, gpu.c_str(), kCamera, kCamera, cmd.incoherent, cmd.repeats);
   std::printf("%-14s %10s %10s %10s %10s | %10s %10s %10s | %s\n", "accel", "build s", "MB", "B/prim", "nodes",
               "primary", "incoherent", "shadow", "hits (checksum)");
   RaySets rays;
@@ -170,10 +187,7 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     rates[2] = throughput(rays.shadow.size(), threads, cmd.repeats, [&](size_t i, size_t n) {
       kernel.trace_any(view, &rays.shadow[i], &rays.shadow_tmax[i], n, &occluded[i]);
     });
-    uint64_t sum = 0;
-    for (const auto* hits : {&primary, &incoherent})
-      for (const Hit& h : *hits) sum = mix(mix(sum, h.prim), bits_of(h.t));
-    for (uint8_t o : occluded) sum = mix(sum, o);
+    const uint64_t sum = checksum(primary, incoherent, occluded);
     if (reference == 0) reference = sum;
     if (build > 0)
       std::printf("%-14s %10.3f %10.1f %10.1f %10zu | ", label.c_str(), build, scene.report.accel_bytes / 1048576.0,
@@ -185,6 +199,23 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
                 static_cast<unsigned long long>(sum), sum == reference ? "same" : "DIFFERENT");
     if (sum != reference)
       throw std::runtime_error(label + ": hits differ from " + enum_name(accels[0]) + "'s (DESIGN.md rule 4)");
+  };
+  // The GPU's row for a structure: its trace variant's kernels (kernel/accel/trace_variants.h).
+  const auto measure_cuda = [&](AccelKind accel, const Scene& scene) {
+    CudaRayTracer device(scene);
+    std::vector<Hit> primary, incoherent;
+    std::vector<uint8_t> occluded;
+    const double seconds[3] = {device.closest(rays.primary, primary, cmd.repeats),
+                               device.closest(rays.incoherent, incoherent, cmd.repeats),
+                               device.any(rays.shadow, rays.shadow_tmax, occluded, cmd.repeats)};
+    const uint64_t sum = checksum(primary, incoherent, occluded);
+    const std::string label = std::string(enum_name(accel)) + " cuda";
+    std::printf("%-14s %10s %10s %10s %10s | %10.2f %10.2f %10.2f | %016llx %s (trace %s)\n", label.c_str(), "", "", "",
+                "", rays.primary.size() / seconds[0] / 1e6, rays.incoherent.size() / seconds[1] / 1e6,
+                rays.shadow.size() / seconds[2] / 1e6, static_cast<unsigned long long>(sum),
+                sum == reference ? "same" : "DIFFERENT",
+                trace_variant_name(trace_variant_of(scene.features, scene.settings)));
+    if (sum != reference) throw std::runtime_error(label + ": hits differ from the CPU's (DESIGN.md rule 1)");
   };
   for (const AccelKind accel : accels) {
     const Scene scene = load_bench_scene(cmd.scene, accel, cmd.grid_resolution);
@@ -198,6 +229,7 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     kernel_name = cpu_kernel_name(kernel);
     const double build = build_seconds(scene, cmd.repeats);
     measure(enum_name(accel), scene, view, kernel, accel == AccelKind::Bvh ? bvh_rates : rates, build);
+    if (cmd.device == "cuda") measure_cuda(accel, scene);
     if (accel != AccelKind::Bvh) continue;
     bvh_build = build;
     for (const CpuKernelVariant* other : cpu_kernels_per_isa(view.features))  // the instruction sets compared
@@ -206,8 +238,9 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     binary.wide_node_count = 0;
     measure("bvh (binary)", scene, binary, kernel, rates, 0);
   }
-  std::printf("(CPU kernel %s; a row \"bvh ISA\" runs the same tree with that instruction set's kernel)\n",
-              kernel_name.c_str());
+  std::printf("(CPU kernel %s; a row \"bvh ISA\" runs the same tree with that instruction set's kernel%s)\n",
+              kernel_name.c_str(),
+              cmd.device == "cuda" ? "; a row \"ACCEL cuda\" the GPU's stream kernels, kernel time only" : "");
   if (embree_available()) {
     const Scene scene = load_bench_scene(cmd.scene, AccelKind::None, 0);
     const EmbreeRow e = embree_bench(scene, rays.primary, rays.incoherent, rays.shadow, rays.shadow_tmax,
@@ -238,6 +271,8 @@ const RegisterCommand kBenchRaysCommand(
            ->check(count_in(1, 1024));
        app.add_option("--repeats", cmd->repeats, "builds and runs per measurement; the median is kept (default 3)")
            ->check(count_in(1, 100));
+       app.add_option("--device", cmd->device, "cpu, or cuda: a GPU row per structure beside the CPU's (default cpu)")
+           ->check(CLI::IsMember({"cpu", "cuda"}));
        add_threads_option(app, cmd->threads);
        return [cmd] { return run_bench_rays(*cmd); };
      }});

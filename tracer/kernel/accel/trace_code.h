@@ -11,19 +11,17 @@
 
 namespace tracer {
 
-enum TraceCodeBit : uint32_t {
-  // The shape tests: the shapes' FeatureBit values (kFeatureSphere, Plane, Triangle, Quad).
-  kTraceShapes = kFeatureSphere | kFeaturePlane | kFeatureTriangle | kFeatureQuad,
-  // The triangle tests (RenderSettings::triangle_test).
-  kTraceWatertight = 1u << 16,
-  kTraceMollerTrumbore = 1u << 17,
-  // The traversals (RenderSettings::accel): bvh and lbvh share one, as do the two kd-trees.
-  kTraceBruteForce = 1u << 20,
-  kTraceBvh = 1u << 21,
-  kTraceKdtree = 1u << 22,
-  kTraceGrid = 1u << 23,
-};
-
+// The bits of a trace code. The shape tests are the shapes' FeatureBit values
+// (kFeatureSphere, Plane, Triangle, Quad).
+constexpr uint32_t kTraceShapes = kFeatureSphere | kFeaturePlane | kFeatureTriangle | kFeatureQuad;
+// The triangle tests (RenderSettings::triangle_test).
+constexpr uint32_t kTraceWatertight = 1u << 16;
+constexpr uint32_t kTraceMollerTrumbore = 1u << 17;
+// The traversals (RenderSettings::accel): bvh and lbvh share one, as do the two kd-trees.
+constexpr uint32_t kTraceBruteForce = 1u << 20;
+constexpr uint32_t kTraceBvh = 1u << 21;
+constexpr uint32_t kTraceKdtree = 1u << 22;
+constexpr uint32_t kTraceGrid = 1u << 23;
 constexpr uint32_t kTraceAll = 0xffffffffu;
 
 // The traversal bit of a structure.

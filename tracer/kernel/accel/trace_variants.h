@@ -20,7 +20,7 @@ namespace tracer {
 
 struct TraceVariant {
   const char* name;
-  uint32_t code;  // TraceCodeBit mask
+  uint32_t code;  // a trace code (trace_code.h)
 };
 
 #define TRACER_TRACE_VARIANT_ROW(name, code) {#name, code},

@@ -1,0 +1,98 @@
+// `tracer bench rays --device cuda` (render/trace_cuda.h): rays traced by the stream
+// schedule's closest-hit and shadow kernels over the scene's arrays on the device. The shadow
+// stage is the path tracer's: it adds a ray's contribution to its radiance when the light is
+// visible, so each ray carries a contribution of 1 and its radiance says whether it was occluded.
+#include <algorithm>
+
+#include "cuda_device.h"
+#include "cuda_event.h"
+#include "device_scene.h"
+#include "gpu_stream.h"
+#include "render/trace_cuda.h"
+
+namespace tracer {
+
+namespace {
+
+SceneView path_view(const Scene& scene) {
+  SceneView view = scene.view();
+  view.settings.integrator = IntegratorKind::Path;  // the shadow stage adds to the radiance
+  return view;
+}
+
+std::vector<uint32_t> identity_queue(size_t n) {
+  std::vector<uint32_t> queue(n);
+  for (size_t i = 0; i < n; ++i) queue[i] = static_cast<uint32_t>(i);
+  return queue;
+}
+
+// The median time of `repeats` launches of `stage` over queue[0, n), each after `reset`.
+template <class Reset>
+double median_time(const SceneView& view, StreamStage stage, const StreamStates& st, const uint32_t* queue, size_t n,
+                   uint32_t repeats, Reset&& reset) {
+  std::vector<double> times;
+  for (uint32_t r = 0; r < repeats; ++r) {
+    reset();
+    const CudaEvent start, stop;
+    TRACER_CUDA_CHECK(cudaEventRecord(start.event));
+    launch_trace_stage(view, stage, st, queue, n);
+    TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
+    times.push_back(seconds_between(start, stop));
+  }
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+}  // namespace
+
+struct CudaRayTracer::Device {
+  cudaDeviceProp prop;  // selected before the scene is uploaded
+  DeviceScene scene;
+  explicit Device(const Scene& s) : prop(select_cuda_device()), scene(s, path_view(s)) {}
+};
+
+CudaRayTracer::CudaRayTracer(const Scene& scene) : device_(std::make_unique<Device>(scene)) {}
+
+CudaRayTracer::~CudaRayTracer() = default;
+
+double CudaRayTracer::closest(const std::vector<Ray>& rays, std::vector<Hit>& hits, uint32_t repeats) {
+  const size_t n = rays.size();
+  std::vector<Vec3> origin(n), dir(n);
+  for (size_t i = 0; i < n; ++i) origin[i] = rays[i].origin, dir[i] = rays[i].dir;
+  const DeviceBuffer<Vec3> d_origin(origin), d_dir(dir);
+  const DeviceBuffer<uint32_t> queue(identity_queue(n));
+  DeviceBuffer<Hit> d_hit(n);
+  StreamStates st{};
+  st.origin = d_origin.get();
+  st.dir = d_dir.get();
+  st.hit = d_hit.get();
+  const double seconds = median_time(device_->scene.view(), StreamStage::Closest, st, queue.get(), n, repeats, [] {});
+  hits = d_hit.download();
+  return seconds;
+}
+
+double CudaRayTracer::any(const std::vector<Ray>& rays, const std::vector<float>& tmax, std::vector<uint8_t>& occluded,
+                          uint32_t repeats) {
+  const size_t n = rays.size();
+  std::vector<Vec3> origin(n), dir(n);
+  for (size_t i = 0; i < n; ++i) origin[i] = rays[i].origin, dir[i] = rays[i].dir;
+  const DeviceBuffer<Vec3> d_origin(origin), d_dir(dir), contribution(std::vector<Vec3>(n, Vec3{1.0f, 0.0f, 0.0f}));
+  const DeviceBuffer<float> d_tmax(tmax);
+  const DeviceBuffer<uint32_t> emitter(std::vector<uint32_t>(n, kNoHit)), queue(identity_queue(n));
+  DeviceBuffer<Vec3> radiance(n);
+  StreamStates st{};
+  st.shadow_origin = d_origin.get();
+  st.shadow_dir = d_dir.get();
+  st.shadow_tmax = d_tmax.get();
+  st.shadow_emitter = emitter.get();
+  st.shadow_contribution = contribution.get();
+  st.radiance = radiance.get();
+  const double seconds =
+      median_time(device_->scene.view(), StreamStage::Shadow, st, queue.get(), n, repeats, [&] { radiance.zero(); });
+  const std::vector<Vec3> seen = radiance.download();
+  occluded.resize(n);
+  for (size_t i = 0; i < n; ++i) occluded[i] = seen[i].x == 0.0f ? 1 : 0;
+  return seconds;
+}
+
+}  // namespace tracer

@@ -1,0 +1,35 @@
+// Ray queries on the GPU, for `tracer bench rays --device cuda` (cuda/trace_rays_cuda.cu): the
+// scene's arrays on the device and a buffer of rays traced by the stream schedule's
+// closest-hit and shadow kernels, the scene's trace variant (kernel/accel/trace_variants.h),
+// each launch timed with CUDA events; `repeats` is at least 1. A build without nvcc links
+// render_cuda_absent.cpp, whose constructor raises DeviceUnavailable.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "kernel/accel/primitive_hit.h"
+#include "scene/scene.h"
+
+namespace tracer {
+
+class CudaRayTracer {
+ public:
+  // Uploads the scene; DeviceUnavailable when there is no usable GPU.
+  explicit CudaRayTracer(const Scene& scene);
+  ~CudaRayTracer();
+  CudaRayTracer(const CudaRayTracer&) = delete;
+  CudaRayTracer& operator=(const CudaRayTracer&) = delete;
+
+  // The closest hit of each ray (t in (0, inf)); the median kernel time of `repeats` launches, in seconds.
+  double closest(const std::vector<Ray>& rays, std::vector<Hit>& hits, uint32_t repeats);
+
+  // Whether anything lies in (0, tmax[i]) along rays[i]; the median kernel time of `repeats` launches.
+  double any(const std::vector<Ray>& rays, const std::vector<float>& tmax, std::vector<uint8_t>& occluded,
+             uint32_t repeats);
+
+ private:
+  struct Device;
+  std::unique_ptr<Device> device_;
+};
+
+}  // namespace tracer
