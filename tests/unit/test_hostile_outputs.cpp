@@ -1,0 +1,130 @@
+// Hostile input through the CLI, outputs and the GPU runner: a scene bundle is held to a
+// scene's limits, and no command's output (the runner's film included) may name one of its
+// inputs or a device (tests/unit/test_hostile_input.cpp has the rest).
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <functional>
+
+#include "bundle/scene_bundle.h"
+#include "hostile_input.h"
+#include "image/image_io.h"
+#include "scene/scene_loader.h"
+#include "test_util.h"
+
+namespace tracer {
+namespace {
+
+// A scene bundle describes a render as a scene does, and is held to the same limits: tracer-gpu
+// rendered bundles asking for max_depth 1000, a 20000-pixel film or 2^37 samples.
+TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
+  const std::string scene_path = scene_file(scene_text(R"("spp": 1)"));
+  const Scene scene = load_scene(scene_path);
+  const std::string bundle = (dir_ / "b.bundle").string();
+  const std::vector<std::pair<std::function<void(RenderSettings&)>, std::string>> cases = {
+      {[](RenderSettings& s) { s.max_depth = 1000; }, "max_depth: must be at most 64 (the depth limit)"},
+      {[](RenderSettings& s) { s.width = 20000; }, "width: must be in [1, 16384] (the film's limit)"},
+      {[](RenderSettings& s) { s.spp = 4294967295u; }, "spp: 4294967295 spp x 8 x 6 pixels is more than 2^36 samples"},
+  };
+  for (const auto& [edit, expected] : cases) {
+    SceneBundle b = make_scene_bundle(scene, scene.view(), {0, 1}, scene_path);
+    edit(b.scalars.settings);
+    write_bundle(bundle, encode_scene_bundle(b));
+    std::string output;
+    EXPECT_EQ(test::run_command("timeout 30 " + std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu",
+                                &output),
+              2)
+        << expected << "\n"
+        << output;
+    EXPECT_NE(output.find("b.bundle: the bundle's render settings: " + expected), std::string::npos) << output;
+  }
+}
+
+// compare --diff and bench converge --csv/--plot had no check: naming an input (directly,
+// through ./ or .., or through a symlink) replaced it with the difference image or the table.
+TEST_F(HostileInput, EveryCommandsOutputsNeverNameItsInputs) {
+  const Image img = test::image_from(2, 2, [](uint32_t x, uint32_t) { return Vec3{float(x), 0.5f, 0.25f}; });
+  write_image(img, (dir_ / "a.exr").string());
+  write_image(img, (dir_ / "b.exr").string());
+  const std::string a_before = test::read_file(dir_ / "a.exr");
+  fs::create_directories(dir_ / "sub");
+  fs::create_symlink(dir_ / "a.exr", dir_ / "link.exr");
+  const std::string compare = "compare " + (dir_ / "a.exr").string() + " " + (dir_ / "b.exr").string() + " --diff ";
+  for (const std::string& diff : {(dir_ / "a.exr").string(), (dir_ / "sub" / ".." / "b.exr").string(),
+                                  (dir_ / "link.exr").string(), dir_.string() + "/./a.exr"})
+    expect_refused(compare + diff, "--diff names a file this command reads");
+  EXPECT_EQ(test::read_file(dir_ / "a.exr"), a_before);
+  expect_refused(compare + (dir_ / "d.nosuchformat").string(), "--diff: no image writer");
+
+  const std::string scene = scene_file(scene_text(R"("integrator": "path", "spp": 1)"));
+  const std::string scene_before = test::read_file(scene);
+  expect_refused("bench converge " + scene + " --spp 1 --ref-spp 1 --csv " + scene,
+                 "--csv names a file this command reads");
+  expect_refused("bench converge " + scene + " --spp 1 --ref-spp 1 --ref " + (dir_ / "a.exr").string() + " --plot " +
+                     (dir_ / "link.exr").string(),
+                 "--plot names a file this command reads");
+  EXPECT_EQ(test::read_file(scene), scene_before);
+  EXPECT_EQ(test::read_file(dir_ / "a.exr"), a_before);
+
+  // merge: -o reaching a part through a symlink would have replaced the part with the image.
+  ASSERT_EQ(test::run_tracer("render " + scene + " --quiet --samples 0:1 -o " + (dir_ / "p.partial").string()), 0);
+  const std::string part_before = test::read_file(dir_ / "p.partial");
+  fs::create_symlink(dir_ / "p.partial", dir_ / "merged.exr");
+  expect_refused("merge " + (dir_ / "p.partial").string() + " -o " + (dir_ / "merged.exr").string(),
+                 "-o names a file this command reads");
+  EXPECT_EQ(test::read_file(dir_ / "p.partial"), part_before);
+
+  // slurm submit: the merge job writes -o at the end, on the cluster; it is checked before
+  // anything is submitted or written (no job directory appears).
+  const std::string submit = "slurm submit " + scene + " --parts 1 --dir " + (dir_ / "job").string() + " -o ";
+  expect_refused(submit + (dir_ / "out.nosuchformat").string(), "-o: no image writer");
+  write_image(img, (dir_ / "tex.png").string());
+  std::string text =
+      scene_text(R"("spp": 1)", R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "t"})");
+  text.replace(text.find(R"("materials": {)"), 14,
+               R"("materials": {"t": {"type": "lambert", "albedo": {"texture": "tex.png"}}, )");
+  expect_refused("slurm submit " + scene_file(text) + " --parts 1 --dir " + (dir_ / "job").string() + " -o " +
+                     (dir_ / "sub" / ".." / "tex.png").string(),
+                 "-o names a file this command reads");
+  EXPECT_FALSE(fs::exists(dir_ / "job"));
+}
+
+// The GPU runner's -o wrote its film over the bundle it rendered (directly or through a
+// symlink), and was accepted and ignored by the commands that write no film; a device named
+// by a file output (--stats /dev/null) was accepted and the render ran before the write failed.
+TEST_F(HostileInput, TheRunnersFilmAndEveryFileOutputGoThroughTheOneCheck) {
+  const std::string scene = scene_file(scene_text(R"("spp": 1)"));
+  const std::string bundle = (dir_ / "s.bundle").string();
+  ASSERT_EQ(test::run_tracer("bundle " + scene + " -o " + bundle), 0);
+  const std::string bundle_before = test::read_file(bundle);
+  fs::create_symlink(bundle, dir_ / "film-link");
+  const std::string runner = std::string("timeout 30 ") + TRACER_GPU_BINARY + " ";
+  for (const std::string& film : {bundle, (dir_ / "film-link").string(), dir_.string() + "/./s.bundle"}) {
+    std::string output;
+    EXPECT_EQ(test::run_command(runner + "render " + bundle + " --device cpu -o " + film, &output), 2) << output;
+    EXPECT_NE(output.find("-o names a file this command reads"), std::string::npos) << output;
+  }
+  EXPECT_EQ(test::read_file(bundle), bundle_before);
+  std::string output;
+  EXPECT_EQ(test::run_command(runner + "pack " + dir_.string() + " --device cpu -o " + (dir_ / "f").string(), &output),
+            2);
+  EXPECT_NE(output.find("only render writes a film"), std::string::npos) << output;
+  EXPECT_EQ(
+      test::run_command(runner + "render " + bundle + " --device cpu -o " + (dir_ / "no" / "f").string(), &output), 2);
+  EXPECT_NE(output.find("-o: output directory does not exist"), std::string::npos) << output;
+  EXPECT_EQ(test::run_command(runner + "render " + bundle + " --device cpu -o " + (dir_ / "f.film").string(), &output),
+            0)
+      << output;
+
+  // A FIFO stands in for /dev/null: the old code, run as root, replaced the device with a file.
+  ASSERT_EQ(::mkfifo((dir_ / "pipe").c_str(), 0600), 0);
+  expect_refused("render " + scene + " --stats " + (dir_ / "pipe").string() + out(),
+                 "--stats names a device, FIFO or socket");
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+  expect_refused("bundle " + scene + " -o " + (dir_ / "pipe").string(), "-o names a device, FIFO or socket");
+  expect_refused("generate cube -o " + (dir_ / "no" / "m.obj").string(), "-o: output directory does not exist");
+  expect_refused("bench converge " + scene + " --spp 1 --ref-spp 1 --csv " + dir_.string(), "--csv names a directory");
+}
+
+}  // namespace
+}  // namespace tracer
