@@ -20,6 +20,17 @@ SceneView path_view(const Scene& scene) {
   return view;
 }
 
+// The rays' origins and directions as device arrays, the layout of the stream's states.
+struct DeviceRays {
+  DeviceBuffer<Vec3> origin, dir;
+  explicit DeviceRays(const std::vector<Ray>& rays) {
+    std::vector<Vec3> o(rays.size()), d(rays.size());
+    for (size_t i = 0; i < rays.size(); ++i) o[i] = rays[i].origin, d[i] = rays[i].dir;
+    origin = DeviceBuffer<Vec3>(o);
+    dir = DeviceBuffer<Vec3>(d);
+  }
+};
+
 std::vector<uint32_t> identity_queue(size_t n) {
   std::vector<uint32_t> queue(n);
   for (size_t i = 0; i < n; ++i) queue[i] = static_cast<uint32_t>(i);
@@ -57,14 +68,12 @@ CudaRayTracer::~CudaRayTracer() = default;
 
 double CudaRayTracer::closest(const std::vector<Ray>& rays, std::vector<Hit>& hits, uint32_t repeats) {
   const size_t n = rays.size();
-  std::vector<Vec3> origin(n), dir(n);
-  for (size_t i = 0; i < n; ++i) origin[i] = rays[i].origin, dir[i] = rays[i].dir;
-  const DeviceBuffer<Vec3> d_origin(origin), d_dir(dir);
+  const DeviceRays d_rays(rays);
   const DeviceBuffer<uint32_t> queue(identity_queue(n));
   DeviceBuffer<Hit> d_hit(n);
   StreamStates st{};
-  st.origin = d_origin.get();
-  st.dir = d_dir.get();
+  st.origin = d_rays.origin.get();
+  st.dir = d_rays.dir.get();
   st.hit = d_hit.get();
   const double seconds = median_time(device_->scene.view(), StreamStage::Closest, st, queue.get(), n, repeats, [] {});
   hits = d_hit.download();
@@ -74,15 +83,14 @@ double CudaRayTracer::closest(const std::vector<Ray>& rays, std::vector<Hit>& hi
 double CudaRayTracer::any(const std::vector<Ray>& rays, const std::vector<float>& tmax, std::vector<uint8_t>& occluded,
                           uint32_t repeats) {
   const size_t n = rays.size();
-  std::vector<Vec3> origin(n), dir(n);
-  for (size_t i = 0; i < n; ++i) origin[i] = rays[i].origin, dir[i] = rays[i].dir;
-  const DeviceBuffer<Vec3> d_origin(origin), d_dir(dir), contribution(std::vector<Vec3>(n, Vec3{1.0f, 0.0f, 0.0f}));
+  const DeviceRays d_rays(rays);
+  const DeviceBuffer<Vec3> contribution(std::vector<Vec3>(n, Vec3{1.0f, 0.0f, 0.0f}));
   const DeviceBuffer<float> d_tmax(tmax);
   const DeviceBuffer<uint32_t> emitter(std::vector<uint32_t>(n, kNoHit)), queue(identity_queue(n));
   DeviceBuffer<Vec3> radiance(n);
   StreamStates st{};
-  st.shadow_origin = d_origin.get();
-  st.shadow_dir = d_dir.get();
+  st.shadow_origin = d_rays.origin.get();
+  st.shadow_dir = d_rays.dir.get();
   st.shadow_tmax = d_tmax.get();
   st.shadow_emitter = emitter.get();
   st.shadow_contribution = contribution.get();

@@ -208,29 +208,34 @@ void write_scene_bundle(const Scene& scene, const std::string& scene_file, const
                encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, scene_file)));
 }
 
+// A golden that renders an image, as loaded: its scene's FeatureBit mask and settings.
+struct LoadedGolden {
+  const GoldenEntry* entry;
+  uint32_t features;
+  RenderSettings settings;
+};
+
 // Rows "golden NAME@ACCEL@stream" for the stream schedule's trace variants
 // (kernel/accel/trace_variants.h) that no golden runs with its own structure: the first golden
 // whose scene runs the variant with another structure, rendered with that one. Every structure
 // renders every golden's image (tests/determinism/test_accel_identity.cpp), so the expected
 // hash is the golden's.
-std::string trace_variant_rows(const GoldenManifest& manifest, const fs::path& out, std::vector<bool>& covered) {
+std::string trace_variant_rows(const GoldenManifest& manifest, const std::vector<LoadedGolden>& goldens,
+                               const fs::path& out, std::vector<bool>& covered) {
   std::string rows;
-  for (const GoldenEntry& e : manifest.entries) {
-    if (e.image != GoldenImage::Render) continue;
-    const Scene golden = load_scene(manifest.scene_path(e), RenderOverrides{e.options});
+  for (const LoadedGolden& g : goldens)
     for (const std::string& accel : accepted_scene_types().at("accel")) {
-      RenderOverrides options{e.options};
-      options.accel = parse_enum<AccelKind>(accel, "accel");
-      RenderSettings settings = golden.settings;
-      settings.accel = *options.accel;
-      const int v = trace_variant_of(golden.features, settings);
+      RenderSettings settings = g.settings;
+      settings.accel = parse_enum<AccelKind>(accel, "accel");
+      const int v = trace_variant_of(g.features, settings);
       if (v < 0 || covered[v]) continue;
       covered[v] = true;
-      const std::string name = e.name + "@" + accel, file = "bundles/" + name + ".bundle";
-      write_scene_bundle(load_scene(manifest.scene_path(e), options), e.scene, out / file);
-      rows += "golden " + name + "@stream " + file + " " + e.hash + " stream:4099\n";
+      RenderOverrides options{g.entry->options};
+      options.accel = settings.accel;
+      const std::string name = g.entry->name + "@" + accel, file = "bundles/" + name + ".bundle";
+      write_scene_bundle(load_scene(manifest.scene_path(*g.entry), options), g.entry->scene, out / file);
+      rows += "golden " + name + "@stream " + file + " " + g.entry->hash + " stream:4099\n";
     }
-  }
   return rows;
 }
 
@@ -240,6 +245,7 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
   fs::create_directories(out / "parity");
   std::string list = "# kind name file expected: the golden's pixel hash, or - (the parity case holds its own)\n";
   std::vector<bool> traced(kTraceVariantCount);
+  std::vector<LoadedGolden> renders;
   for (const GoldenEntry& e : manifest.entries) {
     const Scene scene = load_scene(manifest.scene_path(e), RenderOverrides{e.options});
     const std::string file = "bundles/" + e.name + ".bundle";
@@ -250,8 +256,9 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
     list += kind + e.name + "@stream " + file + " " + e.hash + " stream:4099\n";
     const int v = trace_variant_of(scene.features, scene.settings);
     if (v >= 0) traced[v] = true;
+    if (e.image == GoldenImage::Render) renders.push_back({&e, scene.features, scene.settings});
   }
-  list += trace_variant_rows(manifest, out, traced);
+  list += trace_variant_rows(manifest, renders, out, traced);
   const unsigned threads = cmd.threads > 0 ? static_cast<unsigned>(cmd.threads) : default_thread_count();
   for (const ParityCase& c : parity_cases(manifest)) {
     const parity::ParityAnswers cpu = parity::reference_parity_answers(c, threads);
