@@ -162,15 +162,15 @@ GpuAdaptiveFilm render_adaptive_on_gpu(const SceneArrays& arrays, const SceneVie
   const RenderSettings& rs = view.settings;
   const size_t pixels = static_cast<size_t>(rs.width) * rs.height;
   const bool stream = rs.schedule == Schedule::Stream;
-  r.run.device_bytes = scene_array_bytes(arrays) + pixels * (2 * sizeof(FilmSum) + sizeof(uint32_t) + 2) +
-                       kCounterCount * sizeof(unsigned long long) +
-                       GpuStream::device_bytes(rs, GpuBackend::stream_samples(rs, pixels));
+  r.run.device_bytes =
+      DeviceScene::bytes(arrays, device_bvh_of(view)) + pixels * (2 * sizeof(FilmSum) + sizeof(uint32_t) + 2) +
+      kCounterCount * sizeof(unsigned long long) + GpuStream::device_bytes(rs, GpuBackend::stream_samples(rs, pixels));
   require_free_device_memory(r.run.device_bytes,
                              stream ? label + " (--stream-width " + std::to_string(rs.stream_width) + ")" : label,
                              r.run.device);
 
   auto t = std::chrono::steady_clock::now();
-  const DeviceScene device_scene(arrays, view);
+  const DeviceScene device_scene(arrays, view, device_bvh_of(view));
   GpuBackend backend(device_scene.view(), pixels);
   TRACER_CUDA_CHECK(cudaDeviceSynchronize());
   r.run.upload_seconds = seconds_since(t);

@@ -20,6 +20,7 @@ struct GpuAdaptiveFilm {
   GpuRun run;          // the transfers of the running lists and keep flags count as downloads
 };
 
+// bvh's 8-wide tree goes to the device where `view` counts one (device_scene.h).
 // DeviceUnavailable (no device; too little free memory, naming `label`) or
 // std::runtime_error naming the failing CUDA call.
 GpuAdaptiveFilm render_adaptive_on_gpu(const SceneArrays& arrays, const SceneView& view, const std::string& label);

@@ -74,9 +74,9 @@ std::string describe_render_kernel(const char* name, RenderKernel kernel, const 
   std::snprintf(text, sizeof text,
                 "%s: %d registers, %zu bytes of local memory (stack and spills) per thread; 16x16 blocks: "
                 "%d resident per SM of %d threads = %.0f %% occupancy, limited by %s (%d SMs, %d registers per SM)",
-                name, attr.numRegs, static_cast<size_t>(attr.localSizeBytes), blocks,
-                prop.maxThreadsPerMultiProcessor, 100.0 * blocks * kRenderThreads / prop.maxThreadsPerMultiProcessor,
-                limit, prop.multiProcessorCount, prop.regsPerMultiprocessor);
+                name, attr.numRegs, static_cast<size_t>(attr.localSizeBytes), blocks, prop.maxThreadsPerMultiProcessor,
+                100.0 * blocks * kRenderThreads / prop.maxThreadsPerMultiProcessor, limit, prop.multiProcessorCount,
+                prop.regsPerMultiprocessor);
   return text;
 }
 
@@ -102,14 +102,14 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
   const size_t pixels = static_cast<size_t>(rs.width) * rs.height;
   const bool stream = rs.schedule == Schedule::Stream;
   const uint64_t samples = static_cast<uint64_t>(pixels) * (range.end - range.begin);
-  r.run.device_bytes = scene_array_bytes(arrays) + pixels * sizeof(FilmSum) +
+  r.run.device_bytes = DeviceScene::bytes(arrays, device_bvh_of(view)) + pixels * sizeof(FilmSum) +
                        kCounterCount * sizeof(unsigned long long) + (stream ? GpuStream::device_bytes(rs, samples) : 0);
   require_free_device_memory(r.run.device_bytes,
                              stream ? label + " (--stream-width " + std::to_string(rs.stream_width) + ")" : label,
                              r.run.device);
 
   auto t = std::chrono::steady_clock::now();
-  const DeviceScene device_scene(arrays, view);
+  const DeviceScene device_scene(arrays, view, device_bvh_of(view));
   DeviceBuffer<FilmSum> film(pixels);
   DeviceBuffer<unsigned long long> counters(kCounterCount);
   counters.zero();

@@ -31,6 +31,7 @@ std::string describe_render_kernel();
 // The same for the stream schedule's four stage kernels (gpu_stream.cu), a line each.
 std::string describe_stream_kernels();
 
+// bvh's 8-wide tree goes to the device where `view` counts one (device_scene.h).
 // DeviceUnavailable (no device; too little free memory, naming `label`) or
 // std::runtime_error naming the failing CUDA call.
 GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, SampleRange range,

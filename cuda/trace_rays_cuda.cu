@@ -8,6 +8,7 @@
 #include "cuda_event.h"
 #include "device_scene.h"
 #include "gpu_stream.h"
+#include "kernel/accel/trace_variants.h"
 #include "render/trace_cuda.h"
 
 namespace tracer {
@@ -59,10 +60,16 @@ double median_time(const SceneView& view, StreamStage stage, const StreamStates&
 struct CudaRayTracer::Device {
   cudaDeviceProp prop;  // selected before the scene is uploaded
   DeviceScene scene;
-  explicit Device(const Scene& s) : prop(select_cuda_device()), scene(s, path_view(s)) {}
+  Device(const Scene& s, bool wide_bvh)
+      : prop(select_cuda_device()), scene(s, path_view(s), wide_bvh ? DeviceBvh::Wide : DeviceBvh::Binary) {}
 };
 
-CudaRayTracer::CudaRayTracer(const Scene& scene) : device_(std::make_unique<Device>(scene)) {}
+CudaRayTracer::CudaRayTracer(const Scene& scene, bool wide_bvh) : device_(std::make_unique<Device>(scene, wide_bvh)) {}
+
+const char* CudaRayTracer::variant() const {
+  const SceneView& view = device_->scene.view();
+  return trace_variant_name(trace_variant_of(view.features, view.settings, view.wide_node_count != 0));
+}
 
 CudaRayTracer::~CudaRayTracer() = default;
 

@@ -292,7 +292,8 @@ int run_pack(const Options& o) {
         const SceneView view = view_for(b, ro);
         const std::string trace =
             view.settings.schedule == Schedule::Stream
-                ? std::string(", trace ") + trace_variant_name(trace_variant_of(view.features, view.settings))
+                ? std::string(", trace ") +
+                      trace_variant_name(trace_variant_of(view.features, view.settings, view.wide_node_count != 0))
                 : "";
         char text[160];
         std::snprintf(text, sizeof text, "%.6f s, %.1f Mrays/s%s", r.best_seconds, mrays_per_second(r), trace.c_str());

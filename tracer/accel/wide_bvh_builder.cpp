@@ -1,5 +1,7 @@
 #include "accel/wide_bvh_builder.h"
 
+#include <algorithm>
+
 #include "accel/bounds.h"
 #include "accel/huge_pages.h"
 #include "kernel/scene/scene_view.h"  // kNoHit
@@ -26,8 +28,9 @@ class WideBvhCollapser {
     leaves_.reserve(binary_.size() - interior);
     subtree_items_.resize(binary_.size());
     for (size_t i = binary_.size(); i-- > 0;)  // children follow their parent in the array
-      subtree_items_[i] = binary_[i].count != 0 ? binary_[i].count
-                                                : subtree_items_[binary_[i].first] + subtree_items_[binary_[i].first + 1];
+      subtree_items_[i] = binary_[i].count != 0
+                              ? binary_[i].count
+                              : subtree_items_[binary_[i].first] + subtree_items_[binary_[i].first + 1];
     const BvhNode& root = binary_[0];
     if (root.count > 0) {  // a single leaf: one node with one child
       wide_.nodes.push_back(empty_node());
@@ -147,6 +150,22 @@ WideBvh collapse_to_wide_bvh(std::span<const BvhNode> binary, std::span<const ui
                              std::span<const Primitive> primitives) {
   if (binary.empty()) return {};
   return WideBvhCollapser(binary, leaf_order, primitives).collapse();
+}
+
+uint32_t wide_bvh_stack_need(std::span<const WideBvhNode> nodes) {
+  // A node's children follow it in the array (collapse_node makes a parent before its subtrees).
+  std::vector<uint32_t> need(nodes.size(), 0);
+  for (size_t i = nodes.size(); i-- > 0;) {
+    const WideBvhNode& n = nodes[i];
+    uint32_t children = 0, deepest = 0;
+    for (int c = 0; c < kWideBvhWidth; ++c) {
+      if (n.lo[0][c] > n.hi[0][c]) continue;  // an unused slot
+      ++children;
+      if (n.leaf_blocks[c] == 0) deepest = std::max(deepest, need[n.child[c]]);
+    }
+    need[i] = (children > 0 ? children - 1 : 0) + deepest;
+  }
+  return nodes.empty() ? 0 : need[0];
 }
 
 }  // namespace tracer

@@ -24,4 +24,9 @@ struct WideBvh {
 WideBvh collapse_to_wide_bvh(std::span<const BvhNode> binary, std::span<const uint32_t> leaf_order,
                              std::span<const Primitive> primitives);
 
+// The most entries a traversal's stack holds at once on this tree (kernel/accel/traverse_wide_bvh.h):
+// a node pushes at most one entry per child but the one it visits next, so the deepest need
+// is the largest sum of (children - 1) over the interior nodes of one root-to-leaf path.
+uint32_t wide_bvh_stack_need(std::span<const WideBvhNode> nodes);
+
 }  // namespace tracer

@@ -38,6 +38,9 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // the trace variants' stages (kernel/accel/trace_variants.h), held to 64 registers
     {"closest_hit_bvh_triangles_kernel",  64,  272, 0, 0, 128},
     {"shadow_any_hit_bvh_triangles_kernel", 64, 272, 0, 0, 128},
+    // the 8-wide tree: its 64-entry stack, the binary walk's for a deeper tree; 16 bytes of spill stores
+    {"closest_hit_wide_bvh_triangles_kernel", 64, 1104, 76, 0, 128},
+    {"shadow_any_hit_wide_bvh_triangles_kernel", 64, 1120, 0, 0, 128},
     {"closest_hit_bvh_spheres_kernel",    50,  272, 0, 0, 128},
     {"shadow_any_hit_bvh_spheres_kernel", 56,  272, 0, 0, 128},
     {"closest_hit_kdtree_triangles_kernel", 64,  0, 0, 0, 128},

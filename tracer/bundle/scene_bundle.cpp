@@ -15,10 +15,9 @@ SceneView without_pointers(SceneView view) {
 }  // namespace
 
 SceneBundle make_scene_bundle(const SceneArrays& arrays, const SceneView& view, SampleRange range,
-                              const std::string& source) {
-  // The 8-wide BVH is the host's layout of bvh_nodes; a bundle's reader walks the binary
-  // tree (the same hits), so the bundle leaves it out and stays about half the size.
+                              const std::string& source, bool keep_wide_tree) {
   SceneBundle bundle{arrays, without_pointers(view), range, source};
+  if (keep_wide_tree) return bundle;
   bundle.arrays.wide_nodes.clear();
   bundle.arrays.triangle_blocks.clear();
   bundle.scalars.wide_node_count = 0;

@@ -26,8 +26,11 @@ struct SceneBundle {
   }
 };
 
+// The bundle leaves bvh's 8-wide tree out (its reader walks the binary tree, the same hits,
+// and the bundle is about half the size) unless `keep_wide_tree`: a device that reads it then
+// walks the wide tree (cuda/device_scene.h).
 SceneBundle make_scene_bundle(const SceneArrays& arrays, const SceneView& view, SampleRange range,
-                              const std::string& source);
+                              const std::string& source, bool keep_wide_tree = false);
 BundleFile encode_scene_bundle(const SceneBundle& bundle);
 // InputError naming `path`: a missing section, another build's layout, an empty or
 // oversized image, a sample range outside [0, spp).

@@ -17,6 +17,7 @@
 
 #include "accel/acceleration.h"
 #include "accel/bounds.h"
+#include "accel/wide_bvh_builder.h"
 #include "bench/bench_common.h"
 #include "bench/embree_bench.h"
 #include "bench/mesh_generators.h"
@@ -24,7 +25,7 @@
 #include "cli/commands.h"
 #include "io/input_error.h"
 #include "io/json_reader.h"
-#include "kernel/accel/trace_variants.h"
+#include "kernel/accel/traverse_wide_bvh.h"
 #include "kernel/base/philox.h"
 #include "kernel/geom/ray_offset.h"
 #include "kernel/shading/sampling.h"
@@ -200,21 +201,20 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     if (sum != reference)
       throw std::runtime_error(label + ": hits differ from " + enum_name(accels[0]) + "'s (DESIGN.md rule 4)");
   };
-  // The GPU's row for a structure: its trace variant's kernels (kernel/accel/trace_variants.h).
-  const auto measure_cuda = [&](AccelKind accel, const Scene& scene) {
-    CudaRayTracer device(scene);
+  // The GPU's row for a structure: its trace variant's kernels (kernel/accel/trace_variants.h);
+  // `wide_bvh`: bvh's 8-wide tree on the device.
+  const auto measure_cuda = [&](const std::string& label, const Scene& scene, bool wide_bvh) {
+    CudaRayTracer device(scene, wide_bvh);
     std::vector<Hit> primary, incoherent;
     std::vector<uint8_t> occluded;
     const double seconds[3] = {device.closest(rays.primary, primary, cmd.repeats),
                                device.closest(rays.incoherent, incoherent, cmd.repeats),
                                device.any(rays.shadow, rays.shadow_tmax, occluded, cmd.repeats)};
     const uint64_t sum = checksum(primary, incoherent, occluded);
-    const std::string label = std::string(enum_name(accel)) + " cuda";
     std::printf("%-14s %10s %10s %10s %10s | %10.2f %10.2f %10.2f | %016llx %s (trace %s)\n", label.c_str(), "", "", "",
                 "", rays.primary.size() / seconds[0] / 1e6, rays.incoherent.size() / seconds[1] / 1e6,
                 rays.shadow.size() / seconds[2] / 1e6, static_cast<unsigned long long>(sum),
-                sum == reference ? "same" : "DIFFERENT",
-                trace_variant_name(trace_variant_of(scene.features, scene.settings)));
+                sum == reference ? "same" : "DIFFERENT", device.variant());
     if (sum != reference) throw std::runtime_error(label + ": hits differ from the CPU's (DESIGN.md rule 1)");
   };
   for (const AccelKind accel : accels) {
@@ -229,8 +229,13 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     kernel_name = cpu_kernel_name(kernel);
     const double build = build_seconds(scene, cmd.repeats);
     measure(enum_name(accel), scene, view, kernel, accel == AccelKind::Bvh ? bvh_rates : rates, build);
-    if (cmd.device == "cuda") measure_cuda(accel, scene);
+    if (cmd.device == "cuda") measure_cuda(std::string(enum_name(accel)) + " cuda", scene, false);
     if (accel != AccelKind::Bvh) continue;
+    if (cmd.device == "cuda") {
+      measure_cuda("bvh8 cuda", scene, true);
+      std::printf("(bvh8 cuda: the 8-wide tree needs %u stack entries, the variant holds %d)\n",
+                  wide_bvh_stack_need(scene.wide_nodes), kWideVariantStackSize);
+    }
     bvh_build = build;
     for (const CpuKernelVariant* other : cpu_kernels_per_isa(view.features))  // the instruction sets compared
       if (other != &kernel) measure(std::string("bvh ") + other->isa, scene, view, *other, rates, 0);
@@ -240,7 +245,10 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
   }
   std::printf("(CPU kernel %s; a row \"bvh ISA\" runs the same tree with that instruction set's kernel%s)\n",
               kernel_name.c_str(),
-              cmd.device == "cuda" ? "; a row \"ACCEL cuda\" the GPU's stream kernels, kernel time only" : "");
+              cmd.device == "cuda"
+                  ? "; a row \"ACCEL cuda\" the GPU's stream kernels, kernel time only, on bvh's binary tree; "
+                    "\"bvh8 cuda\" on its 8-wide tree"
+                  : "");
   if (embree_available()) {
     const Scene scene = load_bench_scene(cmd.scene, AccelKind::None, 0);
     const EmbreeRow e = embree_bench(scene, rays.primary, rays.incoherent, rays.shadow, rays.shadow_tmax,

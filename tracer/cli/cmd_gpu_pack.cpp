@@ -203,9 +203,10 @@ uint64_t directory_bytes(const fs::path& dir) {
   return bytes;
 }
 
-void write_scene_bundle(const Scene& scene, const std::string& scene_file, const fs::path& path) {
-  write_bundle(path.string(),
-               encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, scene_file)));
+void write_scene_bundle(const Scene& scene, const std::string& scene_file, const fs::path& path,
+                        bool keep_wide_tree = false) {
+  write_bundle(path.string(), encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, scene.settings.spp},
+                                                                    scene_file, keep_wide_tree)));
 }
 
 // A golden that renders an image, as loaded: its scene's FeatureBit mask and settings.
@@ -217,23 +218,27 @@ struct LoadedGolden {
 
 // Rows "golden NAME@ACCEL@stream" for the stream schedule's trace variants
 // (kernel/accel/trace_variants.h) that no golden runs with its own structure: the first golden
-// whose scene runs the variant with another structure, rendered with that one. Every structure
+// whose scene runs the variant with another structure, rendered with that one; ACCEL "bvh8" is
+// bvh with its 8-wide tree kept in the bundle, which the device then walks. Every structure
 // renders every golden's image (tests/determinism/test_accel_identity.cpp), so the expected
 // hash is the golden's.
 std::string trace_variant_rows(const GoldenManifest& manifest, const std::vector<LoadedGolden>& goldens,
                                const fs::path& out, std::vector<bool>& covered) {
+  std::vector<std::string> accels = accepted_scene_types().at("accel");
+  accels.push_back("bvh8");
   std::string rows;
   for (const LoadedGolden& g : goldens)
-    for (const std::string& accel : accepted_scene_types().at("accel")) {
+    for (const std::string& accel : accels) {
+      const bool wide_tree = accel == "bvh8";
       RenderSettings settings = g.settings;
-      settings.accel = parse_enum<AccelKind>(accel, "accel");
-      const int v = trace_variant_of(g.features, settings);
+      settings.accel = wide_tree ? AccelKind::Bvh : parse_enum<AccelKind>(accel, "accel");
+      const int v = trace_variant_of(g.features, settings, wide_tree);
       if (v < 0 || covered[v]) continue;
       covered[v] = true;
       RenderOverrides options{g.entry->options};
       options.accel = settings.accel;
       const std::string name = g.entry->name + "@" + accel, file = "bundles/" + name + ".bundle";
-      write_scene_bundle(load_scene(manifest.scene_path(*g.entry), options), g.entry->scene, out / file);
+      write_scene_bundle(load_scene(manifest.scene_path(*g.entry), options), g.entry->scene, out / file, wide_tree);
       rows += "golden " + name + "@stream " + file + " " + g.entry->hash + " stream:4099\n";
     }
   return rows;

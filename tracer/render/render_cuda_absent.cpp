@@ -22,9 +22,11 @@ Image render_cuda(const Scene&, RenderStats&, CudaRunInfo&) { no_cuda(); }
 
 struct CudaRayTracer::Device {};
 
-CudaRayTracer::CudaRayTracer(const Scene&) { no_cuda(); }
+CudaRayTracer::CudaRayTracer(const Scene&, bool) { no_cuda(); }
 
 CudaRayTracer::~CudaRayTracer() = default;
+
+const char* CudaRayTracer::variant() const { no_cuda(); }
 
 double CudaRayTracer::closest(const std::vector<Ray>&, std::vector<Hit>&, uint32_t) { no_cuda(); }
 

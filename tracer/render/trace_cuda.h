@@ -1,7 +1,8 @@
 // Ray queries on the GPU, for `tracer bench rays --device cuda` (cuda/trace_rays_cuda.cu): the
 // scene's arrays on the device and a buffer of rays traced by the stream schedule's
 // closest-hit and shadow kernels, the scene's trace variant (kernel/accel/trace_variants.h),
-// each launch timed with CUDA events; `repeats` is at least 1. A build without nvcc links
+// each launch timed with CUDA events; `repeats` is at least 1. With `wide_bvh`, a bvh scene's
+// 8-wide tree goes to the device too and its rays run on the wide_bvh_triangles variant. A build without nvcc links
 // render_cuda_absent.cpp, whose constructor raises DeviceUnavailable.
 #pragma once
 #include <memory>
@@ -15,13 +16,16 @@ namespace tracer {
 class CudaRayTracer {
  public:
   // Uploads the scene; DeviceUnavailable when there is no usable GPU.
-  explicit CudaRayTracer(const Scene& scene);
+  explicit CudaRayTracer(const Scene& scene, bool wide_bvh = false);
   ~CudaRayTracer();
   CudaRayTracer(const CudaRayTracer&) = delete;
   CudaRayTracer& operator=(const CudaRayTracer&) = delete;
 
   // The closest hit of each ray (t in (0, inf)); the median kernel time of `repeats` launches, in seconds.
   double closest(const std::vector<Ray>& rays, std::vector<Hit>& hits, uint32_t repeats);
+
+  // The trace variant the rays run on (kernel/accel/trace_variants.h).
+  const char* variant() const;
 
   // Whether anything lies in (0, tmax[i]) along rays[i]; the median kernel time of `repeats` launches.
   double any(const std::vector<Ray>& rays, const std::vector<float>& tmax, std::vector<uint8_t>& occluded,

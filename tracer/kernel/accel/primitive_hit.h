@@ -41,8 +41,7 @@ TRACER_HD void test_primitive(const SceneView& scene, uint32_t id, const Ray& ra
       break;
     case ShapeKind::Triangle:
       if (!compiled_in(kFeatureTriangle) || !traces<kCode>(kFeatureTriangle)) break;
-      hit = traces<kCode>(kTraceWatertight) &&
-                    (!traces<kCode>(kTraceMollerTrumbore) || scene.settings.triangle_test == TriangleTest::Watertight)
+      hit = tests_watertight<kCode>(scene.settings.triangle_test)
                 ? intersect_triangle(p.a, p.b, p.c, ray, shear, 0.0f, best.t, t, b0, b1, b2)
                 : intersect_triangle_moller_trumbore(p.a, p.b, p.c, ray, 0.0f, best.t, t, b0, b1, b2);
       break;

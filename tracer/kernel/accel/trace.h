@@ -33,12 +33,10 @@ TRACER_HD void trace_into(const SceneView& scene, const Ray& ray, Hit& best, boo
       }
       break;
     case AccelKind::Bvh:
-#if !defined(__CUDA_ARCH__)  // the GPU walks the binary tree until a GPU run shows the wide one is faster there
-      if (scene.wide_node_count != 0) {
-        traverse_wide_bvh(scene, ray, shear, best, any);
+      if (walks_wide_bvh<kCode>() && scene.wide_node_count != 0) {
+        traverse_wide_bvh<kCode>(scene, ray, shear, best, any);
         break;
       }
-#endif
       [[fallthrough]];
     case AccelKind::Lbvh:
       if (traces<kCode>(kTraceBvh)) traverse_bvh<kCode>(scene, ray, shear, best, any);

@@ -3,7 +3,7 @@
 // query takes it as a template argument that defaults to all of it, which is what the CPU
 // compiles (a CPU does not pay for code a scene never runs). A GPU pays for it in registers:
 // the stream schedule's closest-hit and any-hit kernels come in variants compiled with only
-// what a kind of scene needs (cuda/trace_variants.h), each a few dozen registers smaller.
+// what a kind of scene needs (kernel/accel/trace_variants.h), each 8 to 25 registers smaller.
 // A variant runs only scenes whose needs it holds, so its answers are those of the full code.
 #pragma once
 #include "kernel/base/features.h"
@@ -22,13 +22,15 @@ constexpr uint32_t kTraceBruteForce = 1u << 20;
 constexpr uint32_t kTraceBvh = 1u << 21;
 constexpr uint32_t kTraceKdtree = 1u << 22;
 constexpr uint32_t kTraceGrid = 1u << 23;
+// bvh's 8-wide tree (kernel/accel/traverse_wide_bvh.h), walked where the scene's view holds one.
+constexpr uint32_t kTraceWideBvh = 1u << 24;
 constexpr uint32_t kTraceAll = 0xffffffffu;
 
-// The traversal bit of a structure.
-TRACER_HD constexpr uint32_t trace_accel_bit(AccelKind accel) {
+// The traversal bit of a structure; `wide_tree`: bvh's 8-wide tree is the one walked.
+TRACER_HD constexpr uint32_t trace_accel_bit(AccelKind accel, bool wide_tree = false) {
   switch (accel) {
     case AccelKind::None: return kTraceBruteForce;
-    case AccelKind::Bvh:
+    case AccelKind::Bvh: return wide_tree ? kTraceWideBvh : kTraceBvh;
     case AccelKind::Lbvh: return kTraceBvh;
     case AccelKind::Kdtree:
     case AccelKind::KdtreeMedian: return kTraceKdtree;
@@ -48,11 +50,31 @@ TRACER_HD constexpr bool traces(uint32_t bits) {
   return (kCode & bits) != 0;
 }
 
+// Whether code kCode tests triangles watertight under `test` (else Moller-Trumbore).
+template <uint32_t kCode>
+TRACER_HD constexpr bool tests_watertight(TriangleTest test) {
+  return traces<kCode>(kTraceWatertight) && (!traces<kCode>(kTraceMollerTrumbore) || test == TriangleTest::Watertight);
+}
+
+// Whether code kCode walks bvh's 8-wide tree where the view holds one. The GPU's full code
+// does not (its stack frame stays the binary walk's): there the wide tree runs in its variant.
+template <uint32_t kCode>
+TRACER_HD constexpr bool walks_wide_bvh() {
+#if defined(__CUDA_ARCH__)
+  return kCode != kTraceAll && traces<kCode>(kTraceWideBvh);
+#else
+  return traces<kCode>(kTraceWideBvh);
+#endif
+}
+
 // The code that traces a scene: the shapes it holds (its FeatureBit mask), the triangle test
-// its settings name when it holds triangles, and its structure's traversal.
-TRACER_HD constexpr uint32_t trace_code_needed(uint32_t features, AccelKind accel, TriangleTest test) {
+// its settings name when it holds triangles, and its structure's traversal (`wide_tree`: its
+// view holds bvh's 8-wide tree).
+TRACER_HD constexpr uint32_t trace_code_needed(uint32_t features, AccelKind accel, TriangleTest test,
+                                               bool wide_tree = false) {
   const uint32_t shapes = features & kTraceShapes;
-  return shapes | ((shapes & kFeatureTriangle) != 0 ? trace_triangle_test_bit(test) : 0u) | trace_accel_bit(accel);
+  return shapes | ((shapes & kFeatureTriangle) != 0 ? trace_triangle_test_bit(test) : 0u) |
+         trace_accel_bit(accel, wide_tree);
 }
 
 }  // namespace tracer

@@ -2,20 +2,22 @@
 // compiles a pair per row, named closest_hit_NAME_kernel and shadow_any_hit_NAME_kernel): a
 // scene runs on the first row whose code holds what it needs (trace_code_needed), else on
 // closest_hit_stage_kernel and shadow_any_hit_stage_kernel, which hold all of it. Each row
-// is a structure with one set of shapes: what ptxas' report shows to fit in 64 registers
-// without spills (docs/cuda.md, "Resource budgets"); the planes are in every row, at the
-// cost of no register.
+// is a structure with one set of shapes, held to 64 registers (docs/cuda.md, "Resource
+// budgets", has each row's registers and spills); the planes are in every row, at the cost
+// of no register. wide_bvh_triangles walks bvh's 8-wide tree where the device holds it
+// (cuda/device_scene.h), and the binary tree where it does not.
 #pragma once
 #include "kernel/accel/trace_code.h"
 
 namespace tracer {
 
-#define TRACER_TRACE_VARIANTS(X)                                                          \
-  X(bvh_triangles, kTraceBvh | kFeatureTriangle | kFeaturePlane | kTraceWatertight)       \
-  X(bvh_spheres, kTraceBvh | kFeatureSphere | kFeaturePlane)                              \
-  X(kdtree_triangles, kTraceKdtree | kFeatureTriangle | kFeaturePlane | kTraceWatertight) \
-  X(kdtree_spheres, kTraceKdtree | kFeatureSphere | kFeaturePlane)                        \
-  X(grid_triangles, kTraceGrid | kFeatureTriangle | kFeaturePlane | kTraceWatertight)     \
+#define TRACER_TRACE_VARIANTS(X)                                                                         \
+  X(bvh_triangles, kTraceBvh | kFeatureTriangle | kFeaturePlane | kTraceWatertight)                      \
+  X(wide_bvh_triangles, kTraceWideBvh | kTraceBvh | kFeatureTriangle | kFeaturePlane | kTraceWatertight) \
+  X(bvh_spheres, kTraceBvh | kFeatureSphere | kFeaturePlane)                                             \
+  X(kdtree_triangles, kTraceKdtree | kFeatureTriangle | kFeaturePlane | kTraceWatertight)                \
+  X(kdtree_spheres, kTraceKdtree | kFeatureSphere | kFeaturePlane)                                       \
+  X(grid_triangles, kTraceGrid | kFeatureTriangle | kFeaturePlane | kTraceWatertight)                    \
   X(grid_spheres, kTraceGrid | kFeatureSphere | kFeaturePlane)
 
 struct TraceVariant {
@@ -29,15 +31,16 @@ inline constexpr TraceVariant kTraceVariants[] = {TRACER_TRACE_VARIANTS(TRACER_T
 inline constexpr int kTraceVariantCount = sizeof kTraceVariants / sizeof kTraceVariants[0];
 
 // The index of the first variant whose code holds `needed`, or -1: the full code.
-inline int trace_variant_for(uint32_t needed) {
+constexpr int trace_variant_for(uint32_t needed) {
   for (int v = 0; v < kTraceVariantCount; ++v)
     if ((kTraceVariants[v].code & needed) == needed) return v;
   return -1;
 }
 
-// The variant a scene runs on: `features` is its FeatureBit mask.
-inline int trace_variant_of(uint32_t features, const RenderSettings& rs) {
-  return trace_variant_for(trace_code_needed(features, rs.accel, rs.triangle_test));
+// The variant a scene runs on: `features` is its FeatureBit mask; `wide_tree`: the device
+// holds bvh's 8-wide tree.
+constexpr int trace_variant_of(uint32_t features, const RenderSettings& rs, bool wide_tree = false) {
+  return trace_variant_for(trace_code_needed(features, rs.accel, rs.triangle_test, wide_tree));
 }
 
 // The variant's name, "full" for -1.

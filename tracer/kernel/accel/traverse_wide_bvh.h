@@ -4,27 +4,40 @@
 // only when it starts strictly beyond the best hit, which is what testing its box again
 // with tmax = best.t would decide, so a tie at equal t can still be won by a smaller id.
 #pragma once
+#include "kernel/accel/traverse_bvh.h"
 #include "kernel/accel/triangle_block_test.h"
 
 namespace tracer {
 
 // Each interior node pushes at most 7 entries more than it pops, once per level of a tree
-// at most 61 levels deep (the binary build stops at depth 60).
+// at most 61 levels deep (the binary build stops at depth 60): the CPU's full code holds
+// any tree the build makes.
 constexpr int kWideStackSize = 7 * 61 + 1;
+// A trace variant's stack (kernel/accel/trace_variants.h: the GPU's wide-tree kernels), 768
+// bytes of local memory. ci/generate-meshes.sh's meshes need 28 (bunny) to 50 (mixed-60k) entries
+// (wide_bvh_stack_need, tracer/accel/wide_bvh_builder.h); a deeper tree is walked again
+// from the root by the binary traversal, from the hit found so far, so its hits stay the same.
+constexpr int kWideVariantStackSize = 64;
 
+template <uint32_t kCode>
+constexpr int wide_stack_size() {
+  return kCode == kTraceAll ? kWideStackSize : kWideVariantStackSize;
+}
+
+template <uint32_t kCode = kTraceAll, int kStackSize = wide_stack_size<kCode>()>
 TRACER_HD void traverse_wide_bvh(const SceneView& scene, const Ray& ray, const RayShear& shear, Hit& best, bool any) {
   struct Entry {
     uint32_t child, leaf_blocks;
     float t_enter;
   };
   const WideRayQuery q = make_wide_ray_query(ray, shear);
-  Entry stack[kWideStackSize];
+  Entry stack[kStackSize];
   int top = 0;
   Entry e = {0u, 0u, 0.0f};
   for (;;) {
     if (e.leaf_blocks != 0) {
       for (uint32_t b = e.child; b < e.child + e.leaf_blocks; ++b) {
-        test_triangle_block(scene, scene.triangle_blocks[b], q, ray, shear, best);
+        test_triangle_block<kCode>(scene, scene.triangle_blocks[b], q, ray, shear, best);
         if (any && best.prim != kNoHit) return;
       }
     } else {
@@ -32,6 +45,10 @@ TRACER_HD void traverse_wide_bvh(const SceneView& scene, const Ray& ray, const R
       float t_enter[kWideBvhWidth];
       uint32_t hits = wide_box_hits(n, q, best.t, t_enter);
       if (hits != 0) {
+        if (kStackSize < kWideStackSize && top + kWideBvhWidth - 1 > kStackSize) {
+          traverse_bvh<kCode>(scene, ray, shear, best, any);  // a tree deeper than this stack
+          return;
+        }
         int i = lowest_set_bit(hits);
         Entry nearest = {n.child[i], n.leaf_blocks[i], t_enter[i]};
         const int first = top;

@@ -47,11 +47,13 @@ TRACER_HD uint32_t watertight_candidates(const TriangleBlock& b, const WideRayQu
 }
 
 // Tests every primitive of the block, keeping the closest (t, id) in `best`.
+template <uint32_t kCode = kTraceAll>
 TRACER_HD void test_triangle_block(const SceneView& scene, const TriangleBlock& b, const WideRayQuery& q,
                                    const Ray& ray, const RayShear& shear, Hit& best) {
   for (uint32_t lanes = b.other_lanes; lanes != 0; lanes &= lanes - 1)
-    test_primitive(scene, b.id[lowest_set_bit(lanes)], ray, shear, best);
-  const bool watertight = scene.settings.triangle_test == TriangleTest::Watertight;
+    test_primitive<kCode>(scene, b.id[lowest_set_bit(lanes)], ray, shear, best);
+  if (!traces<kCode>(kFeatureTriangle)) return;
+  const bool watertight = tests_watertight<kCode>(scene.settings.triangle_test);
   for (uint32_t lanes = watertight ? watertight_candidates(b, q) : b.triangle_lanes; lanes != 0; lanes &= lanes - 1) {
     const int l = lowest_set_bit(lanes);
     const Vec3 v0 = {b.v[0][0][l], b.v[0][1][l], b.v[0][2][l]};

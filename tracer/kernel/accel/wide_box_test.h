@@ -81,8 +81,8 @@ TRACER_HD uint32_t wide_box_hits(const WideBvhNode& n, const WideRayQuery& q, fl
     for (int a = 0; a < 3; ++a) {
       const float t0 = (near_plane[a][i] - q.origin[a]) * q.inv_dir[a];
       const float t1 = (far_plane[a][i] - q.origin[a]) * q.inv_dir[a] * kSlabWiden;
-      lo_t = t0 > lo_t ? t0 : lo_t;
-      hi_t = t1 < hi_t ? t1 : hi_t;
+      lo_t = max_of(t0, lo_t);  // t0 > lo_t ? t0 : lo_t, the scalar test's (bvh_node.h)
+      hi_t = min_of(t1, hi_t);
     }
     t_enter[i] = lo_t;
     if (lo_t <= hi_t) hits |= 1u << i;
