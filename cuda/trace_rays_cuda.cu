@@ -1,4 +1,4 @@
-// `tracer bench rays --device cuda` (render/trace_cuda.h): rays traced by the stream
+// `tracer bench rays --device cuda` and `tracer-gpu bench`'s rays table (render/trace_cuda.h): rays traced by the stream
 // schedule's closest-hit and shadow kernels over the scene's arrays on the device. The shadow
 // stage is the path tracer's: it adds a ray's contribution to its radiance when the light is
 // visible, so each ray carries a contribution of 1 and its radiance says whether it was occluded.
@@ -15,8 +15,7 @@ namespace tracer {
 
 namespace {
 
-SceneView path_view(const Scene& scene) {
-  SceneView view = scene.view();
+SceneView path_view(SceneView view) {
   view.settings.integrator = IntegratorKind::Path;  // the shadow stage adds to the radiance
   return view;
 }
@@ -60,11 +59,12 @@ double median_time(const SceneView& view, StreamStage stage, const StreamStates&
 struct CudaRayTracer::Device {
   cudaDeviceProp prop;  // selected before the scene is uploaded
   DeviceScene scene;
-  Device(const Scene& s, bool wide_bvh)
-      : prop(select_cuda_device()), scene(s, path_view(s), wide_bvh ? DeviceBvh::Wide : DeviceBvh::Binary) {}
+  Device(const SceneArrays& arrays, const SceneView& view, bool wide_bvh)
+      : prop(select_cuda_device()), scene(arrays, path_view(view), wide_bvh ? DeviceBvh::Wide : DeviceBvh::Binary) {}
 };
 
-CudaRayTracer::CudaRayTracer(const Scene& scene, bool wide_bvh) : device_(std::make_unique<Device>(scene, wide_bvh)) {}
+CudaRayTracer::CudaRayTracer(const SceneArrays& arrays, const SceneView& view, bool wide_bvh)
+    : device_(std::make_unique<Device>(arrays, view, wide_bvh)) {}
 
 const char* CudaRayTracer::variant() const {
   const SceneView& view = device_->scene.view();

@@ -5,6 +5,7 @@
 #include "lbvh_gpu.h"
 #include "parity/parity_gpu.h"
 #include "render/device_error.h"
+#include "render/trace_cuda.h"
 
 namespace tracer {
 
@@ -19,6 +20,15 @@ GpuAdaptiveFilm render_adaptive_on_gpu(const SceneArrays&, const SceneView&, con
 GpuLbvh build_lbvh_on_gpu(const LbvhInput&) { no_cuda(); }
 std::string describe_render_kernel() { no_cuda(); }
 std::string describe_stream_kernels() { no_cuda(); }
+
+struct CudaRayTracer::Device {};
+CudaRayTracer::CudaRayTracer(const SceneArrays&, const SceneView&, bool) { no_cuda(); }
+CudaRayTracer::~CudaRayTracer() = default;
+const char* CudaRayTracer::variant() const { no_cuda(); }
+double CudaRayTracer::closest(const std::vector<Ray>&, std::vector<Hit>&, uint32_t) { no_cuda(); }
+double CudaRayTracer::any(const std::vector<Ray>&, const std::vector<float>&, std::vector<uint8_t>&, uint32_t) {
+  no_cuda();
+}
 
 namespace parity {
 std::string gpu_device() { no_cuda(); }

@@ -23,6 +23,7 @@
 #include "kernel/accel/trace_variants.h"
 #include "parity/parity_gpu.h"
 #include "parity/parity_suite.h"
+#include "ray_bench.h"
 #include "render/device_error.h"
 
 namespace tracer {
@@ -318,7 +319,7 @@ int run_pack(const Options& o) {
 
 // DIR/bench.tsv: "TABLE LABEL FILE [SCHEDULE]" per row (SCHEDULE as in pack.tsv). Each bundle is rendered --repeat
 // times on the device and its best time reported; on the GPU the CPU renders it once beside it, as the baseline of the
-// same run.
+// same run. Rows of table "rays" trace ray sets instead (ray_bench.h).
 int run_bench(const Options& o) {
   const std::string dir = o.input + "/";
   std::istringstream list(read_text_file(dir + "bench.tsv", "bench list", 1u << 20));
@@ -329,12 +330,21 @@ int run_bench(const Options& o) {
               gpu ? "CPU s/frame" : "", gpu ? "speed-up" : "");
   Options cpu = o;
   cpu.device = "cpu", cpu.repeat = 1;
+  bool rays_header = false;
   for (std::string line; std::getline(list, line);) {
     if (line.empty() || line[0] == '#') continue;
     std::istringstream fields(line);
     std::string table, label, file, schedule;
     if (!(fields >> table >> label >> file)) throw InputError(dir + "bench.tsv: malformed line: " + line);
     fields >> schedule;
+    if (table == "rays") {
+      if (!rays_header)
+        std::printf("%-10s %-34s %10s %10s %10s  %s\n", "table", "label", "primary", "incoherent", "shadow",
+                    "hits (checksum), Mrays/s");
+      rays_header = true;
+      run_ray_bench(read_scene_bundle(dir + file), label, gpu, o.threads, o.repeat);
+      continue;
+    }
     const Options row = schedule.empty() ? o : with_schedule(o, schedule, dir + "bench.tsv: " + label);
     const SceneBundle b = read_scene_bundle(dir + file);
     const Rendered r = render_bundle(b, row, dir + file);

@@ -116,7 +116,7 @@ TEST(GpuPack, BenchRowsCoverTheDeviceTablesAndTheRunnerTimesThem) {
        {"main cornell-box-1spp-center ", "main cornell-box-4spp-grid ", "effects none-1spp-center ",
         "effects all-2spp-stochastic ", "resolution 1920x1080-4spp-grid ", "mesh sphere-",
         "schedule cornell-box-path-16spp-megakernel ", "schedule cornell-box-path-16spp-stream:4194304 ",
-        "schedule sphere-4spp-grid-stream:262144 "})
+        "schedule sphere-4spp-grid-stream:262144 ", "rays sphere-"})
     EXPECT_NE(list.find(row), std::string::npos) << row << " missing:\n" << list;
   const fs::path dir = test::temp_dir("gpu-pack-bench");
   fs::create_directories(dir / "bench");
@@ -132,6 +132,25 @@ TEST(GpuPack, BenchRowsCoverTheDeviceTablesAndTheRunnerTimesThem) {
   std::string out;
   ASSERT_EQ(test::run_command(runner() + " bench " + dir.string() + " --device cpu", &out), 0) << out;
   EXPECT_NE(out.find("main       cornell-box-4spp-grid"), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+
+// The rays table traces bench rays' three ray sets through bvh's two trees; on the CPU both
+// must give the same hits, and a bundle of another structure is refused.
+TEST(GpuPack, TheRaysTableTracesBothTreesWithTheSameHits) {
+  const fs::path dir = test::temp_dir("gpu-pack-rays");
+  fs::create_directories(dir / "bundles");
+  for (const char* bundle : {"gltf-cornell-box.bundle", "ior-one-path@kdtree.bundle"})
+    fs::copy_file(pack() / "bundles" / bundle, dir / "bundles" / bundle);
+  spill(dir / "bench.tsv", "rays gltf-cornell-box bundles/gltf-cornell-box.bundle\n");
+  std::string out;
+  ASSERT_EQ(test::run_command(runner() + " bench " + dir.string() + " --device cpu", &out), 0) << out;
+  EXPECT_NE(out.find("rays       gltf-cornell-box cpu bvh8"), std::string::npos) << out;
+  EXPECT_NE(out.find("rays       gltf-cornell-box cpu bvh "), std::string::npos) << out;
+  EXPECT_EQ(out.find("DIFFERENT"), std::string::npos) << out;
+  spill(dir / "bench.tsv", "rays ior-one-path bundles/ior-one-path@kdtree.bundle\n");
+  EXPECT_EQ(test::run_command(runner() + " bench " + dir.string() + " --device cpu", &out), 2) << out;
+  EXPECT_NE(out.find("ior-one-path: the rays table traces bvh's two trees"), std::string::npos) << out;
   fs::remove_all(dir);
 }
 

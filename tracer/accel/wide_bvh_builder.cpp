@@ -105,10 +105,13 @@ class WideBvhCollapser {
     block_count_ += n.leaf_blocks[slot];
   }
 
-  // Every leaf's blocks, in parallel: each leaf owns its blocks.
+  // Every leaf's blocks, in parallel: each leaf owns its blocks. (The GPU runner, which
+  // collapses a bundle's tree for its rays table, is built without OpenMP.)
   void fill_blocks() {
     wide_.blocks.resize(block_count_);
+#if defined(_OPENMP)
 #pragma omp parallel for schedule(static, 4096) if (leaves_.size() >= 4096)
+#endif
     for (int64_t i = 0; i < static_cast<int64_t>(leaves_.size()); ++i) {
       const Leaf& leaf = leaves_[static_cast<size_t>(i)];
       for (uint32_t k = 0; k < leaf.count; ++k) add_to_block(leaf, k, leaf_order_[leaf.first + k]);

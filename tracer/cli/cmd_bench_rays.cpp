@@ -21,15 +21,12 @@
 #include "bench/bench_common.h"
 #include "bench/embree_bench.h"
 #include "bench/mesh_generators.h"
+#include "bench/ray_sets.h"
 #include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "io/input_error.h"
 #include "io/json_reader.h"
 #include "kernel/accel/traverse_wide_bvh.h"
-#include "kernel/base/philox.h"
-#include "kernel/geom/ray_offset.h"
-#include "kernel/shading/sampling.h"
-#include "kernel/shading/surface.h"
 #include "options/enum_names.h"
 #include "render/cpu_kernel.h"
 #include "render/render_cuda.h"
@@ -48,11 +45,6 @@ struct BenchRaysCommand {
 namespace {
 
 constexpr uint32_t kCamera = 512;
-
-struct RaySets {
-  std::vector<Ray> primary, incoherent, shadow;
-  std::vector<float> shadow_tmax;
-};
 
 // An OBJ becomes a one-mesh scene; the camera frames the mesh in either case.
 Scene load_bench_scene(const std::string& path, AccelKind accel, uint32_t grid_resolution) {
@@ -83,21 +75,10 @@ Scene load_bench_scene(const std::string& path, AccelKind accel, uint32_t grid_r
 }
 
 RaySets make_rays(const Scene& scene, uint32_t incoherent) {
-  RaySets r;
-  for (uint32_t y = 0; y < kCamera; ++y)
-    for (uint32_t x = 0; x < kCamera; ++x)
-      r.primary.push_back(camera_ray(scene.camera, x + 0.5f, y + 0.5f, 0.5f, 0.5f));
   Bounds b;
   for (const Primitive& p : scene.primitives)
     if (p.kind != ShapeKind::Plane) b.grow(primitive_bounds(p));
-  for (uint32_t i = 0; i < incoherent; ++i) {
-    float u[6];
-    for (uint32_t d = 0; d < 3; ++d) sample_uniform2(0x5EEDu, i, 0, d, u[2 * d], u[2 * d + 1]);
-    const Vec3 o = {b.lo.x + u[0] * (b.hi.x - b.lo.x), b.lo.y + u[1] * (b.hi.y - b.lo.y),
-                    b.lo.z + u[2] * (b.hi.z - b.lo.z)};
-    r.incoherent.push_back({o, direction_from(1.0f - 2.0f * u[3], u[4])});
-  }
-  return r;
+  return make_primary_and_incoherent_rays(scene.camera, kCamera, kCamera, b.lo, b.hi, incoherent);
 }
 
 // Runs `query(begin, count)` over [0, n) in chunks of 1024 on all threads, `repeats` times;
@@ -121,18 +102,6 @@ double build_seconds(const Scene& scene, uint32_t repeats) {
   return median_seconds(repeats, [&] {
     const Acceleration a = build_acceleration(scene.settings.accel, scene.primitives, scene.settings.grid_resolution);
   });
-}
-
-uint64_t mix(uint64_t h, uint64_t v) { return (h ^ v) * 0x100000001B3ull; }
-
-// The hits' checksum: every structure and device must give the same.
-uint64_t checksum(const std::vector<Hit>& primary, const std::vector<Hit>& incoherent,
-                  const std::vector<uint8_t>& occluded) {
-  uint64_t sum = 0;
-  for (const auto* hits : {&primary, &incoherent})
-    for (const Hit& h : *hits) sum = mix(mix(sum, h.prim), bits_of(h.t));
-  for (uint8_t o : occluded) sum = mix(sum, o);
-  return sum;
 }
 
 }  // namespace
@@ -171,16 +140,7 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
       kernel.trace_closest(view, &rays.incoherent[i], no_limit.data(), n, &incoherent[i]);
     });
     if (rays.shadow.empty()) {  // from each primary hit toward a point above the scene, once for all structures
-      const Vec3 light =
-          scene.camera.origin + Vec3{0.0f, length(scene.camera.origin - scene.camera.focal_top_left), 0.0f};
-      for (size_t i = 0; i < primary.size(); ++i) {
-        if (primary[i].prim == kNoHit) continue;
-        const Surface s = surface_at(view, rays.primary[i], primary[i]);
-        const Vec3 dir = normalize(light - s.p);
-        const Ray r = {offset_ray_origin(s.p, s.ng, dir, view.offset_scale), dir};
-        rays.shadow.push_back(r);
-        rays.shadow_tmax.push_back(length(light - r.origin));
-      }
+      add_shadow_rays(view, shadow_light(scene.camera), primary, rays);
       reference_primary = primary;
       reference_incoherent = incoherent;
     }
@@ -188,7 +148,7 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     rates[2] = throughput(rays.shadow.size(), threads, cmd.repeats, [&](size_t i, size_t n) {
       kernel.trace_any(view, &rays.shadow[i], &rays.shadow_tmax[i], n, &occluded[i]);
     });
-    const uint64_t sum = checksum(primary, incoherent, occluded);
+    const uint64_t sum = ray_hits_checksum(primary, incoherent, occluded);
     if (reference == 0) reference = sum;
     if (build > 0)
       std::printf("%-14s %10.3f %10.1f %10.1f %10zu | ", label.c_str(), build, scene.report.accel_bytes / 1048576.0,
@@ -204,13 +164,13 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
   // The GPU's row for a structure: its trace variant's kernels (kernel/accel/trace_variants.h);
   // `wide_bvh`: bvh's 8-wide tree on the device.
   const auto measure_cuda = [&](const std::string& label, const Scene& scene, bool wide_bvh) {
-    CudaRayTracer device(scene, wide_bvh);
+    CudaRayTracer device(scene, scene.view(), wide_bvh);
     std::vector<Hit> primary, incoherent;
     std::vector<uint8_t> occluded;
     const double seconds[3] = {device.closest(rays.primary, primary, cmd.repeats),
                                device.closest(rays.incoherent, incoherent, cmd.repeats),
                                device.any(rays.shadow, rays.shadow_tmax, occluded, cmd.repeats)};
-    const uint64_t sum = checksum(primary, incoherent, occluded);
+    const uint64_t sum = ray_hits_checksum(primary, incoherent, occluded);
     std::printf("%-14s %10s %10s %10s %10s | %10.2f %10.2f %10.2f | %016llx %s (trace %s)\n", label.c_str(), "", "", "",
                 "", rays.primary.size() / seconds[0] / 1e6, rays.incoherent.size() / seconds[1] / 1e6,
                 rays.shadow.size() / seconds[2] / 1e6, static_cast<unsigned long long>(sum),

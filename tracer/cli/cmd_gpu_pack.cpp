@@ -101,8 +101,9 @@ std::vector<ParityCase> parity_cases(const GoldenManifest& manifest) {
 
 // The scenes of `tracer bench device` as bundles (Whitted, 720x480 unless the row says):
 // the Cornell box per sampler, per effect and per resolution, and a generated 100k-triangle
-// mesh; then the stream schedule against the megakernel (table `schedule`: the main and mesh
-// bundles and the path-traced Cornell box at 16 spp, each under both schedules).
+// mesh; table `rays`, traversal alone on the mesh; then the stream schedule against the
+// megakernel (table `schedule`: the main and mesh bundles and the path-traced Cornell box at
+// 16 spp, each under both schedules).
 // bench.tsv rows: "TABLE LABEL FILE [SCHEDULE]"; `tracer-gpu bench` times them.
 std::string write_bench(const fs::path& root, const fs::path& out) {
   struct Sampler {
@@ -147,7 +148,7 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
   try {
     const std::vector<MeshTriangle> mesh = generate_mesh("sphere", 100000);
     write_obj(mesh, (temp / "sphere-100k.obj").string());
-    write_file_atomically((temp / "sphere-100k.json").string(), R"({
+    const std::string sphere_json = R"({
   "format": "tracer-scene/1",
   "camera": { "from": [0, 0.6, 4], "to": [0, 0, 0], "vfov": 40 },
   "film": { "width": 720, "height": 480 },
@@ -163,11 +164,21 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
     { "type": "mesh", "file": "sphere-100k.obj", "material": "clay" }
   ]
 }
-)");
+)";
+    write_file_atomically((temp / "sphere-100k.json").string(), sphere_json);
     for (const Sampler& s : {samplers[0], samplers[2]})
       add("mesh", "sphere-" + std::to_string(mesh.size()) + "tri-" + s.label, (temp / "sphere-100k.json").string(), 720,
           480, s, kEffectAll);
     sphere_4spp = "bench/mesh-sphere-" + std::to_string(mesh.size()) + "tri-4spp-grid.bundle";
+    // Traversal alone (cuda/runner/ray_bench.h): the sphere without its floor, a triangle mesh
+    // that the GPU's wide_bvh_triangles trace variant runs.
+    const std::string floor =
+        R"({ "type": "quad", "corner": [-4, -1.5, 3], "u": [8, 0, 0], "v": [0, 0, -8], "material": "floor" },)";
+    std::string alone = sphere_json;
+    alone.erase(alone.find(floor), floor.size());
+    write_file_atomically((temp / "sphere-100k-alone.json").string(), alone);
+    add("rays", "sphere-" + std::to_string(mesh.size()) + "tri", (temp / "sphere-100k-alone.json").string(), 720, 480,
+        samplers[0], kEffectAll);
   } catch (...) {
     fs::remove_all(temp);
     throw;

@@ -1,8 +1,7 @@
-// The CUDA renderer's interface, and the GPU ray queries', in a build that found no nvcc at
-// configure time.
+// The CUDA renderer's interface in a build that found no nvcc at configure time (the GPU ray
+// queries' is in cuda/runner/gpu_absent.cpp).
 #include "render/device_error.h"
 #include "render/render_cuda.h"
-#include "render/trace_cuda.h"
 
 namespace tracer {
 
@@ -19,19 +18,5 @@ FilmBuffer render_cuda_film(const Scene&, SampleRange, RenderStats&, CudaRunInfo
 AdaptiveFilm render_cuda_adaptive(const Scene&, RenderStats&, CudaRunInfo&) { no_cuda(); }
 
 Image render_cuda(const Scene&, RenderStats&, CudaRunInfo&) { no_cuda(); }
-
-struct CudaRayTracer::Device {};
-
-CudaRayTracer::CudaRayTracer(const Scene&, bool) { no_cuda(); }
-
-CudaRayTracer::~CudaRayTracer() = default;
-
-const char* CudaRayTracer::variant() const { no_cuda(); }
-
-double CudaRayTracer::closest(const std::vector<Ray>&, std::vector<Hit>&, uint32_t) { no_cuda(); }
-
-double CudaRayTracer::any(const std::vector<Ray>&, const std::vector<float>&, std::vector<uint8_t>&, uint32_t) {
-  no_cuda();
-}
 
 }  // namespace tracer

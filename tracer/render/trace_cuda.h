@@ -1,22 +1,23 @@
-// Ray queries on the GPU, for `tracer bench rays --device cuda` (cuda/trace_rays_cuda.cu): the
-// scene's arrays on the device and a buffer of rays traced by the stream schedule's
-// closest-hit and shadow kernels, the scene's trace variant (kernel/accel/trace_variants.h),
-// each launch timed with CUDA events; `repeats` is at least 1. With `wide_bvh`, a bvh scene's
-// 8-wide tree goes to the device too and its rays run on the wide_bvh_triangles variant. A build without nvcc links
-// render_cuda_absent.cpp, whose constructor raises DeviceUnavailable.
+// Ray queries on the GPU, for `tracer bench rays --device cuda` and `tracer-gpu bench`'s rays
+// table (cuda/trace_rays_cuda.cu): the scene's arrays on the device and a buffer of rays traced
+// by the stream schedule's closest-hit and shadow kernels, the scene's trace variant
+// (kernel/accel/trace_variants.h), each launch timed with CUDA events; `repeats` is at least 1.
+// With `wide_bvh`, a bvh scene's 8-wide tree goes to the device too and its rays run on the
+// wide_bvh_triangles variant. A build without nvcc links cuda/runner/gpu_absent.cpp, whose
+// constructor raises DeviceUnavailable.
 #pragma once
 #include <memory>
 #include <vector>
 
 #include "kernel/accel/primitive_hit.h"
-#include "scene/scene.h"
+#include "scene/scene_arrays.h"
 
 namespace tracer {
 
 class CudaRayTracer {
  public:
-  // Uploads the scene; DeviceUnavailable when there is no usable GPU.
-  explicit CudaRayTracer(const Scene& scene, bool wide_bvh = false);
+  // Uploads the arrays (`view` gives the scalars); DeviceUnavailable when there is no usable GPU.
+  CudaRayTracer(const SceneArrays& arrays, const SceneView& view, bool wide_bvh);
   ~CudaRayTracer();
   CudaRayTracer(const CudaRayTracer&) = delete;
   CudaRayTracer& operator=(const CudaRayTracer&) = delete;

@@ -1,0 +1,17 @@
+// `tracer-gpu bench`'s rays table (docs/cuda.md): the three ray sets of `tracer bench rays`
+// (bench/ray_sets.h) on a bundle's scene, traced by the runner's CPU threads and, on a GPU,
+// by the stream schedule's closest-hit and shadow kernels on bvh's binary tree and on its
+// 8-wide tree; every row's hits are checked against the CPU's.
+#pragma once
+#include <string>
+
+#include "bundle/scene_bundle.h"
+
+namespace tracer {
+
+// Prints the table's rows for `bundle` (a bvh scene), `label` naming it. The 8-wide tree is
+// collapsed here from the bundle's binary tree, as the tracer collapses it. InputError when the
+// bundle's structure is not bvh; std::runtime_error when a row's hits differ from the CPU's.
+void run_ray_bench(const SceneBundle& bundle, const std::string& label, bool gpu, unsigned threads, uint32_t repeats);
+
+}  // namespace tracer
