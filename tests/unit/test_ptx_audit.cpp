@@ -3,9 +3,12 @@
 // class with and without an argument, and PTX it cannot parse.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "audit/cuda_audit.h"
 #include "audit/draw_lint.h"
 #include "audit/ptx_audit.h"
+#include "io/input_error.h"
 
 using namespace tracer;
 
@@ -82,7 +85,8 @@ TEST(PtxAudit, MinMaxNeedTheHelperAndASafeConstant) {
       "\t.loc\t2 82 3\n\tmin.f32 \t%f1, %f2, 0f3F7FFFFF;\n\tmax.f32 \t%f1, %f2, 0f00000000;\n"
       "\tmin.f32 \t%f1, %f2, 0f80000000;\n");
   EXPECT_TRUE(a.passed());
-  EXPECT_EQ(a.explained.size(), 3u);
+  ASSERT_EQ(a.explained.size(), 2u);  // two sites: min.f32 twice and max.f32 at platform.h:82
+  EXPECT_EQ(a.explained.at("tracer/kernel/base/platform.h:82  min.f32").first, 2);
   EXPECT_EQ(a.total().differs, 3);
   // Two registers, NaN, the wrong zero, the .NaN variant, or outside the helper: not argued.
   for (const std::string& ins :
@@ -116,6 +120,23 @@ TEST(PtxAudit, UnparseableTextFailsNamingTheLine) {
   EXPECT_FALSE(a.passed());
   a = audit_body("\t.loc\t9 1 1\n");  // no such .file
   EXPECT_FALSE(a.passed());
+  // A guard predicate with no instruction (once a crash by signal), alone or before another statement.
+  for (const char* guard : {"\t@%p1;\n", "\t@!%p2 ;\n", "\t@;\n", "\t@%p1; add.rn.f32 %f1, %f2, %f3;\n"}) {
+    a = audit_body(guard);
+    ASSERT_EQ(a.parse_errors.size(), 1u) << guard;
+    EXPECT_NE(a.parse_errors[0].find("a guard predicate with no instruction"), std::string::npos) << a.parse_errors[0];
+  }
+}
+
+// A file of many failing lines keeps the first kPtxSitesKept with their text and counts the
+// rest (24 MB of such lines once took 1.2 GB).
+TEST(PtxAudit, ManyFailuresAreCountedNotAllKept) {
+  std::string body = "\t.loc\t4 7 1\n";
+  for (int i = 0; i < 300; ++i) body += "\tfma.rn.f32 \t%f1, %f2, %f3, %f4;\n";
+  const PtxAudit a = audit_body(body);
+  EXPECT_EQ(a.failure_count, 300);
+  EXPECT_EQ(a.failures.size(), kPtxSitesKept);
+  EXPECT_FALSE(a.passed());
 }
 
 TEST(PtxAudit, SourceCoverageNamesFilesTheBuildAndTheSearchDisagreeOn) {
@@ -145,4 +166,11 @@ TEST(DrawLint, SeparateStatementsBracedListsAndConditionsPass) {
       "  // g(s.next(), s.next()) in a comment\n  puts(\"g(s.next(), s.next())\");\n"
       "  run([&] { return s.next() + 1; }, [&] { return s.next(); });\n}\n";
   EXPECT_TRUE(lint_draws(ok, "ok.cpp").empty());
+}
+
+TEST(DrawLint, ATreeWithNothingToLintIsRefusedNotPassed) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tracer-test-draw-lint-empty";
+  std::filesystem::create_directories(dir / "tests");  // a folder it lints, holding no source file
+  EXPECT_THROW(lint_draws_in_tree(dir.string()), InputError);
+  std::filesystem::remove_all(dir);
 }

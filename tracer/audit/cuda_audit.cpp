@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <exception>
 #include <filesystem>
+#include <mutex>
 #include <set>
 #include <thread>
 
@@ -39,6 +41,10 @@ std::vector<std::string> source_coverage_problems(const std::vector<std::string>
   return problems;
 }
 
+std::string ptx_path_for(const std::string& ptx_dir, const std::string& source, const std::string& arch) {
+  return (fs::path(ptx_dir) / (source + ".compute_" + arch + ".ptx")).string();
+}
+
 std::vector<CudaAuditModule> run_cuda_audit(const CudaAuditConfig& config, const std::vector<std::string>& sources) {
   std::vector<CudaAuditModule> modules;
   for (const std::string& source : sources)
@@ -46,31 +52,37 @@ std::vector<CudaAuditModule> run_cuda_audit(const CudaAuditConfig& config, const
       CudaAuditModule m;
       m.source = source;
       m.architecture = arch;
-      std::string stem = source;
-      std::replace(stem.begin(), stem.end(), '/', '_');
-      m.ptx_path = (fs::path(config.ptx_dir) / (stem + ".compute_" + arch + ".ptx")).string();
+      m.ptx_path = ptx_path_for(config.ptx_dir, source, arch);
+      fs::create_directories(fs::path(m.ptx_path).parent_path());
       modules.push_back(m);
     }
   std::atomic<size_t> next{0};
+  std::exception_ptr error;  // the first worker's exception, rethrown after every thread joined
+  std::mutex error_mutex;
   const auto work = [&] {
-    for (size_t i = next++; i < modules.size(); i = next++) {
-      CudaAuditModule& m = modules[i];
-      const fs::path root = fs::weakly_canonical(config.root);
-      const std::string command = shell_quote(config.nvcc) + " -ptx -lineinfo -arch=compute_" + m.architecture + " " +
-                                  config.flags + " -I" + shell_quote((root / "tracer").string()) + " -I" +
-                                  shell_quote((root / "cuda").string()) + " " +
-                                  shell_quote((root / m.source).string()) + " -o " + shell_quote(m.ptx_path) + " 2>&1";
-      std::string output;
-      if (run_capture(command, output) != 0) {
-        m.compile_error = command + "\n" + output;
-        continue;
+    for (size_t i = next++; i < modules.size(); i = next++) try {
+        CudaAuditModule& m = modules[i];
+        const fs::path root = fs::weakly_canonical(config.root);
+        const std::string command =
+            shell_quote(config.nvcc) + " -ptx -lineinfo -arch=compute_" + m.architecture + " " + config.flags + " -I" +
+            shell_quote((root / "tracer").string()) + " -I" + shell_quote((root / "cuda").string()) + " " +
+            shell_quote((root / m.source).string()) + " -o " + shell_quote(m.ptx_path) + " 2>&1";
+        std::string output;
+        if (run_capture(command, output) != 0) {
+          m.compile_error = command + "\n" + output;
+          continue;
+        }
+        m.audit = audit_ptx(read_text_file(m.ptx_path, "PTX"), root.string());
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(error_mutex);
+        if (!error) error = std::current_exception();
+        next = modules.size();
       }
-      m.audit = audit_ptx(read_text_file(m.ptx_path, "PTX"), root.string());
-    }
   };
   std::vector<std::thread> threads;
   for (int t = 0; t < std::max(1, config.jobs); ++t) threads.emplace_back(work);
   for (std::thread& t : threads) t.join();
+  if (error) std::rethrow_exception(error);
   return modules;
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <set>
 
+#include "io/input_error.h"
 #include "io/text_file.h"
 
 namespace fs = std::filesystem;
@@ -140,6 +141,8 @@ std::vector<DrawLintFinding> lint_draws_in_tree(const std::string& root) {
         files.push_back(fs::relative(e.path(), root).string());
     }
   }
+  if (files.empty())
+    throw InputError(root + ": none of tracer/kernel, cuda and tests holds a .h, .cpp or .cu file: nothing to lint");
   std::sort(files.begin(), files.end());
   for (const std::string& f : files) {
     const std::vector<DrawLintFinding> found = lint_draws(read_text_file((fs::path(root) / f).string(), "source"), f);

@@ -18,7 +18,8 @@ struct DrawLintFinding {
 
 std::vector<DrawLintFinding> lint_draws(const std::string& text, const std::string& file);
 
-// Every .h, .cpp and .cu file under root's tracer/kernel, cuda and tests.
+// Every .h, .cpp and .cu file under root's tracer/kernel, cuda and tests; InputError naming root
+// when there is none.
 std::vector<DrawLintFinding> lint_draws_in_tree(const std::string& root);
 
 }  // namespace tracer

@@ -210,7 +210,11 @@ PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
   }
   PtxAudit audit;
   const auto parse_error = [&](size_t i, const std::string& why) {
-    audit.parse_errors.push_back(std::to_string(i + 1) + ": " + why + ": " + trim(lines[i]));
+    if (audit.parse_error_count++ < static_cast<long>(kPtxSitesKept))
+      audit.parse_errors.push_back(std::to_string(i + 1) + ": " + why + ": " + trim(lines[i]).substr(0, 200));
+  };
+  const auto fail = [&](const PtxSite& s) {
+    if (audit.failure_count++ < static_cast<long>(kPtxSitesKept)) audit.failures.push_back(s);
   };
   // .file entries come after the code: read them first.
   std::map<int, std::string> files;
@@ -346,12 +350,16 @@ PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
       const std::string done = trim(statement);
       statement.clear();
       if (done[0] == '.') continue;  // a directive: .reg, .local, .param, .pragma ...
+      std::string operands;
+      if (opcode_of(done, operands).empty()) {  // `@%p1;`: a guard predicate with nothing to guard
+        parse_error(statement_line, "a guard predicate with no instruction");
+        continue;
+      }
       const std::optional<PtxSite> site = classify(done, source);
       if (!site) continue;
       PtxSite s = *site;
       s.function = function;
       s.ptx_line = static_cast<int>(statement_line + 1);
-      std::string operands;
       const std::string opcode = opcode_of(s.text, operands);
       ++audit.by_opcode[opcode];
       PtxCounts& counts = audit.by_function[function];
@@ -361,17 +369,25 @@ PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
       }
       if (s.cls == PtxClass::Forbidden) {
         ++counts.forbidden;
-        audit.failures.push_back(s);
+        fail(s);
         continue;
       }
       ++counts.differs;
       const std::string base = opcode.substr(0, opcode.find('.'));
       s.argument = base == "cvt" ? argue_conversion(s) : argue_min_max(s, opcode, operands);
-      (s.argument.empty() ? audit.failures : audit.explained).push_back(s);
+      if (s.argument.empty()) {
+        fail(s);
+        continue;
+      }
+      auto& [count, argument] = audit.explained[s.source + "  " + opcode];
+      ++count;
+      argument = s.argument;
     }
   }
-  if (state != State::Module || !statement.empty())
+  if (state != State::Module || !statement.empty()) {
+    ++audit.parse_error_count;
     audit.parse_errors.push_back(std::to_string(lines.size()) + ": the module ends inside a function or statement");
+  }
   return audit;
 }
 

@@ -34,14 +34,21 @@ struct PtxCounts {
   long equal = 0, differs = 0, forbidden = 0;
 };
 
+// The failures and parse errors kept with their text: what a report can show (a hostile file
+// of a million failing lines would otherwise hold a million sites); the rest are counted.
+constexpr size_t kPtxSitesKept = 100;
+
 struct PtxAudit {
   std::map<std::string, PtxCounts> by_function;  // mangled .entry/.func name
   std::map<std::string, long> by_opcode;         // e.g. "add.rn.f32", "min.f32"
-  std::vector<PtxSite> failures;                 // forbidden, or differs with no argument
-  std::vector<PtxSite> explained;                // differs with an argument
-  std::vector<std::string> parse_errors;         // "LINE: text"
+  std::vector<PtxSite> failures;                 // forbidden, or differs with no argument: the first kPtxSitesKept
+  long failure_count = 0;                        // every one
+  // differs with an argument, by "file:line  opcode": how many, and the argument
+  std::map<std::string, std::pair<long, std::string>> explained;
+  std::vector<std::string> parse_errors;  // "LINE: why: text", the first kPtxSitesKept
+  long parse_error_count = 0;             // every one
   PtxCounts total() const;
-  bool passed() const { return failures.empty() && parse_errors.empty(); }
+  bool passed() const { return failure_count == 0 && parse_error_count == 0; }
 };
 
 // Audits one PTX module. `root` is stripped from the paths of .file entries.

@@ -1,0 +1,68 @@
+#include "audit/ptx_directory.h"
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <system_error>
+
+#include "io/input_error.h"
+#include "io/new_directory.h"
+
+namespace fs = std::filesystem;
+
+namespace tracer {
+namespace {
+
+// DIR without a trailing separator, so that its parent and its name are what the user meant.
+fs::path without_trailing_separator(const std::string& dir) {
+  fs::path p = fs::path(dir).lexically_normal();
+  if (!p.has_filename() && p.has_parent_path() && p != p.root_path()) p = p.parent_path();
+  return p;
+}
+
+}  // namespace
+
+PtxDirectory::PtxDirectory(const std::string& dir, bool owned_by_build) : owned_by_build_(owned_by_build) {
+  const fs::path p = without_trailing_separator(dir);
+  dir_ = p.string();
+  std::error_code ec;
+  const fs::file_status st = fs::symlink_status(p, ec);
+  if (fs::exists(st)) {
+    if (fs::is_symlink(st) || !fs::is_directory(st))
+      throw InputError(dir_ + " (--ptx-dir): not a directory the audit made (a link or another kind of file)");
+    if (!owned_by_build && !fs::exists(fs::symlink_status(p / kPtxDirectoryMarker)))
+      throw InputError(dir_ + " (--ptx-dir): a directory without " + kPtxDirectoryMarker +
+                       ", so not one an earlier audit made: give a new path");
+  }
+  const fs::path parent = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  fs::create_directories(parent, ec);
+  if (!fs::is_directory(parent)) throw InputError(parent.string() + ": cannot create the directory (--ptx-dir)");
+  staging_ = make_new_directory(parent, p.filename().string() + ".partial-").string();
+  std::ofstream marker(fs::path(staging_) / kPtxDirectoryMarker);
+  marker << "PTX of `tracer audit cuda`; the next audit replaces this directory\n";
+  marker.close();
+  if (!marker) throw InputError(staging_ + ": cannot write " + kPtxDirectoryMarker + " (--ptx-dir)");
+}
+
+PtxDirectory::~PtxDirectory() {
+  if (kept_) return;
+  std::error_code ec;
+  fs::remove_all(staging_, ec);  // a directory this process made
+}
+
+void PtxDirectory::keep() {
+  std::error_code ec;
+  if (fs::exists(fs::symlink_status(dir_))) {
+    // Checked again: DIR is an earlier audit's directory, which remove_all removes without following links.
+    if ((!owned_by_build_ && !fs::exists(fs::symlink_status(fs::path(dir_) / kPtxDirectoryMarker))) ||
+        fs::is_symlink(fs::symlink_status(dir_)))
+      throw std::runtime_error(dir_ + " (--ptx-dir) changed during the audit into something it did not make");
+    fs::remove_all(dir_, ec);
+    if (ec) throw std::runtime_error(dir_ + " (--ptx-dir): cannot remove the earlier audit's PTX: " + ec.message());
+  }
+  fs::rename(staging_, dir_, ec);
+  if (ec) throw std::runtime_error(dir_ + " (--ptx-dir): cannot move the PTX into place: " + ec.message());
+  kept_ = true;
+}
+
+}  // namespace tracer
