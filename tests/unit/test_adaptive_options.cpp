@@ -54,6 +54,14 @@ TEST_F(AdaptiveOptions, BadThresholdsAreRefused) {
     expect_refused("render " + s + " --target-error " + bad + out(), "--target-error");
   for (const char* bad : {"0", "-1", "\"0.1\"", "true", "1e7"})
     expect_refused("render " + scene(std::string(R"("noise_threshold": )") + bad) + out(), "render.noise_threshold");
+  // Positive as decimals, but 0 (off: a uniform render) or subnormal as the float the renderer holds.
+  for (const char* tiny : {"1e-50", "1e-40"})
+    expect_refused("render " + scene(std::string(R"("sampler": "sobol", "target_error": )") + tiny) + out(),
+                   "render.target_error");
+  const std::string sobol = scene(R"("sampler": "sobol")");  // the scene file again, as at the start
+  expect_refused("render " + sobol + " --noise-threshold 0." + std::string(49, '0') + "1" + out(), "smallest normal");
+  // One sample has no two halves to estimate an error from (the estimate was -nan, exit 0).
+  expect_refused("render " + sobol + " --spp 1 --target-error 0.1" + out(), "command line --spp: adaptive sampling");
 }
 
 TEST_F(AdaptiveOptions, BadMinimumsAreRefused) {

@@ -15,8 +15,9 @@
 namespace tracer {
 namespace {
 
-// A scene bundle describes a render as a scene does, and is held to the same limits: tracer-gpu
-// rendered bundles asking for max_depth 1000, a 20000-pixel film or 2^37 samples.
+// A scene bundle describes a render as a scene does, and is held to the same limits and the same
+// check of its settings (options/settings_check.h): tracer-gpu rendered bundles asking for
+// max_depth 1000, a 20000-pixel film or 2^37 samples, and crashed or drew black on derived ones.
 TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
   const std::string scene_path = scene_file(scene_text(R"("spp": 1)"));
   const Scene scene = load_scene(scene_path);
@@ -25,6 +26,13 @@ TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
       {[](RenderSettings& s) { s.max_depth = 1000; }, "max_depth: must be at most 64 (the depth limit)"},
       {[](RenderSettings& s) { s.width = 20000; }, "width: must be in [1, 16384] (the film's limit)"},
       {[](RenderSettings& s) { s.spp = 4294967295u; }, "spp: 4294967295 spp x 8 x 6 pixels is more than 2^36 samples"},
+      // Derived settings a checksum cannot vouch for: a sampler grid of 0 was a SIGFPE, a stream
+      // width of 0 or a structure out of range a black image and exit 0.
+      {[](RenderSettings& s) { s.grid_n = 0; }, "grid_n: is 0, not the sampler grid of 1 spp"},
+      {[](RenderSettings& s) { s.stream_width = 0; }, "stream_width: expected 1 to 16777216 samples in flight, got 0"},
+      {[](RenderSettings& s) { s.accel = static_cast<AccelKind>(9); }, "accel: no such value: 9"},
+      {[](RenderSettings& s) { s.integrator = static_cast<IntegratorKind>(77); }, "integrator: no such value: 77"},
+      {[](RenderSettings& s) { s.target_error = 1e-40f; }, "noise_threshold: noise_threshold 0.000000, target_error"},
   };
   for (const auto& [edit, expected] : cases) {
     SceneBundle b = make_scene_bundle(scene, scene.view(), {0, 1}, scene_path);
@@ -38,6 +46,17 @@ TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
         << output;
     EXPECT_NE(output.find("b.bundle: the bundle's render settings: " + expected), std::string::npos) << output;
   }
+  // The view's grid against its cells: an axis of 0 cells indexed past the cell starts.
+  RenderOverrides grid;
+  grid.accel = AccelKind::Grid;
+  const Scene grid_scene = load_scene(scene_path, grid);
+  SceneBundle b = make_scene_bundle(grid_scene, grid_scene.view(), {0, 1}, scene_path);
+  b.scalars.grid.n[1] = 0;
+  write_bundle(bundle, encode_scene_bundle(b));
+  std::string output;
+  EXPECT_EQ(test::run_command(std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu", &output), 2);
+  EXPECT_NE(output.find("b.bundle: the bundle's view: grid: 0 cells along an axis (1 to 1024)"), std::string::npos)
+      << output;
 }
 
 // compare --diff and bench converge --csv/--plot had no check: naming an input (directly,

@@ -1,6 +1,6 @@
 #include "scene_bundle.h"
 
-#include "options/work_limits.h"
+#include "options/settings_check.h"
 
 namespace tracer {
 namespace {
@@ -10,6 +10,29 @@ SceneView without_pointers(SceneView view) {
   TRACER_SCENE_ARRAYS(TRACER_NULL_POINTER)
 #undef TRACER_NULL_POINTER
   return view;
+}
+
+// What the kernels divide by or index with, beside the arrays' own sizes: the grid's cells
+// (traverse_grid.h) and the sky's table (sky_sampling.h). "" when the view agrees with its arrays.
+std::string view_violation(const SceneBundle& b) {
+  const SceneView& v = b.scalars;
+  if (v.settings.accel == AccelKind::Grid) {  // no grid: n = 0 and no cells; else 1 to 1024 cells an axis
+    const bool none = b.arrays.grid_cell_start.empty();
+    uint64_t cells = 1;
+    for (const uint32_t n : v.grid.n) {
+      if (none ? n != 0 : (n < 1 || n > 1024))
+        return "grid: " + std::to_string(n) + " cells along an axis (" + (none ? "0: it has no cells)" : "1 to 1024)");
+      cells *= n;
+    }
+    if (!none && cells + 1 != b.arrays.grid_cell_start.size())
+      return "grid: " + std::to_string(cells) + " cells, but " + std::to_string(b.arrays.grid_cell_start.size()) +
+             " cell starts";
+  }
+  const uint64_t side = v.sky_cells_per_side;
+  if (!b.arrays.sky_cells.empty() && (side < 1 || side > 4096 || 6 * side * side != b.arrays.sky_cells.size()))
+    return "sky: " + std::to_string(side) + " cells per side, but " + std::to_string(b.arrays.sky_cells.size()) +
+           " cells";
+  return "";
 }
 
 }  // namespace
@@ -46,21 +69,13 @@ SceneBundle decode_scene_bundle(const BundleFile& file, const std::string& path)
   TRACER_SCENE_ARRAYS(TRACER_GET_ARRAY)
 #undef TRACER_GET_ARRAY
   const RenderSettings& rs = b.scalars.settings;
-  // The render it describes is within the limits render applies to a scene.
-  if (const auto v = work_limit_violation(rs.width, rs.height, rs.spp, rs.max_depth))
+  // The render it describes is one the scene loader could have made (options/settings_check.h).
+  if (const auto v = settings_violation(rs))
     throw InputError(path + ": the bundle's render settings: " + v->key + ": " + v->reason);
+  if (const std::string v = view_violation(b); !v.empty()) throw InputError(path + ": the bundle's view: " + v);
   if (b.range.begin >= b.range.end || b.range.end > rs.spp)
     throw InputError(path + ": bundle sample range [" + std::to_string(b.range.begin) + ", " +
                      std::to_string(b.range.end) + ") is not inside [0, " + std::to_string(rs.spp) + ")");
-  // An adaptive render (render/adaptive_film.h) as the scene loader admits it: whole, with
-  // thresholds of 0 (off) or positive and finite, and at least two samples per half decision.
-  const auto admissible = [](float v) { return v == 0.0f || (v > 0.0f && v <= 1e6f); };
-  if (!admissible(rs.noise_threshold) || !admissible(rs.target_error))
-    throw InputError(path + ": the bundle's render settings: noise_threshold " + std::to_string(rs.noise_threshold) +
-                     ", target_error " + std::to_string(rs.target_error) + ": expected 0 (off) or from above 0 to 1e6");
-  if (adaptive_render(rs) && rs.min_spp < 2)  // above spp is the loader's default for spp < 16: min(min_spp, spp)
-    throw InputError(path + ": the bundle's render settings: min_spp " + std::to_string(rs.min_spp) +
-                     ": an adaptive render estimates its error from two halves: at least 2");
   if (adaptive_render(rs) && (b.range.begin != 0 || b.range.end != rs.spp))
     throw InputError(path + ": an adaptive render (noise_threshold, target_error) is rendered whole, not samples [" +
                      std::to_string(b.range.begin) + ", " + std::to_string(b.range.end) + ")");

@@ -135,14 +135,14 @@ static int run_render(const RenderCommand& cmd) {
     } else if (cmd.device == "cuda") {
       part.film = render_cuda_film(scene, range, stats, cuda);  // one launch: no progress to draw
     } else if (adaptive) {
-      ProgressBar bar(static_cast<uint64_t>(rs.width) * rs.height * rs.spp, !cmd.quiet);
-      adaptive_film =
-          render_cpu_adaptive(scene, cmd.threads, stats, [&](uint64_t done, uint64_t) { bar.update(done); });
+      ProgressBar bar(!cmd.quiet);
+      adaptive_film = render_cpu_adaptive(scene, cmd.threads, stats,
+                                          [&](uint64_t done, uint64_t total) { bar.update(done, total); });
       bar.finish();
     } else {
-      const uint64_t tiles = ((rs.width + 15) / 16) * static_cast<uint64_t>((rs.height + 15) / 16);
-      ProgressBar bar(tiles, !cmd.quiet);
-      part.film = render_cpu_film(scene, range, cmd.threads, stats, [&](uint64_t done, uint64_t) { bar.update(done); });
+      ProgressBar bar(!cmd.quiet);  // tiles, or under --schedule stream samples: each callback says
+      part.film = render_cpu_film(scene, range, cmd.threads, stats,
+                                  [&](uint64_t done, uint64_t total) { bar.update(done, total); });
       bar.finish();
     }
   });

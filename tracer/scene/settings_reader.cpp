@@ -4,6 +4,7 @@
 
 #include "kernel/integrator/ray_counts.h"
 #include "options/enum_names.h"
+#include "options/settings_check.h"
 
 namespace tracer {
 
@@ -63,6 +64,10 @@ RenderSettings read_settings(const Json* render, const Json& film, const std::st
                        ": adaptive sampling needs a sampler whose every prefix of samples "
                        "covers the whole pixel (stochastic or sobol), not " +
                        enum_name(rs.sampler));
+    if (rs.spp < 2)
+      throw InputError(where("spp") + ": adaptive sampling (" + key +
+                       ") estimates the error from two halves of a pixel's samples: at least 2, got " +
+                       std::to_string(rs.spp));
     if (rs.min_spp < 2)
       throw InputError(where("min_spp") + ": adaptive sampling estimates the error from two halves: at least 2, got " +
                        std::to_string(rs.min_spp));
@@ -72,6 +77,8 @@ RenderSettings read_settings(const Json* render, const Json& film, const std::st
                          std::to_string(rs.spp) + ", the most samples a pixel takes");
     }
   }
+  // What every render's settings hold, the check a bundle's reader makes too.
+  if (const auto v = settings_violation(rs)) throw InputError(where(v->key) + ": " + v->reason);
   return rs;
 }
 
