@@ -3,6 +3,8 @@
 // machine. It renders scene bundles and evaluates parity cases written by `tracer bundle`
 // and `tracer gpu-pack`, on the GPU or, with --device cpu, on the CPU from the same code.
 // Exit codes: 0 pass, 1 a hash or answer differs, 2 bad input or no usable device.
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
@@ -119,6 +121,14 @@ Options parse(int argc, char** argv) {
     if (o.command != "render") throw InputError("-o " + o.output + ": only render writes a film");
     check_output_location(o.output, "-o");
     refuse_outputs_naming_inputs({{o.output, "-o"}}, {o.input});
+  }
+  if (!o.expect.empty()) {  // compared after the render: checked before it
+    if (o.command != "render") throw InputError("--expect: only render compares its image's hash");
+    const bool hex = o.expect.size() == 45 && o.expect.rfind("sha1:", 0) == 0 &&
+                     std::all_of(o.expect.begin() + 5, o.expect.end(), [](char c) { return std::isxdigit(c) != 0; });
+    if (!hex) throw InputError("--expect " + o.expect + ": expected sha1: and 40 hexadecimal digits (a golden's hash)");
+    std::transform(o.expect.begin() + 5, o.expect.end(), o.expect.begin() + 5,
+                   [](char c) { return static_cast<char>(std::toupper(c)); });
   }
   if (o.threads == 0) o.threads = default_thread_count();
   return o;

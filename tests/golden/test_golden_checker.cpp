@@ -203,6 +203,13 @@ const BrokenCase kBroken[] = {
        b.write("golden/manifest.json", m);
      },
      "ball", "a tolerance needs a reason"},
+    {"name-too-long",  // a name of any length once reached std::regex's recursion in golden update --filter
+     [](const test::GoldenSandbox& b) {
+       std::string m = b.read("golden/manifest.json");
+       m.replace(m.find("\"box\""), 5, "\"" + std::string(101, 'b') + "\"");
+       b.write("golden/manifest.json", m);
+     },
+     "ball", "at most 100 characters"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Inputs, GoldenCheckerBroken, testing::ValuesIn(kBroken), [](const auto& info) {

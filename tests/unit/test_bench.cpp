@@ -98,6 +98,16 @@ TEST(Bench, RaysGivesEveryStructureTheSameHits) {
   }
   EXPECT_EQ(test::run_tracer("generate blob -o " + obj, &output), 2);
   EXPECT_NE(output.find("unknown mesh kind"), std::string::npos) << output;
+  // A scene of spheres gets every structure's row and no Embree row (it printed the rows, then exited 2).
+  const std::string spheres = (dir / "spheres.json").string();
+  std::ofstream(spheres) << R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
+    "film": {"width": 8, "height": 8}, "materials": {"m": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
+    "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}]})";
+  ASSERT_EQ(
+      test::run_tracer("bench rays " + spheres + " --rays 1024 --threads 1 --accel bvh,grid --repeats 1", &output), 0)
+      << output;
+  EXPECT_NE(output.find("\ngrid "), std::string::npos) << output;
+  EXPECT_EQ(output.find("\nembree 3 "), std::string::npos) << output;
   std::filesystem::remove_all(dir);
 }
 
@@ -111,7 +121,7 @@ TEST(Bench, RaysOnTheGpuMatchTheCpuOrSayWhyNot) {
   const int code =
       test::run_tracer("bench rays " + obj + " --rays 4096 --threads 1 --accel bvh,grid --device cuda", &output);
   if (code == 0) {
-    for (const char* row : {"\nbvh cuda ", "\ngrid cuda "}) {
+    for (const char* row : {"\nbvh cuda ", "\nbvh8 cuda ", "\ngrid cuda "}) {
       const size_t at = output.find(row);
       ASSERT_NE(at, std::string::npos) << row << " in " << output;
       EXPECT_NE(output.substr(at, output.find('\n', at + 1) - at).find(" same (trace "), std::string::npos) << output;

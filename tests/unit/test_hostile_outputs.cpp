@@ -57,6 +57,13 @@ TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
   EXPECT_EQ(test::run_command(std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu", &output), 2);
   EXPECT_NE(output.find("b.bundle: the bundle's view: grid: 0 cells along an axis (1 to 1024)"), std::string::npos)
       << output;
+  // An --expect that no hash can equal is refused before the render (it rendered, then exited 1).
+  write_bundle(bundle, encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, 1}, scene_path)));
+  EXPECT_EQ(
+      test::run_command(std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu --expect junk", &output),
+      2);
+  EXPECT_NE(output.find("--expect junk: expected sha1: and 40 hexadecimal digits"), std::string::npos) << output;
+  EXPECT_EQ(output.find("Mrays/s"), std::string::npos) << output;
 }
 
 // compare --diff and bench converge --csv/--plot had no check: naming an input (directly,

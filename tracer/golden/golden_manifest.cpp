@@ -13,8 +13,12 @@ namespace {
 
 constexpr const char* kFormat = "tracer-golden/1";
 
+// A golden's name names a test and a file; at most kMaxGoldenName characters, which also bounds
+// what `golden update --filter` (std::regex, which recurses per character) searches.
+constexpr size_t kMaxGoldenName = 100;
+
 bool valid_name(const std::string& name) {
-  if (name.empty() || name.front() == '-') return false;
+  if (name.empty() || name.front() == '-' || name.size() > kMaxGoldenName) return false;
   return std::all_of(name.begin(), name.end(),
                      [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-'; });
 }
@@ -46,7 +50,8 @@ std::optional<GoldenTolerance> read_compare(JsonObject& entry) {
 
 GoldenEntry read_entry(const std::string& name, const Json& value, const std::string& path, const std::string& file) {
   JsonObject obj(value, path, file);
-  if (!valid_name(name)) fail_at(file, path, "golden names use a-z, 0-9 and '-' (they name tests and files)");
+  if (!valid_name(name))
+    fail_at(file, path, "golden names use a-z, 0-9 and '-', at most 100 characters (they name tests and files)");
   GoldenEntry e;
   e.name = name;
   e.scene = obj.string("scene");

@@ -68,6 +68,11 @@ std::vector<GoldenChange> update_goldens(const UpdateRequest& request) {
                        ": has uncommitted edits; commit or revert them first, or pass --force:" + list);
     }
   }
+  // std::regex compiles and matches by recursion: a pattern of thousands of nested groups ran out
+  // of stack. 256 characters hold any name of the manifest (at most 100) and any useful pattern.
+  if (request.filter.size() > 256)
+    throw InputError("--filter: " + std::to_string(request.filter.size()) +
+                     " characters; at most 256 (golden names have at most 100)");
   std::regex filter;
   try {
     filter = std::regex(request.filter.empty() ? std::string(".*") : request.filter, std::regex::ECMAScript);
