@@ -160,6 +160,22 @@ TEST(GpuPack, RefusesADirectoryThatIsNotEmptyAndLeavesIt) {
   EXPECT_EQ(test::run_tracer("gpu-pack " + pack().string() + " --root " + TRACER_SOURCE_DIR, &out), 2) << out;
   EXPECT_NE(out.find("not an empty directory"), std::string::npos) << out;
   EXPECT_TRUE(fs::exists(pack() / "pack.tsv"));
+  // With a trailing slash, the same directory (it was read as a parent that does not exist).
+  EXPECT_EQ(test::run_tracer("gpu-pack " + pack().string() + "/ --root " + TRACER_SOURCE_DIR, &out), 2) << out;
+  EXPECT_NE(out.find("not an empty directory"), std::string::npos) << out;
+  EXPECT_EQ(test::run_tracer("gpu-pack /nonexistent-tracer-dir/pack/ --root " + std::string(TRACER_SOURCE_DIR), &out),
+            2)
+      << out;
+  EXPECT_NE(out.find("parent directory /nonexistent-tracer-dir does not exist"), std::string::npos) << out;
+  // A link to an empty directory is refused before the work (the whole pack was built, then the rename failed).
+  const fs::path dir = test::temp_dir("gpu-pack-link");
+  fs::create_directories(dir / "empty");
+  fs::create_symlink(dir / "empty", dir / "link");
+  EXPECT_EQ(test::run_tracer("gpu-pack " + (dir / "link").string() + " --root " + TRACER_SOURCE_DIR, &out), 2) << out;
+  EXPECT_NE(out.find("a symbolic link"), std::string::npos) << out;
+  EXPECT_TRUE(fs::is_empty(dir / "empty"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 2);  // no staging left
+  fs::remove_all(dir);
 }
 
 TEST(GpuRunner, LinksOnlyLibcLibmAndTheLoader) {

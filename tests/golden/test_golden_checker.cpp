@@ -210,6 +210,14 @@ const BrokenCase kBroken[] = {
        b.write("golden/manifest.json", m);
      },
      "ball", "at most 100 characters"},
+    {"option-beyond-a-limit",  // was reported as the scene's command-line --grid-resolution
+     [](const test::GoldenSandbox& b) {
+       std::string m = b.read("golden/manifest.json");
+       const size_t options = m.find("\"options\": {", m.find("\"ball\""));
+       m.replace(options, 12, R"("options": {"grid_resolution": 5000, )");
+       b.write("golden/manifest.json", m);
+     },
+     "ball", "manifest.json: goldens.ball.options.grid_resolution (the options of "},
 };
 
 INSTANTIATE_TEST_SUITE_P(Inputs, GoldenCheckerBroken, testing::ValuesIn(kBroken), [](const auto& info) {

@@ -11,17 +11,6 @@
 namespace fs = std::filesystem;
 
 namespace tracer {
-namespace {
-
-// DIR without a trailing separator, so that its parent and its name are what the user meant.
-fs::path without_trailing_separator(const std::string& dir) {
-  fs::path p = fs::path(dir).lexically_normal();
-  if (!p.has_filename() && p.has_parent_path() && p != p.root_path()) p = p.parent_path();
-  return p;
-}
-
-}  // namespace
-
 PtxDirectory::PtxDirectory(const std::string& dir, bool owned_by_build) : owned_by_build_(owned_by_build) {
   const fs::path p = without_trailing_separator(dir);
   dir_ = p.string();

@@ -55,7 +55,7 @@ const AccelKind kAccels[] = {AccelKind::Bvh,          AccelKind::Lbvh, AccelKind
 
 Scene golden_scene(const GoldenManifest& manifest, const std::string& name, std::optional<AccelKind> accel) {
   const GoldenEntry& e = manifest.find(name);
-  RenderOverrides o{e.options};
+  RenderOverrides o = golden_overrides(manifest, e);
   o.accel = accel ? accel : e.options.accel;
   return load_scene(manifest.scene_path(e), o);
 }
@@ -246,7 +246,7 @@ std::string trace_variant_rows(const GoldenManifest& manifest, const std::vector
       const int v = trace_variant_of(g.features, settings, wide_tree);
       if (v < 0 || covered[v]) continue;
       covered[v] = true;
-      RenderOverrides options{g.entry->options};
+      RenderOverrides options = golden_overrides(manifest, *g.entry);
       options.accel = settings.accel;
       const std::string name = g.entry->name + "@" + accel, file = "bundles/" + name + ".bundle";
       write_scene_bundle(load_scene(manifest.scene_path(*g.entry), options), g.entry->scene, out / file, wide_tree);
@@ -263,7 +263,7 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
   std::vector<bool> traced(kTraceVariantCount);
   std::vector<LoadedGolden> renders;
   for (const GoldenEntry& e : manifest.entries) {
-    const Scene scene = load_scene(manifest.scene_path(e), RenderOverrides{e.options});
+    const Scene scene = load_scene(manifest.scene_path(e), golden_overrides(manifest, e));
     const std::string file = "bundles/" + e.name + ".bundle";
     write_scene_bundle(scene, e.scene, out / file);
     const std::string kind = e.image == GoldenImage::SampleMap ? "sample-map " : "golden ";
@@ -296,11 +296,15 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
 }  // namespace
 
 static int run_gpu_pack(const GpuPackCommand& cmd) {
-  const fs::path dir(cmd.dir);
-  if (fs::exists(dir) && !(fs::is_directory(dir) && fs::is_empty(dir)))
+  const fs::path dir = without_trailing_separator(cmd.dir);  // "pack/" is "pack", whose parent is "."
+  const fs::file_status st = fs::symlink_status(dir);
+  if (fs::is_symlink(st))
+    throw InputError(cmd.dir + ": a symbolic link; gpu-pack writes a new directory, or into an empty one, by name");
+  if (fs::exists(st) && !(fs::is_directory(st) && fs::is_empty(dir)))
     throw InputError(cmd.dir + ": exists and is not an empty directory; gpu-pack writes a new one");
   const fs::path parent = dir.parent_path().empty() ? "." : dir.parent_path();
-  if (!fs::is_directory(parent)) throw InputError(cmd.dir + ": parent directory does not exist");
+  if (!fs::is_directory(parent))
+    throw InputError(cmd.dir + ": parent directory " + parent.string() + " does not exist");
   const std::string runner = cmd.runner.empty() ? runner_beside_this_binary() : cmd.runner;
   if (!fs::is_regular_file(runner))
     throw InputError(runner + ": no tracer-gpu runner there (build it: cmake --build build --target tracer-gpu)");

@@ -31,7 +31,7 @@ GoldenRender render_golden(const GoldenManifest& manifest, const GoldenEntry& en
     throw InputError(manifest.path + ": goldens." + entry.name + ".scene: scene file " + scene_path +
                      " does not exist");
   const auto start = std::chrono::steady_clock::now();
-  const Scene scene = load_scene(scene_path, RenderOverrides{entry.options});
+  const Scene scene = load_scene(scene_path, golden_overrides(manifest, entry));
   GoldenRender r;
   RenderStats stats;
   if (entry.image == GoldenImage::SampleMap) {

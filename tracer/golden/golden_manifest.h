@@ -46,6 +46,14 @@ struct GoldenManifest {
   const GoldenEntry& find(const std::string& name) const;  // InputError when absent
 };
 
+// A golden's options as overrides of its scene, whose messages name the manifest and the
+// entry ("golden/manifest.json: goldens.ball.options.spp"), not the command line.
+inline RenderOverrides golden_overrides(const GoldenManifest& manifest, const GoldenEntry& e) {
+  RenderOverrides o{e.options};
+  o.origin = manifest.path + ": goldens." + e.name + ".options";
+  return o;
+}
+
 std::string manifest_path(const std::string& root);
 GoldenManifest read_manifest(const std::string& root);                    // InputError naming file and key
 void add_manifest(OutputBatch& outputs, const GoldenManifest& manifest);  // in a stable layout, on commit

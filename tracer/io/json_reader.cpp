@@ -87,6 +87,20 @@ class CheckedJsonBuilder {
   int depth_ = 0;
 };
 
+// "LINE:COLUMN" of byte `offset` of `text`.
+std::string line_column(const std::string& text, size_t offset) {
+  size_t line = 1, column = 1;
+  for (size_t i = 0; i < std::min(offset, text.size()); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
 }  // namespace
 
 Json parse_json_text(const std::string& text, const std::string& file) {
@@ -97,22 +111,20 @@ Json parse_json_text(const std::string& text, const std::string& file) {
     return result;
   } catch (const Json::parse_error& e) {
     // nlohmann reports a byte offset; turn it into line:column.
-    size_t line = 1, column = 1;
-    const size_t end = std::min<size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
-    for (size_t i = 0; i < end; ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        column = 1;
-      } else {
-        ++column;
-      }
-    }
     std::string what = e.what();
     const size_t colon = what.find("parse error");
     if (colon != std::string::npos) what = what.substr(colon);
-    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": malformed JSON: " + what);
-  } catch (const Json::out_of_range& e) {  // e.g. 1e999: no position is reported
-    throw InputError(file + ": malformed JSON: " + e.what());
+    throw InputError(file + ":" + line_column(text, e.byte > 0 ? e.byte - 1 : 0) + ": malformed JSON: " + what);
+  } catch (const Json::out_of_range& e) {
+    // A number beyond a double (1e400): nlohmann names the token ("number overflow parsing
+    // '1e400'"), not where it is; its first occurrence in the text is the place.
+    const std::string what = e.what();
+    const size_t open = what.find('\''), close = what.rfind('\'');
+    const std::string token = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+    const size_t at = token.empty() ? std::string::npos : text.find(token);
+    throw InputError(file + (at == std::string::npos ? "" : ":" + line_column(text, at)) +
+                     ": malformed JSON: the number " + (token.empty() ? std::string("") : token + " ") +
+                     "is beyond the range of a double (about 1.8e308)");
   }
 }
 

@@ -19,4 +19,10 @@ std::filesystem::path make_new_directory(const std::filesystem::path& parent, co
   return std::filesystem::path(name.data());
 }
 
+std::filesystem::path without_trailing_separator(const std::string& dir) {
+  std::filesystem::path p = std::filesystem::path(dir).lexically_normal();
+  if (!p.has_filename() && p.has_parent_path() && p != p.root_path()) p = p.parent_path();
+  return p;
+}
+
 }  // namespace tracer

@@ -10,4 +10,8 @@ namespace tracer {
 // when it cannot.
 std::filesystem::path make_new_directory(const std::filesystem::path& parent, const std::string& prefix);
 
+// A directory named on the command line, without a trailing separator ("out/" is "out"), so
+// that its parent and its name are the ones the user meant.
+std::filesystem::path without_trailing_separator(const std::string& dir);
+
 }  // namespace tracer

@@ -51,6 +51,9 @@ struct RenderOverrides : RenderOptions {
   // glTF files only (docs/gltf.md): the camera, by name or index, and a constant background.
   std::optional<std::string> camera;
   std::optional<Vec3> background;
+  // Where the options come from, for messages: empty for the command line, else the file and
+  // key path that set them ("golden/manifest.json: goldens.ball.options").
+  std::string origin;
 };
 
 // Reads the options of `section` ("render", "film"; nullptr: every option) present in obj;

@@ -24,7 +24,9 @@ RenderSettings read_settings(const Json* render, const Json& film, const std::st
   overrides.apply_to(rs);
   // Where an option's value came from, for the messages below.
   const auto where = [&](const std::string& name) {
-    if (overrides.has(name)) return file + ": command line " + option_flag(name);
+    if (overrides.has(name))
+      return overrides.origin.empty() ? file + ": command line " + option_flag(name)
+                                      : overrides.origin + "." + name + " (the options of " + file + ")";
     for (const OptionInfo& o : option_table())
       if (name == o.name) return file + ": " + o.section + "." + name;
     return file + ": " + name;
