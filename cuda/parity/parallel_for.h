@@ -30,7 +30,13 @@ void parallel_for(size_t n, unsigned threads, Fn fn, size_t chunk = 64) {
     }
   };
   std::vector<std::thread> pool;
-  for (unsigned t = 1; t < std::max(1u, threads); ++t) pool.emplace_back(work);
+  try {
+    for (unsigned t = 1; t < std::max(1u, threads); ++t) pool.emplace_back(work);
+  } catch (...) {  // a thread the machine could not start: stop the others, then report it
+    next = n;
+    for (std::thread& t : pool) t.join();
+    throw;
+  }
   work();
   for (std::thread& t : pool) t.join();
   if (error) std::rethrow_exception(error);

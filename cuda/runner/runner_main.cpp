@@ -22,6 +22,7 @@
 #include "io/output_paths.h"
 #include "io/sha1.h"
 #include "io/text_file.h"
+#include "io/thread_start.h"
 #include "kernel/accel/trace_variants.h"
 #include "parity/parity_gpu.h"
 #include "parity/parity_suite.h"
@@ -131,6 +132,8 @@ Options parse(int argc, char** argv) {
                    [](char c) { return static_cast<char>(std::toupper(c)); });
   }
   if (o.threads == 0) o.threads = default_thread_count();
+  if (const std::string failure = thread_start_failure(o.threads); !failure.empty())
+    throw InputError("--threads " + std::to_string(o.threads) + ": " + failure);
   return o;
 }
 

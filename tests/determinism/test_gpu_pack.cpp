@@ -258,8 +258,12 @@ TEST_F(BundleInput, TheRunnerRendersItAndAWrongExpectedHashFails) {
   EXPECT_TRUE(fs::exists(film));
   const std::string hash = out.substr(0, out.find(' '));
   EXPECT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu --expect " + hash, &out), 0) << out;
-  EXPECT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu --expect sha1:0", &out), 1) << out;
+  const std::string wrong = "sha1:" + std::string(40, '0');
+  EXPECT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu --expect " + wrong, &out), 1) << out;
   EXPECT_NE(out.find("FAIL"), std::string::npos) << out;
+  // A hash no render can have is refused before the render.
+  EXPECT_EQ(test::run_command(runner() + " render " + bundle_ + " --device cpu --expect sha1:0", &out), 2) << out;
+  EXPECT_NE(out.find("--expect sha1:0: expected sha1: and 40 hexadecimal digits"), std::string::npos) << out;
 }
 
 // --schedule stream renders the megakernel's film at any width; bad schedules exit 2 and

@@ -5,6 +5,7 @@
 // picture rather than a blank canvas.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <set>
 
 #include "golden_sandbox.h"
@@ -31,6 +32,23 @@ TEST(GoldenReport, ACheckAloneLeavesTheReportItNames) {
   const std::string page = test::read_file(index);
   EXPECT_NE(page.find("<tr class=\"fail\" id=\"ball\">"), std::string::npos) << page;
   EXPECT_NE(page.find("1 differ"), std::string::npos) << page;
+}
+
+// A row missing a key (edited, cut short) is refused naming the file and the key; it printed the
+// JSON library's bare exception.
+TEST(GoldenReport, ARowMissingAKeyIsRefusedNamingTheFile) {
+  const test::GoldenSandbox box("report-bad-row");
+  box.move_ball();
+  const auto report = box.root / "report";
+  std::string output;
+  ASSERT_EQ(test::run_tracer(box.check_args("ball", report.string()), &output), 1) << output;
+  std::string row = test::read_file(report / "rows" / "ball.json");
+  row.replace(row.find("\"scene\""), 7, "\"scenery\"");
+  std::ofstream(report / "rows" / "ball.json") << row;
+  EXPECT_EQ(test::run_tracer("golden report --report " + report.string(), &output), 2) << output;
+  EXPECT_NE(output.find("ball.json: not a report row as golden check writes it: key 'scene' not found"),
+            std::string::npos)
+      << output;
 }
 
 TEST(GoldenReport, OpensInHeadlessChromiumWithEveryImage) {

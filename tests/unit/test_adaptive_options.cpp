@@ -75,6 +75,10 @@ TEST_F(AdaptiveOptions, CombinationsThatCannotBeAdaptiveAreRefused) {
   expect_refused("render " + scene(R"("noise_threshold": 0.1, "sampler": "stratified")") + out(),
                  "stochastic or sobol");
   expect_refused("render " + scene(R"("noise_threshold": 0.1, "sampler": "grid")") + out(), "stochastic or sobol");
+  // An EXR sample map of counts above 2^24 (16777217 was written as 16777216): refused before the render.
+  expect_refused("render " + scene(R"("noise_threshold": 0.1)") + " --spp 16777217 --sample-map " +
+                     (dir_ / "map.exr").string() + out(),
+                 "a float image holds counts exactly only up to 2^24");
   expect_refused(
       "render " + scene(R"("noise_threshold": 0.1)") + " --samples 0:32 -o " + (dir_ / "out.partial").string(),
       "cannot be split into sample ranges");

@@ -9,6 +9,7 @@
 #include "bundle/scene_bundle.h"
 #include "hostile_input.h"
 #include "image/image_io.h"
+#include "sanitizer.h"
 #include "scene/scene_loader.h"
 #include "test_util.h"
 
@@ -64,6 +65,30 @@ TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
       2);
   EXPECT_NE(output.find("--expect junk: expected sha1: and 40 hexadecimal digits"), std::string::npos) << output;
   EXPECT_EQ(output.find("Mrays/s"), std::string::npos) << output;
+}
+
+// A thread count the machine cannot start (here: each thread's stack under ulimit -v) is refused
+// naming --threads before any work: render exited 1 in the OpenMP runtime's words, tracer-gpu
+// and gpu-pack aborted with threads still joinable (gpu-pack's staging directory stayed).
+TEST_F(HostileInput, ThreadsTheMachineCannotStartAreRefusedBeforeTheWork) {
+#if TRACER_UNDER_ADDRESS_SANITIZER
+  GTEST_SKIP() << "ulimit -v cannot hold an AddressSanitizer build (its shadow memory reserves terabytes)";
+#endif
+  const std::string scene_path = scene_file(scene_text(R"("spp": 1)"));
+  const std::string limited = "ulimit -v 2000000 && timeout 60 ";  // 2 GB: 1024 stacks of 8 MB do not fit
+  std::string output;
+  EXPECT_EQ(test::run_command(limited + TRACER_BINARY + " render " + scene_path + " --threads 1024" + out(), &output),
+            2)
+      << output;
+  EXPECT_NE(output.find("--threads: \"1024\": the machine could not start thread"), std::string::npos) << output;
+  EXPECT_FALSE(fs::exists(dir_ / "out.png"));
+  const std::string bundle = (dir_ / "t.bundle").string();
+  const Scene scene = load_scene(scene_path);
+  write_bundle(bundle, encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, 1}, scene_path)));
+  EXPECT_EQ(
+      test::run_command(limited + TRACER_GPU_BINARY + " render " + bundle + " --device cpu --threads 4096", &output), 2)
+      << output;
+  EXPECT_NE(output.find("--threads 4096: the machine could not start thread"), std::string::npos) << output;
 }
 
 // compare --diff and bench converge --csv/--plot had no check: naming an input (directly,

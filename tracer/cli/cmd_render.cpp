@@ -75,8 +75,9 @@ static Vec3 parse_colour_text(const std::string& text, const std::string& contex
   size_t start = 0;
   for (int i = 0; i < 3; ++i) {
     const size_t comma = i < 2 ? text.find(',', start) : text.size();
-    const auto v = comma == std::string::npos ? std::nullopt
-                                              : parse_decimal(std::string_view(text).substr(start, comma - start), 0.0, 1e6);
+    const auto v = comma == std::string::npos
+                       ? std::nullopt
+                       : parse_decimal(std::string_view(text).substr(start, comma - start), 0.0, 1e6);
     if (!v || (i == 2 && comma != text.size()))
       throw InputError(context + ": expected R,G,B, three decimals from 0 to 1e6, got \"" + text + "\"");
     c[i] = static_cast<float>(*v);
@@ -90,7 +91,8 @@ RenderOverrides scene_overrides(const RenderCommand& cmd) {
   for (const auto& [name, text] : cmd.options)
     if (text) parse_option_text(name, *text, cmd.scene + ": command line ", overrides);
   overrides.camera = cmd.camera;
-  if (cmd.background) overrides.background = parse_colour_text(*cmd.background, cmd.scene + ": command line --background");
+  if (cmd.background)
+    overrides.background = parse_colour_text(*cmd.background, cmd.scene + ": command line --background");
   return overrides;
 }
 
@@ -122,6 +124,12 @@ static int run_render(const RenderCommand& cmd) {
   if (!cmd.sample_map.empty() && !adaptive)
     throw InputError(cmd.scene + ": --sample-map: only an adaptive render (noise_threshold, target_error) has one");
   if (!cmd.sample_map.empty()) check_image_output(cmd.sample_map, "--sample-map");
+  // A float image holds whole numbers exactly up to 2^24: 16,777,217 samples would read 16,777,216.
+  if (!cmd.sample_map.empty() && is_float_format(cmd.sample_map) && rs.spp > (1u << 24))
+    throw InputError(cmd.scene + ": --sample-map " + cmd.sample_map + ": a pixel may take up to " +
+                     std::to_string(rs.spp) +
+                     " samples, and a float image holds counts exactly only up to 2^24 (16777216): lower spp "
+                     "or write the map as PNG (each count as its fraction of spp)");
   const SampleRange range = partial ? parse_sample_range(cmd.samples, rs.spp) : SampleRange{0, rs.spp};
   AdaptiveFilm adaptive_film;
   RenderStats stats;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/number_checks.h"
+#include "io/thread_start.h"
 
 namespace tracer {
 
@@ -29,8 +30,18 @@ struct RegisterCommand {
 };
 
 // The `--threads` option every CPU command takes: 0 (all) to 1024.
+// --threads N: a count up to 1024 that this process can start (io/thread_start.h), checked
+// before any work.
 inline void add_threads_option(CLI::App& app, int& threads) {
-  app.add_option("--threads", threads, "CPU threads, at most 1024 (default: all)")->check(count_in(0, 1024));
+  app.add_option("--threads", threads, "CPU threads, at most 1024 (default: all)")
+      ->check(count_in(0, 1024))
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            const std::optional<uint64_t> n = parse_count(text, 1024);
+            const std::string failure = n && *n > 1 ? thread_start_failure(static_cast<unsigned>(*n)) : "";
+            return failure.empty() ? failure : "\"" + text + "\": " + failure;
+          },
+          "startable"));
 }
 
 }  // namespace tracer

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "image/image_io.h"
@@ -285,7 +286,25 @@ ReportCounts assemble_report(const std::string& report_dir) {
   if (fs::is_directory(dir / "rows"))
     for (const auto& file : fs::directory_iterator(dir / "rows")) {
       if (file.path().extension() != ".json") continue;
-      rows.push_back(parse_json_text(read_text_file(file.path().string(), "report row"), file.path().string()));
+      const std::string path = file.path().string();
+      Json row = parse_json_text(read_text_file(path, "report row"), path);
+      // A row golden check did not write as it writes them (edited, cut short) is refused naming
+      // the file and what is wrong, not with the JSON library's exception.
+      try {
+        static const std::set<std::string> kStatuses = {"error", "fail", "skipped", "pass"};
+        if (!kStatuses.count(row.at("status").get<std::string>()))
+          throw InputError(path + ": status: expected error, fail, skipped or pass");
+        for (const char* key : {"name", "scene", "options", "message"})
+          if (!row.at(key).is_string())
+            throw InputError(path + ": " + key + ": expected a string (a report row as golden check writes it)");
+        row_html(row);
+      } catch (const Json::exception& e) {
+        std::string what = e.what();  // "[json.exception.out_of_range.403] key 'scene' not found"
+        if (what.rfind("[json.exception", 0) == 0 && what.find("] ") != std::string::npos)
+          what = what.substr(what.find("] ") + 2);
+        throw InputError(path + ": not a report row as golden check writes it: " + what);
+      }
+      rows.push_back(std::move(row));
     }
   // Failing rows first (errors, then differences), then skipped, then passes; by name within each.
   const auto rank = [](const Json& r) {
