@@ -282,12 +282,17 @@ void reset_report(const std::string& report_dir) {
 
 ReportCounts assemble_report(const std::string& report_dir) {
   const fs::path dir(report_dir);
-  std::vector<Json> rows;
+  struct Row {
+    Json json;
+    std::string html;  // made once, when the row is read: making it is what checks its keys
+  };
+  std::vector<Row> rows;
   if (fs::is_directory(dir / "rows"))
     for (const auto& file : fs::directory_iterator(dir / "rows")) {
       if (file.path().extension() != ".json") continue;
       const std::string path = file.path().string();
       Json row = parse_json_text(read_text_file(path, "report row"), path);
+      std::string html;
       // A row golden check did not write as it writes them (edited, cut short) is refused naming
       // the file and what is wrong, not with the JSON library's exception.
       try {
@@ -297,29 +302,30 @@ ReportCounts assemble_report(const std::string& report_dir) {
         for (const char* key : {"name", "scene", "options", "message"})
           if (!row.at(key).is_string())
             throw InputError(path + ": " + key + ": expected a string (a report row as golden check writes it)");
-        row_html(row);
+        html = row_html(row);
       } catch (const Json::exception& e) {
         std::string what = e.what();  // "[json.exception.out_of_range.403] key 'scene' not found"
         if (what.rfind("[json.exception", 0) == 0 && what.find("] ") != std::string::npos)
           what = what.substr(what.find("] ") + 2);
         throw InputError(path + ": not a report row as golden check writes it: " + what);
       }
-      rows.push_back(std::move(row));
+      rows.push_back({std::move(row), std::move(html)});
     }
   // Failing rows first (errors, then differences), then skipped, then passes; by name within each.
-  const auto rank = [](const Json& r) {
-    const std::string s = r["status"].get<std::string>();
+  const auto rank = [](const Row& r) {
+    const std::string s = r.json["status"].get<std::string>();
     return s == "error" ? 0 : s == "fail" ? 1 : s == "skipped" ? 2 : 3;
   };
-  std::sort(rows.begin(), rows.end(), [&](const Json& a, const Json& b) {
-    return std::pair(rank(a), a["name"].get<std::string>()) < std::pair(rank(b), b["name"].get<std::string>());
+  std::sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) {
+    return std::pair(rank(a), a.json["name"].get<std::string>()) <
+           std::pair(rank(b), b.json["name"].get<std::string>());
   });
   ReportCounts counts;
   std::string body;
-  for (const Json& r : rows) {
+  for (const Row& r : rows) {
     const int k = rank(r);
     (k == 0 ? counts.errors : k == 1 ? counts.failed : k == 2 ? counts.skipped : counts.passed) += 1;
-    body += row_html(r);
+    body += r.html;
   }
   std::ostringstream html;
   html << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>tracer golden report</title><style>"

@@ -7,15 +7,10 @@
 #include "options/effects.h"
 #include "options/enum_names.h"
 #include "options/number_text.h"
+#include "options/settings_check.h"
 
 namespace tracer {
 namespace {
-
-constexpr double kThresholdMax = 1e6;  // the largest threshold option (noise_threshold)
-// The smallest: the renderer holds a threshold as a float, where a decimal such as 1e-50 is 0
-// ("off", so a uniform render) and 1e-40 is subnormal; float's smallest normal number is the
-// least value that means what its text says.
-constexpr double kThresholdMin = std::numeric_limits<float>::min();
 
 // An option's value from its JSON form (scene file, manifest, partial file): numbers for
 // counts and seeds, true/false for switches, names for enums and effects.
@@ -29,7 +24,8 @@ T value_from_json(const Json& v, const std::string& path, const std::string& fil
     return static_cast<T>(v.get<uint64_t>());
   } else if constexpr (std::is_same_v<T, float>) {  // thresholds: positive and finite
     if (!v.is_number() || !(v.get<double>() >= kThresholdMin) || !(v.get<double>() <= kThresholdMax))
-      fail_at(file, path, "expected a number from 1.2e-38 (a float's smallest normal number) to 1e6, got " + describe(v));
+      fail_at(file, path,
+              "expected a number from 1.2e-38 (a float's smallest normal number) to 1e6, got " + describe(v));
     return static_cast<float>(v.get<double>());
   } else if constexpr (std::is_same_v<T, Switch>) {
     if (!v.is_boolean()) fail_at(file, path, "expected true or false, got " + describe(v));

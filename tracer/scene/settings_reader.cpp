@@ -59,20 +59,12 @@ RenderSettings read_settings(const Json* render, const Json& film, const std::st
     throw InputError(where("min_spp") +
                      ": min_spp is adaptive sampling's minimum; it needs noise_threshold or "
                      "target_error");
-  const std::string key = rs.noise_threshold > 0.0f ? "noise_threshold" : "target_error";
   if (adaptive) {  // adaptive sampling (docs/path.md)
     if (rs.sampler == SamplerKind::Center || rs.sampler == SamplerKind::Grid || rs.sampler == SamplerKind::Stratified)
       throw InputError(where("noise_threshold") +
                        ": adaptive sampling needs a sampler whose every prefix of samples "
                        "covers the whole pixel (stochastic or sobol), not " +
                        enum_name(rs.sampler));
-    if (rs.spp < 2)
-      throw InputError(where("spp") + ": adaptive sampling (" + key +
-                       ") estimates the error from two halves of a pixel's samples: at least 2, got " +
-                       std::to_string(rs.spp));
-    if (rs.min_spp < 2)
-      throw InputError(where("min_spp") + ": adaptive sampling estimates the error from two halves: at least 2, got " +
-                       std::to_string(rs.min_spp));
     if (overrides.has("min_spp") || from_file.has("min_spp")) {
       if (rs.min_spp > rs.spp)
         throw InputError(where("min_spp") + ": " + std::to_string(rs.min_spp) + " is above spp " +
