@@ -3,6 +3,9 @@
 // over uncommitted edits under golden/ unless --force.
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 #include "golden/golden_manifest.h"
 #include "golden_sandbox.h"
 #include "io/json_reader.h"
@@ -127,6 +130,28 @@ TEST(GoldenUpdate, MissingImageWithAnUnchangedRenderIsRepaired) {
   EXPECT_EQ(test::run_tracer(update_args(box, "--force"), &output), 0) << output;
   EXPECT_NE(output.find("repaired"), std::string::npos) << output;
   EXPECT_EQ(test::run_tracer(box.check_args("box"), &output), 0) << output;
+}
+
+// The manifest is written by appending each entry in name order (writing it by key lookup took
+// time quadratic in its size): a large manifest keeps every entry, in order, as it was.
+TEST(GoldenUpdate, UpdatingOneOfManyGoldensKeepsEveryOtherEntryInOrder) {
+  const test::GoldenSandbox box("many");
+  std::string m = box.read("golden/manifest.json");
+  std::string extra;
+  for (int i = 0; i < 5000; ++i)
+    extra += "\"many-" + std::to_string(i) + "\": {\"scene\": \"scenes/ball.json\"}, ";
+  m.insert(m.find("\"ball\""), extra);
+  box.write("golden/manifest.json", m);
+  const std::vector<GoldenEntry> before = read_manifest(box.root.string()).entries;
+  std::string output;
+  box.write("scenes/ball.json", test::sandbox_scene(test::kSandboxBox));
+  EXPECT_EQ(test::run_tracer(update_args(box, "--force --filter '^ball$'"), &output), 0) << output;
+  const std::vector<GoldenEntry> after = read_manifest(box.root.string()).entries;
+  ASSERT_EQ(after.size(), before.size());
+  for (size_t i = 0; i < after.size(); ++i) {
+    EXPECT_EQ(after[i].name, before[i].name);
+    EXPECT_EQ(after[i].hash == before[i].hash, after[i].name != "ball") << after[i].name;
+  }
 }
 
 }  // namespace

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "io/output_batch.h"
 #include "io/text_file.h"
@@ -119,6 +122,12 @@ void add_manifest(OutputBatch& outputs, const GoldenManifest& manifest) {
   nlohmann::ordered_json doc;
   doc["format"] = kFormat;
   doc["goldens"] = nlohmann::ordered_json::object();
+  // ordered_json's operator[] and emplace compare the new key with every key held, which made
+  // writing n entries take n^2/2 comparisons (200k goldens: 45 s). The names are distinct and
+  // sorted (read_manifest), so each entry is appended to the object's vector of pairs.
+  using Pairs = std::vector<std::pair<const std::string, nlohmann::ordered_json>>;
+  Pairs& goldens = doc["goldens"].get_ref<nlohmann::ordered_json::object_t&>();
+  goldens.reserve(manifest.entries.size());
   for (const GoldenEntry& e : manifest.entries) {
     nlohmann::ordered_json entry;
     entry["scene"] = e.scene;
@@ -130,7 +139,7 @@ void add_manifest(OutputBatch& outputs, const GoldenManifest& manifest) {
           {"fail", e.tolerance->fail}, {"failpercent", e.tolerance->failpercent}, {"why", e.tolerance->why}};
     else
       entry["compare"] = "exact";
-    doc["goldens"][e.name] = entry;
+    goldens.emplace_back(e.name, std::move(entry));
   }
   outputs.add(manifest.path, doc.dump(2) + "\n");
 }
