@@ -21,6 +21,7 @@
 #include "io/out_of_memory.h"
 #include "io/output_paths.h"
 #include "io/sha1.h"
+#include "io/standard_output.h"
 #include "io/text_file.h"
 #include "io/thread_start.h"
 #include "kernel/accel/trace_variants.h"
@@ -374,11 +375,7 @@ int run_bench(const Options& o) {
   return 0;
 }
 
-}  // namespace
-}  // namespace tracer
-
-int main(int argc, char** argv) {
-  using namespace tracer;
+int run_command(int argc, char** argv) {
   try {
     const Options o = parse(argc, argv);
     if (o.command == "render") return run_render(o);
@@ -396,3 +393,8 @@ int main(int argc, char** argv) {
     return 2;
   }
 }
+
+}  // namespace
+}  // namespace tracer
+
+int main(int argc, char** argv) { return tracer::exit_code_after_flushing_stdout(tracer::run_command(argc, argv)); }

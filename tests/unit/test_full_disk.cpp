@@ -103,6 +103,7 @@ class FullDisk : public ::testing::Test {
       SCOPED_TRACE(args + " with " + std::to_string(free_kib) + " KiB free");
       EXPECT_EQ(status, 2) << output;
       EXPECT_NE(output.find("cannot write"), std::string::npos) << output;
+      EXPECT_NE(output.find("No space left on device"), std::string::npos) << output;
       EXPECT_NE(output.find(target), std::string::npos) << output;
       EXPECT_EQ(output.find("wrote "), std::string::npos) << output;
       const auto before = files_under(dir_ / "earlier"), after = files_under(dir_ / "after");
@@ -157,6 +158,27 @@ TEST_F(FullDisk, GoldenUpdateWritesImagesAndManifestTogetherOrNotAtAll) {
   std::ofstream(dir_ / "earlier/golden-root/scenes/ball.json")
       << test::sandbox_scene(R"({"type": "sphere", "center": [0, 0.5, 0], "radius": 0.4, "material": "red"})");
   expect_clean_failure("golden update --force --root DISK/golden-root", "DISK/golden-root/golden/");
+}
+
+// The audit's PTX directory: its marker, the first file written, says why it cannot be written
+// (before: "cannot write .tracer-audit-ptx", no reason); exit 77 in a build without nvcc.
+TEST_F(FullDisk, AuditCudaSaysTheDiskIsFull) {
+  fs::create_directories(dir_ / "in/tree/cuda");
+  std::ofstream(dir_ / "in/tree/cuda/k.cu") << "__global__ void k(float* x) { x[0] += 1.0f; }\n";
+  expect_clean_failure("audit cuda --root " + (dir_ / "in/tree").string() + " --ptx-dir DISK/ptx", "DISK/ptx");
+}
+
+// What a command prints must reach its reader: stdout on a full disk or closed was lost while
+// the command exited 0.
+TEST(FullStdout, PrintingToAFullDiskOrAClosedStdoutExitsTwo) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full on this machine";
+  const std::string scene = test::source_path("scenes/cornell-box.json");
+  for (const std::string redirect : {"> /dev/full", ">&-"})
+    for (const std::string& command : {"info " + scene, "golden list --root " + std::string(TRACER_SOURCE_DIR)}) {
+      std::string output;
+      EXPECT_EQ(test::run_tracer(command + " " + redirect, &output), 2) << command << " " << redirect;
+      EXPECT_NE(output.find("error: standard output: cannot write: "), std::string::npos) << output;
+    }
 }
 
 }  // namespace

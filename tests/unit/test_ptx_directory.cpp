@@ -82,5 +82,29 @@ TEST(PtxDirectory, TwoSourcesNeverShareAPtxFile) {
   EXPECT_EQ(ptx_path_for("d", "cuda/gpu_film.cu", "90"), "d/cuda/gpu_film.cu.compute_90.ptx");
 }
 
+// nvcc failing is no verdict on the instructions (before, exit 1 "FAIL", and the incomplete PTX
+// replaced the earlier audit's): exit 2, and the earlier directory as it was.
+TEST(PtxDirectory, AnNvccFailureExitsTwoAndKeepsTheEarlierAuditsPtx) {
+  const fs::path dir = test::temp_dir("ptx-directory-nvcc-fails");
+  fs::create_directories(dir / "tree/cuda");
+  spill(dir / "tree/cuda/broken.cu", "#error this source does not compile\n");
+  fs::create_directories(dir / "ptx");
+  spill(dir / "ptx" / kPtxDirectoryMarker, "an earlier audit\n");
+  spill(dir / "ptx/earlier.ptx", "earlier PTX");
+  std::string output;
+  const int status = test::run_tracer("audit cuda --root " + (dir / "tree").string() + " --ptx-dir " +
+                                          (dir / "ptx").string(),
+                                      &output);
+  if (status == 77) GTEST_SKIP() << output;
+  EXPECT_EQ(status, 2) << output;
+  EXPECT_NE(output.find("nvcc failed on 2 of 2 modules (the first: cuda/broken.cu"), std::string::npos) << output;
+  EXPECT_NE(output.find("this source does not compile"), std::string::npos) << output;
+  EXPECT_EQ(slurp(dir / "ptx/earlier.ptx"), "earlier PTX");
+  size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
+  EXPECT_EQ(entries, 2u) << "a staging directory was left beside " << dir / "ptx";
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace tracer

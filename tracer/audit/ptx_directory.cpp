@@ -1,12 +1,12 @@
 #include "audit/ptx_directory.h"
 
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <system_error>
 
 #include "io/input_error.h"
 #include "io/new_directory.h"
+#include "io/output_batch.h"
 
 namespace fs = std::filesystem;
 
@@ -27,10 +27,13 @@ PtxDirectory::PtxDirectory(const std::string& dir, bool owned_by_build) : owned_
   fs::create_directories(parent, ec);
   if (!fs::is_directory(parent)) throw InputError(parent.string() + ": cannot create the directory (--ptx-dir)");
   staging_ = make_new_directory(parent, p.filename().string() + ".partial-").string();
-  std::ofstream marker(fs::path(staging_) / kPtxDirectoryMarker);
-  marker << "PTX of `tracer audit cuda`; the next audit replaces this directory\n";
-  marker.close();
-  if (!marker) throw InputError(staging_ + ": cannot write " + kPtxDirectoryMarker + " (--ptx-dir)");
+  try {
+    write_file_atomically((fs::path(staging_) / kPtxDirectoryMarker).string(),
+                          "PTX of `tracer audit cuda`; the next audit replaces this directory\n");
+  } catch (const InputError& e) {
+    fs::remove_all(staging_, ec);  // the destructor does not run for a constructor that throws
+    throw InputError(std::string(e.what()) + " (--ptx-dir " + dir_ + ")");
+  }
 }
 
 PtxDirectory::~PtxDirectory() {

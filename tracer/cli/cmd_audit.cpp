@@ -5,11 +5,13 @@
 // 77 no nvcc in this build (CTest reports the test skipped, with the reason).
 #include <cxxabi.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <system_error>
 #include <thread>
 
 #include "audit/cuda_audit.h"
@@ -111,6 +113,24 @@ size_t report(const std::vector<CudaAuditModule>& modules) {
   return failures;
 }
 
+// nvcc failing (a source that does not compile, a full disk, a crash) is no verdict on the
+// instructions: the audit exits 2 and leaves an earlier PTX directory as it was.
+std::string nvcc_failure_text(const std::vector<CudaAuditModule>& modules, const CudaAuditModule& first,
+                              const PtxDirectory& ptx) {
+  const long failed = std::count_if(modules.begin(), modules.end(),
+                                    [](const CudaAuditModule& m) { return !m.compile_error.empty(); });
+  std::string text = "audit cuda: nvcc failed on " + std::to_string(failed) + " of " +
+                     std::to_string(modules.size()) + " modules (the first: " + first.source + " for compute_" +
+                     first.architecture + "; nvcc's output is above), so the audit gives no verdict; " + ptx.path() +
+                     " (--ptx-dir) is left as it was";
+  std::error_code ec;
+  const fs::space_info space = fs::space(ptx.staging(), ec);
+  constexpr uintmax_t kLowSpace = 64ull << 20;  // ten times the largest module's PTX
+  if (!ec && space.available < kLowSpace)
+    text += "; the disk holding it has " + std::to_string(space.available >> 10) + " KiB free";
+  return text;
+}
+
 int run_audit_cuda(const std::string& root_option, const std::string& ptx_dir_option) {
   const std::string root = root_option.empty() ? TRACER_AUDIT_SOURCE_DIR : root_option;
   if (!fs::is_directory(root)) throw InputError(root + ": not a directory (--root)");
@@ -145,6 +165,12 @@ int run_audit_cuda(const std::string& root_option, const std::string& ptx_dir_op
     ++failures;
   }
   std::vector<CudaAuditModule> modules = run_cuda_audit(config, sources);
+  const auto unbuilt = std::find_if(modules.begin(), modules.end(),
+                                    [](const CudaAuditModule& m) { return !m.compile_error.empty(); });
+  if (unbuilt != modules.end()) {
+    report(modules);  // nvcc's output for each module it failed on
+    throw InputError(nvcc_failure_text(modules, *unbuilt, ptx));
+  }
   ptx.keep();
   for (CudaAuditModule& m : modules) m.ptx_path = ptx.path() + m.ptx_path.substr(ptx.staging().size());
   failures += report(modules);

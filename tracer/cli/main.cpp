@@ -12,6 +12,7 @@
 
 #include "cli/command_registry.h"
 #include "cli/version_text.h"
+#include "io/standard_output.h"
 
 namespace tracer {
 
@@ -32,10 +33,9 @@ std::string describe_filesystem_error(const std::filesystem::filesystem_error& e
   return text + ": " + reason;
 }
 
-}  // namespace tracer
+namespace {
 
-int main(int argc, char** argv) {
-  using namespace tracer;
+int run_command(int argc, char** argv) {
   CLI::App app{"tracer: a deterministic ray tracer"};
   app.require_subcommand(1);
   app.set_version_flag("--version", [] { return version_text(); });
@@ -85,3 +85,8 @@ int main(int argc, char** argv) {
   }
   return 2;
 }
+
+}  // namespace
+}  // namespace tracer
+
+int main(int argc, char** argv) { return tracer::exit_code_after_flushing_stdout(tracer::run_command(argc, argv)); }
