@@ -4,7 +4,9 @@
 // DIR.partial-PID, which anyone could have made first.
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <fstream>
+#include <utility>
 
 #include "io/new_directory.h"
 #include "test_util.h"
@@ -81,6 +83,27 @@ TEST_F(DestructiveCommands, GpuPackNeverRemovesADirectoryItDidNotMake) {
   size_t entries = 0;  // root, pid, the planted directory: no staging directory left behind
   for (const auto& e : fs::directory_iterator(dir_)) entries += e.exists() ? 1 : 0;
   EXPECT_EQ(entries, 3u);
+}
+
+// SIGINT, SIGTERM or SIGHUP during gpu-pack (strace sends it at the third file's rename, with
+// the staging directory half full) end the command by that signal with the staging directory
+// removed; it used to stay behind (io/interrupt.h).
+TEST_F(DestructiveCommands, AnInterruptedGpuPackLeavesNoStagingDirectory) {
+  if (test::run_command("strace -f -qq -o /dev/null true") != 0)
+    GTEST_SKIP() << "strace cannot trace here (no strace, or ptrace refused)";
+  for (const auto& [name, number] : {std::pair{"INT", SIGINT}, {"TERM", SIGTERM}, {"HUP", SIGHUP}}) {
+    const fs::path out = dir_ / name / "pack";
+    fs::create_directories(out.parent_path());
+    std::string output;
+    const int status = test::run_command(
+        std::string("strace -f -qq -o /dev/null -e trace=rename,renameat,renameat2 -e inject=rename,renameat,") +
+            "renameat2:signal=" + name + ":when=3 " + TRACER_BINARY + " gpu-pack " + out.string() + " --root " +
+            TRACER_SOURCE_DIR,
+        &output);
+    EXPECT_EQ(status, 128 + number) << name << "\n" << output;
+    EXPECT_NE(output.find("interrupted by"), std::string::npos) << output;
+    EXPECT_TRUE(fs::is_empty(out.parent_path())) << name << ": something was left in " << out.parent_path();
+  }
 }
 
 TEST_F(DestructiveCommands, NewDirectoriesAreNewAndDistinct) {

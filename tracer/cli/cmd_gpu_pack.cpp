@@ -14,6 +14,7 @@
 #include "cli/commands.h"
 #include "golden/golden_manifest.h"
 #include "io/input_error.h"
+#include "io/interrupt.h"
 #include "io/new_directory.h"
 #include "io/output_batch.h"
 #include "kernel/accel/trace_variants.h"
@@ -121,6 +122,7 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
     RenderOverrides o;
     o.width = width, o.height = height, o.sampler = s.sampler, o.spp = s.spp, o.effects = effects,
     o.integrator = IntegratorKind::Whitted;
+    throw_if_interrupted();
     const Scene scene = load_scene(scene_path, o);
     const std::string file = "bench/" + table + "-" + label + ".bundle";
     write_bundle((out / file).string(),
@@ -246,6 +248,7 @@ std::string trace_variant_rows(const GoldenManifest& manifest, const std::vector
       const int v = trace_variant_of(g.features, settings, wide_tree);
       if (v < 0 || covered[v]) continue;
       covered[v] = true;
+      throw_if_interrupted();
       RenderOverrides options = golden_overrides(manifest, *g.entry);
       options.accel = settings.accel;
       const std::string name = g.entry->name + "@" + accel, file = "bundles/" + name + ".bundle";
@@ -263,6 +266,7 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
   std::vector<bool> traced(kTraceVariantCount);
   std::vector<LoadedGolden> renders;
   for (const GoldenEntry& e : manifest.entries) {
+    throw_if_interrupted();
     const Scene scene = load_scene(manifest.scene_path(e), golden_overrides(manifest, e));
     const std::string file = "bundles/" + e.name + ".bundle";
     write_scene_bundle(scene, e.scene, out / file);
@@ -277,12 +281,14 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
   list += trace_variant_rows(manifest, renders, out, traced);
   const unsigned threads = cmd.threads > 0 ? static_cast<unsigned>(cmd.threads) : default_thread_count();
   for (const ParityCase& c : parity_cases(manifest)) {
+    throw_if_interrupted();
     const parity::ParityAnswers cpu = parity::reference_parity_answers(c, threads);
     const std::string file = "parity/" + c.name + ".case";
     write_bundle((out / file).string(), parity::encode_parity_case(c, cpu));
     list += "parity " + c.name + " " + file + " -\n";
     std::fprintf(stderr, "parity case %s: %zu inputs\n", c.name.c_str(), cpu.inputs);
   }
+  throw_if_interrupted();
   fs::copy_file(runner, out / "tracer-gpu");
   fs::permissions(out / "tracer-gpu", fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
                                           fs::perms::others_read | fs::perms::others_exec);
@@ -291,6 +297,7 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
                   fs::perm_options::add);
   write_file_atomically((out / "pack.tsv").string(), list);
   write_file_atomically((out / "bench.tsv").string(), write_bench(cmd.root, out));
+  throw_if_interrupted();
 }
 
 }  // namespace
@@ -309,7 +316,9 @@ static int run_gpu_pack(const GpuPackCommand& cmd) {
   if (!fs::is_regular_file(runner))
     throw InputError(runner + ": no tracer-gpu runner there (build it: cmake --build build --target tracer-gpu)");
 
-  // The pack is staged in a directory of its own making, renamed into place when complete.
+  // The pack is staged in a directory of its own making, renamed into place when complete; an
+  // interrupting signal removes it (io/interrupt.h).
+  const InterruptsNoted noted;
   const fs::path temp = make_new_directory(parent, dir.filename().string() + ".partial-");
   try {
     write_pack(cmd, runner, temp);

@@ -12,6 +12,7 @@
 
 #include "cli/command_registry.h"
 #include "cli/version_text.h"
+#include "io/interrupt.h"
 #include "io/standard_output.h"
 
 namespace tracer {
@@ -73,6 +74,9 @@ int run_command(int argc, char** argv) {
   try {
     for (const auto& [sub, run] : runs)
       if (*sub) return run();
+  } catch (const Interrupted& e) {  // what the command made is removed; end as the signal asked
+    std::fprintf(stderr, "tracer: %s; nothing was written\n", e.what());
+    end_by_signal(e.signal());
   } catch (const std::bad_alloc&) {  // the input asked for more memory than the machine has
     std::string command = "tracer";
     for (int i = 1; i < argc; ++i) command += std::string(" ") + argv[i];
