@@ -6,7 +6,9 @@
 #include <atomic>
 #include <vector>
 
+#include "io/input_error.h"
 #include "parity/parallel_for.h"
+#include "render/stream_memory.h"
 #include "render/stream_schedule.h"
 #include "render/stream_states.h"
 
@@ -63,6 +65,7 @@ inline void render_stream_on_cpu(const SceneView& view, const StreamTarget& targ
     }
   };
   const uint64_t total = static_cast<uint64_t>(target.count) * (target.end - target.begin);
+  if (const auto why = stream_memory_refusal(view.settings, total)) throw InputError(*why);
   const size_t width = stream_width_for(view.settings, total);
   stats.bytes_per_state = stream_bytes_per_state(view.settings);
   stats.state_bytes = stats.bytes_per_state * width;

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <string>
+#include <tuple>
 
 #include "image/image_io.h"
 #include "test_util.h"
@@ -126,6 +128,23 @@ TEST_F(AdaptiveOptions, AnAdaptiveRenderWritesItsImageAndSampleMap) {
   }
   EXPECT_EQ(fewest, 4.0f) << "some pixels stop at min_spp";
   EXPECT_EQ(most, 64.0f) << "some pixels run to spp";
+}
+
+// bench converge's adaptive series is checked before the reference and the uniform series
+// render (it refused only when it reached the series): nothing printed, no reference cached.
+TEST_F(AdaptiveOptions, BenchConvergeRefusesItsAdaptiveSeriesBeforeAnyRender) {
+  const std::string outputs = " --spp 1,4 --csv " + (dir_ / "c.csv").string() + " --plot " + (dir_ / "c.png").string();
+  for (const auto& [render, args, expected] :
+       {std::tuple{R"("sampler": "grid")", " --thresholds 0.05", "not grid"},
+        {R"("sampler": "stochastic")", " --thresholds 0.05 --adaptive-spp 16 --min-spp 32",
+         "--min-spp: 32 is above spp 16"}}) {
+    std::string output;
+    const std::string command = "bench converge " + scene(render) + outputs + args;
+    EXPECT_EQ(test::run_command("cd " + dir_.string() + " && " + TRACER_BINARY + " " + command, &output), 2) << output;
+    EXPECT_NE(output.find(expected), std::string::npos) << output;
+    EXPECT_EQ(output.find("tracer bench converge"), std::string::npos) << "the reference rendered first:\n" << output;
+    EXPECT_FALSE(fs::exists(dir_ / "s-converge-ref.exr"));
+  }
 }
 
 }  // namespace

@@ -132,6 +132,16 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
       inputs);
   if (probe.settings.sampler == SamplerKind::Center && max_spp > 1)
     base.sampler = SamplerKind::Stochastic;  // the center sampler takes one sample only
+  std::sort(thresholds.begin(), thresholds.end(), std::greater<float>());  // cheapest first
+  RenderOverrides adaptive = base;
+  adaptive.spp = cmd.adaptive_spp ? cmd.adaptive_spp : 4 * max_spp;
+  if (cmd.min_spp) adaptive.min_spp = cmd.min_spp;
+  // The adaptive series' settings (a sampler adaptive sampling cannot use, --min-spp above the
+  // series' spp) are refused here, not after the reference and the uniform series rendered.
+  if (!thresholds.empty()) {
+    adaptive.noise_threshold = thresholds.front();
+    load_scene(cmd.scene, adaptive);
+  }
   std::printf("tracer bench converge %s: %ux%u, %s\n", cmd.scene.c_str(), probe.settings.width, probe.settings.height,
               cmd.nee == "both" ? "NEE+MIS and the plain estimator" : "the scene's estimator");
   const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 8ull * max_spp, cmd.threads,
@@ -177,12 +187,9 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
     lines.push_back(line);
   }
   if (!thresholds.empty()) {  // adaptive: one point per threshold
-    RenderOverrides ov = base;
-    ov.spp = cmd.adaptive_spp ? cmd.adaptive_spp : 4 * max_spp;
-    if (cmd.min_spp) ov.min_spp = cmd.min_spp;
+    RenderOverrides ov = adaptive;
     results.emplace_back();
     PlotSeries line{"adaptive", {}, {}};
-    std::sort(thresholds.begin(), thresholds.end(), std::greater<float>());  // cheapest first
     for (float threshold : thresholds) {
       ov.noise_threshold = threshold;
       const Scene scene = load_scene(cmd.scene, ov);

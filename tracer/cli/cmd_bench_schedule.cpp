@@ -15,6 +15,7 @@
 #include "image/pixel_hash.h"
 #include "io/input_error.h"
 #include "render/render_cpu.h"
+#include "render/stream_memory.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
@@ -43,6 +44,19 @@ static int run_bench_schedule(const BenchScheduleCommand& cmd) {
   for (const uint32_t w : widths)
     if (w == 0 || w > kMaxStreamWidth)
       throw InputError("--widths " + cmd.widths + ": widths are 1 to " + std::to_string(kMaxStreamWidth));
+  // Every scene loads and every width fits in memory before the first row is measured.
+  for (const std::string& path : scenes) {
+    RenderOverrides ov;
+    ov.width = ov.height = cmd.size;
+    ov.spp = cmd.spp;
+    RenderSettings rs = load_scene(path, ov).settings;
+    rs.schedule = Schedule::Stream;
+    for (const uint32_t w : widths) {
+      rs.stream_width = w;
+      if (const auto why = stream_memory_refusal(rs, static_cast<uint64_t>(cmd.size) * cmd.size * cmd.spp, "--widths"))
+        throw InputError(path + ": " + *why);
+    }
+  }
   std::printf("tracer bench schedule: %ux%u pixels, %u spp, median of %u runs\n", cmd.size, cmd.size, cmd.spp,
               cmd.repeats);
   std::printf("%-16s %7s %-10s %8s %10s %7s %9s %9s %9s %7s %12s\n", "scene", "threads", "schedule", "width", "Mrays/s",

@@ -2,8 +2,6 @@
 
 #include <omp.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstddef>
 #include <memory>
@@ -13,6 +11,7 @@
 #include <vector>
 
 #include "io/input_error.h"
+#include "render/stream_memory.h"
 #include "render/stream_schedule.h"
 #include "render/stream_states.h"
 
@@ -140,11 +139,7 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
                       std::to_string(state_bytes) + " bytes of ray states for " + std::to_string(width) +
                       " samples in flight " + why + "; give a smaller width");
   };
-  // Linux lends memory it may not have and kills the process when it is touched: refuse
-  // more than half the machine's memory before allocating.
-  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGESIZE);
-  if (pages > 0 && page_size > 0 && state_bytes > static_cast<size_t>(pages) * static_cast<size_t>(page_size) / 2)
-    throw refuse("exceed half of this machine's memory");
+  if (const auto why = stream_memory_refusal(view.settings, total)) throw InputError(*why);
   HostStreamArrays arrays;
   OpenMpStream backend{view, variant, target, threads, counts, {}, {}};
   try {
