@@ -162,8 +162,7 @@ void render_adaptive_bundle(const SceneBundle& b, const Options& o, const std::s
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
     r.adaptive = std::move(c.film), r.rays = c.rays;
   }
-  r.nonfinite = adaptive_nonfinite_samples(*r.adaptive);
-  r.overflow = adaptive_overflow_samples(*r.adaptive);
+  r.nonfinite = adaptive_nonfinite_samples(*r.adaptive), r.overflow = adaptive_overflow_samples(*r.adaptive);
 }
 
 Rendered render_bundle_unguarded(const SceneBundle& b, const Options& o, const std::string& label) {

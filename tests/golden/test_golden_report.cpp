@@ -98,6 +98,18 @@ TEST(GoldenReport, OpensInHeadlessChromiumWithEveryImage) {
   for (const char* attribute : {"src=\"ball/reference.png\"", "data-showing=\"reference\"", "width: 504px"})
     EXPECT_NE(flipped_html.find(attribute), std::string::npos) << attribute << " missing: " << flipped_html;
 
+  // A laptop's 1,200 px: the failing row wraps its images instead of widening the page (the
+  // flip view, three images and the metrics once needed about 1,600 px).
+  std::string narrow;
+  ASSERT_EQ(test::run_command(chromium(box.root / "profile-narrow") + "--window-size=1200,900 --dump-dom " + page +
+                                  " 2>/dev/null",
+                              &narrow),
+            0)
+      << narrow;
+  const size_t width_at = narrow.find("data-page-width=\"");
+  ASSERT_NE(width_at, std::string::npos) << narrow;
+  EXPECT_LE(std::stoi(narrow.substr(width_at + 17)), 1200) << "the report scrolls sideways at 1,200 px";
+
   const auto shot = box.root / "screenshot.png";
   ASSERT_EQ(test::run_command(chromium(box.root / "profile-shot") +
                                   "--window-size=1000,700 --screenshot=" + shot.string() + " " + page + " 2>/dev/null",

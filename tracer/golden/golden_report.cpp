@@ -77,10 +77,10 @@ std::string metric_cell(const Json& row) {
 
 std::string image_cell(const Json& row, const char* key, const std::string& caption) {
   const Json& images = row["images"];
-  if (!images.contains(key)) return "<td class=\"image missing\">no " + caption + "</td>";
+  if (!images.contains(key)) return "<figure class=\"image missing\">no " + caption + "</figure>";
   const std::string src = html_escape(images[key].get<std::string>());
-  return "<td class=\"image\"><a href=\"" + src + "\"><img src=\"" + src + "\" alt=\"" + caption + "\"></a><div>" +
-         caption + "</div></td>";
+  return "<figure class=\"image\"><a href=\"" + src + "\"><img src=\"" + src + "\" alt=\"" + caption +
+         "\"></a><figcaption>" + caption + "</figcaption></figure>";
 }
 
 // The view image-diff tools have: one image that shows the new image and, while the pointer
@@ -90,10 +90,10 @@ std::string flip_cell(const Json& row) {
   if (!images.contains("new") || !images.contains("reference")) return "";
   const std::string fresh = html_escape(images["new"].get<std::string>()),
                     reference = html_escape(images["reference"].get<std::string>());
-  return "<td class=\"image flip\"><img class=\"flip\" src=\"" + fresh + "\" data-new=\"" + fresh +
+  return "<figure class=\"image flip\"><img class=\"flip\" src=\"" + fresh + "\" data-new=\"" + fresh +
          "\" data-reference=\"" + reference +
-         "\" data-showing=\"new\" alt=\"new, reference on hover or click\"><div>flip: new; hover or click for the "
-         "reference</div></td>";
+         "\" data-showing=\"new\" alt=\"new, reference on hover or click\"><figcaption>flip: new; hover or click for "
+         "the reference</figcaption></figure>";
 }
 
 std::string row_html(const Json& row) {
@@ -104,14 +104,16 @@ std::string row_html(const Json& row) {
     << status << "</span><br><small>" << html_escape(row["scene"].get<std::string>()) << "<br>"
     << html_escape(row["options"].get<std::string>()) << "</small></td>";
   if (status == "pass" || status == "skipped") {
-    s << "<td colspan=\"5\" class=\"message\">" << html_escape(row["message"].get<std::string>());
+    s << "<td colspan=\"2\" class=\"message\">" << html_escape(row["message"].get<std::string>());
     if (status == "pass") s << " in " << row["seconds"].get<double>() << " s";
     s << "</td>";
   } else {
     const double scale = row["amplification"].get<double>();
-    s << flip_cell(row) << image_cell(row, "new", "new") << image_cell(row, "reference", "reference")
+    // The images wrap inside their cell, so that a narrow window keeps the metrics in view.
+    s << "<td><div class=\"images\">" << flip_cell(row) << image_cell(row, "new", "new")
+      << image_cell(row, "reference", "reference")
       << image_cell(row, "difference", scale > 0 ? "difference &times; " + format_scale(scale) : "difference")
-      << "<td class=\"message\"><p>" << html_escape(row["message"].get<std::string>()) << "</p>" << metric_cell(row);
+      << "</div></td><td class=\"message\"><p>" << html_escape(row["message"].get<std::string>()) << "</p>" << metric_cell(row);
     if (status == "fail")
       s << "<p>To accept the new image as the golden:</p><pre><code>" << html_escape(row["update"].get<std::string>())
         << "</code></pre>";
@@ -127,15 +129,16 @@ table.report>tbody>tr>td{border-top:1px solid #ccc;padding:.5em;vertical-align:t
 tr.fail .badge,tr.error .badge{background:#c62828;color:#fff}tr.pass .badge{background:#2e7d32;color:#fff}
 tr.skipped .badge{background:#757575;color:#fff}
 .badge{padding:0 .4em;border-radius:.3em;text-transform:uppercase;font-size:.8em}
-td.image img{width:256px;image-rendering:pixelated;border:1px solid #999;background:#000}
-td.image img.flip{width:auto;cursor:pointer}
-td.image div{font-size:.8em;color:#555}td.message{font-size:.9em}
+div.images{display:flex;flex-wrap:wrap;gap:.5em}figure.image{margin:0}
+figure.image img{width:256px;image-rendering:pixelated;border:1px solid #999;background:#000}
+figure.image img.flip{width:auto;cursor:pointer}
+figure.image figcaption{font-size:.8em;color:#555}td.message{font-size:.9em;min-width:14em}
 table.metrics th{text-align:left;font-weight:normal;color:#555;padding-right:1em}
 pre{background:#eee;padding:.4em;white-space:pre-wrap;word-break:break-all}
 #broken{color:#c62828;font-weight:bold})";
 
-// Marks the page with the number of images that failed to load, for people and for the
-// headless-browser test that opens the report. Sizes each flip view to the largest whole
+// Marks the page with the number of images that failed to load and the width its layout
+// takes, for people and for the headless-browser test that opens the report. Sizes each flip view to the largest whole
 // multiple of its image's width up to 512 pixels (nearest-neighbour, so pixels stay square
 // blocks) and wires it: the reference while the pointer is over it, a click pins the other
 // image; index.html#show=reference opens every flip view on its reference.
@@ -147,6 +150,7 @@ function showFlip(img, which) {
 window.addEventListener('load', function () {
   var broken = Array.prototype.filter.call(document.images, function (i) { return !i.complete || i.naturalWidth === 0; });
   document.body.setAttribute('data-broken-images', String(broken.length));
+  document.body.setAttribute('data-page-width', String(document.documentElement.scrollWidth));
   if (broken.length) { var p = document.getElementById('broken'); p.hidden = false; p.textContent = broken.length + ' image(s) failed to load'; }
   Array.prototype.forEach.call(document.querySelectorAll('img.flip'), function (img) {
     var zoom = Math.max(1, Math.floor(512 / img.naturalWidth));
