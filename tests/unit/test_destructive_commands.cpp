@@ -1,5 +1,5 @@
-// Commands that remove or replace a directory touch only what they made themselves
-// (issue 27, class 1): `golden report --reset` clears only a directory holding its marker
+// Commands that remove or replace a directory touch only what they made themselves:
+// `golden report --reset` clears only a directory holding its marker
 // file, and gpu-pack stages in a directory of its own making instead of clearing
 // DIR.partial-PID, which anyone could have made first.
 #include <gtest/gtest.h>

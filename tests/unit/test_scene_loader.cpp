@@ -121,7 +121,7 @@ TEST(SceneLoader, DefaultsAndOverrides) {
   EXPECT_EQ(plain.settings.sampler, SamplerKind::Sobol);  // the default for a scene that names none
 }
 
-// Every shipped scene names its sampler, so the default (sobol since issue 29) moves no golden.
+// Every shipped scene names its sampler, so the default (sobol since 2026-11-24, aec3dcd) moves no golden.
 TEST(SceneLoader, EveryShippedSceneNamesItsSampler) {
   for (const auto& path : test::shipped_scenes())
     EXPECT_NE(test::read_file(path).find("\"sampler\""), std::string::npos) << path;
