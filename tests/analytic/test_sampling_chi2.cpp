@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "chi2.h"
+#include "light_fixture.h"
 #include "kernel/camera/sampler.h"
 #include "kernel/shading/bsdf.h"
 #include "kernel/shading/light_sampling.h"
@@ -25,6 +26,9 @@ constexpr int kSamples = 400000;
 using Stream = test::InputStream;
 using test::chi2_p_value;
 using test::gamma_q;
+using test::LightFixture;
+using test::MeanEstimate;
+using test::triangle_solid_angle;
 
 // Where a sampling routine's uniforms come from: the fixed stream, or one pixel's points of
 // the Sobol sampler in the pairs the path tracer gives a BSDF sample (the lobe choice is
@@ -153,48 +157,6 @@ TEST(SamplingChi2, DielectricChoosesReflectionWithFresnelProbability) {
   }
 }
 
-// One emitter in a scene, sampled from `from`.
-struct LightFixture {
-  Scene scene;
-  SceneView view;
-  explicit LightFixture(const std::string& shape)
-      : scene(
-            test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
-          "film": {"width": 4, "height": 4}, "render": {"integrator": "path"},
-          "materials": {"lamp": {"type": "emissive", "radiance": [1, 1, 1], "two_sided": true}},
-          "shapes": [)" + shape +
-                             "]}")),
-        view(scene.view()) {}
-};
-
-// A Monte Carlo mean and the tolerance its own noise allows: z standard errors, z = 3.29 for
-// a two-sided false-failure probability of kSignificance, plus 1e-5 relative for the float
-// rounding of the densities summed (a constant density has no variance at all).
-struct MeanEstimate {
-  double sum = 0, sum2 = 0;
-  long n = 0;
-  void add(double x) { sum += x, sum2 += x * x, ++n; }
-  double mean() const { return sum / n; }
-  double tolerance() const {
-    const double variance = std::max(0.0, sum2 / n - mean() * mean());
-    return 3.29 * std::sqrt(variance / n) + 1e-5 * std::abs(mean());
-  }
-};
-
-// Solid angle of triangle (a, b, c) seen from p (Van Oosterom and Strackee 1983):
-// tan(omega / 2) = |A . (B x C)| / (|A||B||C| + (A.B)|C| + (A.C)|B| + (B.C)|A|), A = a - p ...
-double triangle_solid_angle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
-  const double A[3] = {double(a.x) - p.x, double(a.y) - p.y, double(a.z) - p.z};
-  const double B[3] = {double(b.x) - p.x, double(b.y) - p.y, double(b.z) - p.z};
-  const double C[3] = {double(c.x) - p.x, double(c.y) - p.y, double(c.z) - p.z};
-  const auto dot3 = [](const double* u, const double* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
-  const double triple =
-      A[0] * (B[1] * C[2] - B[2] * C[1]) - A[1] * (B[0] * C[2] - B[2] * C[0]) + A[2] * (B[0] * C[1] - B[1] * C[0]);
-  const double la = std::sqrt(dot3(A, A)), lb = std::sqrt(dot3(B, B)), lc = std::sqrt(dot3(C, C));
-  const double denominator = la * lb * lc + dot3(A, B) * lc + dot3(A, C) * lb + dot3(B, C) * la;
-  return 2 * std::atan2(std::abs(triple), denominator);
-}
-
 // E[1 / pdf] over light samples is the solid angle the light subtends.
 MeanEstimate inverse_pdf_of_light(const LightFixture& fx, Vec3 from) {
   Stream s{9};
@@ -237,40 +199,33 @@ TEST(SamplingChi2, SphereLightRimSamplesAreValid) {
   }
 }
 
-// Positions binned on the unit square of the shape's parameters; for a triangle the bins
-// are those of (b1, b2) with b1 + b2 <= 1, cut in half along the diagonal.
-TEST(SamplingChi2, QuadAndTriangleLightsAreUniformByArea) {
-  for (const bool triangle : {false, true}) {
-    const LightFixture fx(
-        triangle ? R"({"type": "triangle", "vertices": [[-1, -1, 0], [1, -1, 0], [-1, 1, 0]], "material": "lamp"})"
-                 : R"({"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "lamp"})");
-    const Vec3 from = {0.3f, -0.2f, 1.5f};
-    constexpr int kBins = 12;
-    std::vector<double> observed(kBins * kBins, 0.0), expected(kBins * kBins, 0.0);
-    Stream s{5};
-    MeanEstimate inverse_pdf;
-    for (int i = 0; i < kSamples; ++i) {
-      const float u1 = s.next(), u2 = s.next();
-      const LightSample ls = sample_light(fx.view, 0, from, u1, u2, 0.0f);
-      ASSERT_TRUE(ls.valid);
-      inverse_pdf.add(1.0 / ls.pdf);
-      const Vec3 q = from + ls.wi * ls.distance;
-      const int bx = std::min(kBins - 1, std::max(0, int((q.x + 1) / 2 * kBins)));
-      const int by = std::min(kBins - 1, std::max(0, int((q.y + 1) / 2 * kBins)));
-      observed[by * kBins + bx] += 1;
-    }
-    for (int by = 0; by < kBins; ++by)
-      for (int bx = 0; bx < kBins; ++bx) {
-        const double area = !triangle ? 1.0 : bx + by + 1 < kBins ? 1.0 : bx + by + 1 == kBins ? 0.5 : 0.0;
-        expected[by * kBins + bx] = kSamples * area / (triangle ? kBins * kBins / 2.0 : kBins * kBins);
-      }
-    EXPECT_GT(chi2_p_value(observed, expected), kSignificance) << (triangle ? "triangle" : "quad");
-    // Solid angle of the shape from `from` in closed form; the quad is two triangles.
-    const double omega = triangle ? triangle_solid_angle(from, {-1, -1, 0}, {1, -1, 0}, {-1, 1, 0})
-                                  : triangle_solid_angle(from, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}) +
-                                        triangle_solid_angle(from, {-1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
-    EXPECT_NEAR(inverse_pdf.mean(), omega, inverse_pdf.tolerance()) << (triangle ? "triangle" : "quad");
+// Positions binned on the unit square of (b1, b2) with b1 + b2 <= 1, the bins cut in half
+// along the diagonal. (Rectangles are sampled by solid angle: test_light_solid_angle.cpp.)
+TEST(SamplingChi2, TriangleLightsAreUniformByArea) {
+  const LightFixture fx(R"({"type": "triangle", "vertices": [[-1, -1, 0], [1, -1, 0], [-1, 1, 0]], "material": "lamp"})");
+  const Vec3 from = {0.3f, -0.2f, 1.5f};
+  constexpr int kBins = 12;
+  std::vector<double> observed(kBins * kBins, 0.0), expected(kBins * kBins, 0.0);
+  Stream s{5};
+  MeanEstimate inverse_pdf;
+  for (int i = 0; i < kSamples; ++i) {
+    const float u1 = s.next(), u2 = s.next();
+    const LightSample ls = sample_light(fx.view, 0, from, u1, u2, 0.0f);
+    ASSERT_TRUE(ls.valid);
+    inverse_pdf.add(1.0 / ls.pdf);
+    const Vec3 q = from + ls.wi * ls.distance;
+    const int bx = std::min(kBins - 1, std::max(0, int((q.x + 1) / 2 * kBins)));
+    const int by = std::min(kBins - 1, std::max(0, int((q.y + 1) / 2 * kBins)));
+    observed[by * kBins + bx] += 1;
   }
+  for (int by = 0; by < kBins; ++by)
+    for (int bx = 0; bx < kBins; ++bx) {
+      const double area = bx + by + 1 < kBins ? 1.0 : bx + by + 1 == kBins ? 0.5 : 0.0;
+      expected[by * kBins + bx] = kSamples * area / (kBins * kBins / 2.0);
+    }
+  EXPECT_GT(chi2_p_value(observed, expected), kSignificance);
+  const double omega = triangle_solid_angle(from, {-1, -1, 0}, {1, -1, 0}, {-1, 1, 0});
+  EXPECT_NEAR(inverse_pdf.mean(), omega, inverse_pdf.tolerance());
 }
 
 TEST(SamplingChi2, GammaQKnownValues) {

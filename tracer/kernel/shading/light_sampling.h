@@ -2,12 +2,15 @@
 // host builds a table of every light (point lights and emissive spheres, quads and
 // triangles; emissive planes are infinite and only found by chance; a cube-map sky when
 // render.sky_sampling is on) with a selection probability proportional to its power
-// (tracer/light_table.cpp). Shapes are sampled uniformly by area, spheres seen from outside
-// uniformly in the cone they subtend, the sky by its cells (kernel/shading/sky_sampling.h).
+// (tracer/light_table.cpp). Spheres seen from outside are sampled uniformly in the cone they
+// subtend, rectangles uniformly in their solid angle (kernel/shading/spherical_rectangle.h),
+// other shapes and rectangles whose solid angle float cannot sample uniformly by area, the sky
+// by its cells (kernel/shading/sky_sampling.h).
 #pragma once
 #include "kernel/shading/light_sources.h"
 #include "kernel/shading/sampling.h"
 #include "kernel/shading/sky_sampling.h"
+#include "kernel/shading/spherical_rectangle.h"
 #include "kernel/shading/surface.h"
 
 namespace tracer {
@@ -58,6 +61,10 @@ TRACER_HD float light_pdf(const SceneView& scene, uint32_t prim, Vec3 from, Vec3
       const float width = sphere_cone_width(p, d2);
       return width > 0.0f ? pmf / (2.0f * kPi * width) : 0.0f;
     }
+  }
+  if (p.kind == ShapeKind::Quad) {
+    const SphericalRectangle rect = spherical_rectangle(from, p.a, p.b, p.c);
+    if (rect.solid_angle > 0.0f) return pmf / rect.solid_angle;
   }
   const float cos_l = abs_of(dot(ng, wi));
   return cos_l > 0.0f ? pmf * t * t / (cos_l * primitive_area(p)) : 0.0f;
@@ -121,11 +128,14 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
       ng = normalize(point - p.a);
       break;
     }
-    case ShapeKind::Quad:
-      point = p.a + p.b * u1 + p.c * u2;
+    case ShapeKind::Quad: {
       b1 = u1, b2 = u2;
+      const SphericalRectangle rect = spherical_rectangle(from, p.a, p.b, p.c);
+      if (rect.solid_angle > 0.0f) sample_spherical_rectangle(rect, u1, u2, b1, b2);
+      point = p.a + p.b * b1 + p.c * b2;
       ng = normalize(cross(p.b, p.c));
       break;
+    }
     case ShapeKind::Triangle: {
       sample_triangle(u1, u2, b1, b2);
       point = p.a * (1.0f - b1 - b2) + p.b * b1 + p.c * b2;

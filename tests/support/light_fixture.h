@@ -1,0 +1,55 @@
+// What the light-sampling tests share: a scene holding one emitter, a Monte Carlo mean with
+// the tolerance its own noise allows, and the closed-form solid angle of a triangle.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "scene/scene.h"
+#include "test_util.h"
+
+namespace tracer::test {
+
+// One emitter in a scene, sampled from `from`.
+struct LightFixture {
+  Scene scene;
+  SceneView view;
+  explicit LightFixture(const std::string& shape)
+      : scene(
+            scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
+          "film": {"width": 4, "height": 4}, "render": {"integrator": "path"},
+          "materials": {"lamp": {"type": "emissive", "radiance": [1, 1, 1], "two_sided": true}},
+          "shapes": [)" + shape +
+                             "]}")),
+        view(scene.view()) {}
+};
+
+// A Monte Carlo mean and the tolerance its own noise allows: z standard errors, z = 3.29 for
+// a two-sided false-failure probability of 1e-3, plus 1e-5 relative for the float
+// rounding of the densities summed (a constant density has no variance at all).
+struct MeanEstimate {
+  double sum = 0, sum2 = 0;
+  long n = 0;
+  void add(double x) { sum += x, sum2 += x * x, ++n; }
+  double mean() const { return sum / n; }
+  double tolerance() const {
+    const double variance = std::max(0.0, sum2 / n - mean() * mean());
+    return 3.29 * std::sqrt(variance / n) + 1e-5 * std::abs(mean());
+  }
+};
+
+// Solid angle of triangle (a, b, c) seen from p (Van Oosterom and Strackee 1983):
+// tan(omega / 2) = |A . (B x C)| / (|A||B||C| + (A.B)|C| + (A.C)|B| + (B.C)|A|), A = a - p ...
+inline double triangle_solid_angle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
+  const double A[3] = {double(a.x) - p.x, double(a.y) - p.y, double(a.z) - p.z};
+  const double B[3] = {double(b.x) - p.x, double(b.y) - p.y, double(b.z) - p.z};
+  const double C[3] = {double(c.x) - p.x, double(c.y) - p.y, double(c.z) - p.z};
+  const auto dot3 = [](const double* u, const double* v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+  const double triple =
+      A[0] * (B[1] * C[2] - B[2] * C[1]) - A[1] * (B[0] * C[2] - B[2] * C[0]) + A[2] * (B[0] * C[1] - B[1] * C[0]);
+  const double la = std::sqrt(dot3(A, A)), lb = std::sqrt(dot3(B, B)), lc = std::sqrt(dot3(C, C));
+  const double denominator = la * lb * lc + dot3(A, B) * lc + dot3(A, C) * lb + dot3(B, C) * la;
+  return 2 * std::atan2(std::abs(triple), denominator);
+}
+
+}  // namespace tracer::test
