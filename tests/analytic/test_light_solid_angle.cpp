@@ -55,7 +55,7 @@ TEST(LightSolidAngle, RectangleSamplesAreUniformInSolidAngle) {
   } cases[] = {{kLamp, {0.3f, 0.0f, 0.2f}}, {kLamp, {1.7f, 1.8f, -0.9f}}, {kTilted, {0.9f, 0.4f, -0.6f}},
                {{{-0.125f, 5.0f, -0.125f}, {0.25f, 0, 0}, {0, 0, 0.25f}}, {0.4f, 0.0f, 0.3f}}};
   for (const auto& c : cases) {
-    const LightFixture fx(c.rect.json());
+    const LightFixture fx(c.rect.json(), "solid-angle");
     const double omega = c.rect.solid_angle(c.from);
     ASSERT_GT(spherical_rectangle(c.from, c.rect.corner, c.rect.u, c.rect.v).solid_angle, 0.0f) << omega;
     constexpr int kBins = 12;
@@ -105,7 +105,7 @@ TEST(LightSolidAngle, ExtremesFallBackToAreaSamplingWithTheSameDensity) {
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.what);
-    const LightFixture fx(c.rect.json());
+    const LightFixture fx(c.rect.json(), "solid-angle");
     const float omega = spherical_rectangle(c.from, c.rect.corner, c.rect.u, c.rect.v).solid_angle;
     EXPECT_EQ(omega > 0.0f, c.sampled_by_solid_angle) << omega;
     test::InputStream s{11};
@@ -147,7 +147,7 @@ TEST(LightSolidAngle, PolygonIrradianceWithLessVarianceThanAreaSampling) {
   const Rectangle lamp = {{-0.5f, 1.0f, -0.5f}, {1, 0, 0}, {0, 0, 1}};
   const Vec3 x = {0.7f, 0.0f, 0.1f}, n = {0, 1, 0};
   const double exact = polygon_irradiance(x, n, lamp);
-  const LightFixture fx(lamp.json());
+  const LightFixture fx(lamp.json(), "solid-angle");
   MeanEstimate solid, area;
   test::InputStream s{3};
   const float lamp_area = length(cross(lamp.u, lamp.v));

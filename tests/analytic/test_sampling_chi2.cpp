@@ -199,33 +199,41 @@ TEST(SamplingChi2, SphereLightRimSamplesAreValid) {
   }
 }
 
-// Positions binned on the unit square of (b1, b2) with b1 + b2 <= 1, the bins cut in half
-// along the diagonal. (Rectangles are sampled by solid angle: test_light_solid_angle.cpp.)
-TEST(SamplingChi2, TriangleLightsAreUniformByArea) {
-  const LightFixture fx(R"({"type": "triangle", "vertices": [[-1, -1, 0], [1, -1, 0], [-1, 1, 0]], "material": "lamp"})");
-  const Vec3 from = {0.3f, -0.2f, 1.5f};
-  constexpr int kBins = 12;
-  std::vector<double> observed(kBins * kBins, 0.0), expected(kBins * kBins, 0.0);
-  Stream s{5};
-  MeanEstimate inverse_pdf;
-  for (int i = 0; i < kSamples; ++i) {
-    const float u1 = s.next(), u2 = s.next();
-    const LightSample ls = sample_light(fx.view, 0, from, u1, u2, 0.0f);
-    ASSERT_TRUE(ls.valid);
-    inverse_pdf.add(1.0 / ls.pdf);
-    const Vec3 q = from + ls.wi * ls.distance;
-    const int bx = std::min(kBins - 1, std::max(0, int((q.x + 1) / 2 * kBins)));
-    const int by = std::min(kBins - 1, std::max(0, int((q.y + 1) / 2 * kBins)));
-    observed[by * kBins + bx] += 1;
-  }
-  for (int by = 0; by < kBins; ++by)
-    for (int bx = 0; bx < kBins; ++bx) {
-      const double area = bx + by + 1 < kBins ? 1.0 : bx + by + 1 == kBins ? 0.5 : 0.0;
-      expected[by * kBins + bx] = kSamples * area / (kBins * kBins / 2.0);
+// Positions binned on the unit square of the shape's parameters; for a triangle the bins
+// are those of (b1, b2) with b1 + b2 <= 1, cut in half along the diagonal. (Rectangles with
+// render.light_sampling "solid-angle": test_light_solid_angle.cpp.)
+TEST(SamplingChi2, QuadAndTriangleLightsAreUniformByArea) {
+  for (const bool triangle : {false, true}) {
+    const LightFixture fx(
+        triangle ? R"({"type": "triangle", "vertices": [[-1, -1, 0], [1, -1, 0], [-1, 1, 0]], "material": "lamp"})"
+                 : R"({"type": "quad", "corner": [-1, -1, 0], "u": [2, 0, 0], "v": [0, 2, 0], "material": "lamp"})");
+    const Vec3 from = {0.3f, -0.2f, 1.5f};
+    constexpr int kBins = 12;
+    std::vector<double> observed(kBins * kBins, 0.0), expected(kBins * kBins, 0.0);
+    Stream s{5};
+    MeanEstimate inverse_pdf;
+    for (int i = 0; i < kSamples; ++i) {
+      const float u1 = s.next(), u2 = s.next();
+      const LightSample ls = sample_light(fx.view, 0, from, u1, u2, 0.0f);
+      ASSERT_TRUE(ls.valid);
+      inverse_pdf.add(1.0 / ls.pdf);
+      const Vec3 q = from + ls.wi * ls.distance;
+      const int bx = std::min(kBins - 1, std::max(0, int((q.x + 1) / 2 * kBins)));
+      const int by = std::min(kBins - 1, std::max(0, int((q.y + 1) / 2 * kBins)));
+      observed[by * kBins + bx] += 1;
     }
-  EXPECT_GT(chi2_p_value(observed, expected), kSignificance);
-  const double omega = triangle_solid_angle(from, {-1, -1, 0}, {1, -1, 0}, {-1, 1, 0});
-  EXPECT_NEAR(inverse_pdf.mean(), omega, inverse_pdf.tolerance());
+    for (int by = 0; by < kBins; ++by)
+      for (int bx = 0; bx < kBins; ++bx) {
+        const double area = !triangle ? 1.0 : bx + by + 1 < kBins ? 1.0 : bx + by + 1 == kBins ? 0.5 : 0.0;
+        expected[by * kBins + bx] = kSamples * area / (triangle ? kBins * kBins / 2.0 : kBins * kBins);
+      }
+    EXPECT_GT(chi2_p_value(observed, expected), kSignificance) << (triangle ? "triangle" : "quad");
+    // Solid angle of the shape from `from` in closed form; the quad is two triangles.
+    const double omega = triangle ? triangle_solid_angle(from, {-1, -1, 0}, {1, -1, 0}, {-1, 1, 0})
+                                  : triangle_solid_angle(from, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}) +
+                                        triangle_solid_angle(from, {-1, -1, 0}, {1, 1, 0}, {-1, 1, 0});
+    EXPECT_NEAR(inverse_pdf.mean(), omega, inverse_pdf.tolerance()) << (triangle ? "triangle" : "quad");
+  }
 }
 
 TEST(SamplingChi2, GammaQKnownValues) {

@@ -14,10 +14,12 @@ namespace tracer::test {
 struct LightFixture {
   Scene scene;
   SceneView view;
-  explicit LightFixture(const std::string& shape)
+  // light_sampling: render.light_sampling, "area" (the default) or "solid-angle".
+  explicit LightFixture(const std::string& shape, const std::string& light_sampling = "area")
       : scene(
             scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
-          "film": {"width": 4, "height": 4}, "render": {"integrator": "path"},
+          "film": {"width": 4, "height": 4}, "render": {"integrator": "path", "light_sampling": ")" +
+                       light_sampling + R"("},
           "materials": {"lamp": {"type": "emissive", "radiance": [1, 1, 1], "two_sided": true}},
           "shapes": [)" + shape +
                              "]}")),

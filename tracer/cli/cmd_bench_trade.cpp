@@ -50,6 +50,10 @@ std::vector<Knob> knobs(bool cubemap_sky) {
     k.push_back({"sky_sampling", "on", with([](RenderOverrides& o) { o.sky_sampling = Switch::On; }), false});
     k.push_back({"sky_sampling", "off", with([](RenderOverrides& o) { o.sky_sampling = Switch::Off; }), false});
   }
+  k.push_back({"light_sampling", "area",
+               with([](RenderOverrides& o) { o.light_sampling = LightSampling::Area; }), false});
+  k.push_back({"light_sampling", "solid-angle",
+               with([](RenderOverrides& o) { o.light_sampling = LightSampling::SolidAngle; }), false});
   k.push_back({"sampler", "stochastic", with([](RenderOverrides& o) { o.sampler = SamplerKind::Stochastic; }), false});
   k.push_back({"sampler", "stratified", with([](RenderOverrides& o) { o.sampler = SamplerKind::Stratified; }), true});
   k.push_back({"sampler", "sobol", with([](RenderOverrides& o) { o.sampler = SamplerKind::Sobol; }), false});

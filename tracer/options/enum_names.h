@@ -35,6 +35,11 @@ struct EnumNames<TriangleTest> {
   static constexpr const char* names[] = {"watertight", "moller-trumbore"};
 };
 template <>
+struct EnumNames<LightSampling> {
+  static constexpr const char* kind = "light sampling";
+  static constexpr const char* names[] = {"area", "solid-angle"};
+};
+template <>
 struct EnumNames<Switch> {
   static constexpr const char* kind = "switch";
   static constexpr const char* names[] = {"off", "on"};

@@ -31,6 +31,7 @@ inline std::optional<WorkLimitViolation> settings_violation(const RenderSettings
   for (const auto& v : {beyond("integrator", rs.integrator, IntegratorKind::Path),
                         beyond("sampler", rs.sampler, SamplerKind::Sobol), beyond("accel", rs.accel, AccelKind::Lbvh),
                         beyond("nee", rs.nee, Switch::On), beyond("sky_sampling", rs.sky_sampling, Switch::On),
+                        beyond("light_sampling", rs.light_sampling, LightSampling::SolidAngle),
                         beyond("triangle_test", rs.triangle_test, TriangleTest::MollerTrumbore),
                         beyond("effects", rs.effects, kEffectAll), beyond("schedule", rs.schedule, Schedule::Stream),
                         beyond("grid_resolution", rs.grid_resolution, 1024u)})

@@ -3,9 +3,10 @@
 // triangles; emissive planes are infinite and only found by chance; a cube-map sky when
 // render.sky_sampling is on) with a selection probability proportional to its power
 // (tracer/light_table.cpp). Spheres seen from outside are sampled uniformly in the cone they
-// subtend, rectangles uniformly in their solid angle (kernel/shading/spherical_rectangle.h),
-// other shapes and rectangles whose solid angle float cannot sample uniformly by area, the sky
-// by its cells (kernel/shading/sky_sampling.h).
+// subtend; with render.light_sampling "solid-angle", rectangles uniformly in their solid angle
+// (kernel/shading/spherical_rectangle.h); other shapes, and rectangles by default or where
+// float cannot sample their solid angle, uniformly by area; the sky by its cells
+// (kernel/shading/sky_sampling.h).
 #pragma once
 #include "kernel/shading/light_sources.h"
 #include "kernel/shading/sampling.h"
@@ -62,7 +63,7 @@ TRACER_HD float light_pdf(const SceneView& scene, uint32_t prim, Vec3 from, Vec3
       return width > 0.0f ? pmf / (2.0f * kPi * width) : 0.0f;
     }
   }
-  if (p.kind == ShapeKind::Quad) {
+  if (p.kind == ShapeKind::Quad && scene.settings.light_sampling == LightSampling::SolidAngle) {
     const SphericalRectangle rect = spherical_rectangle(from, p.a, p.b, p.c);
     if (rect.solid_angle > 0.0f) return pmf / rect.solid_angle;
   }
@@ -130,8 +131,10 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
     }
     case ShapeKind::Quad: {
       b1 = u1, b2 = u2;
-      const SphericalRectangle rect = spherical_rectangle(from, p.a, p.b, p.c);
-      if (rect.solid_angle > 0.0f) sample_spherical_rectangle(rect, u1, u2, b1, b2);
+      if (scene.settings.light_sampling == LightSampling::SolidAngle) {
+        const SphericalRectangle rect = spherical_rectangle(from, p.a, p.b, p.c);
+        if (rect.solid_angle > 0.0f) sample_spherical_rectangle(rect, u1, u2, b1, b2);
+      }
       point = p.a + p.b * b1 + p.c * b2;
       ng = normalize(cross(p.b, p.c));
       break;
