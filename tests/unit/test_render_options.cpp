@@ -37,6 +37,7 @@ nlohmann::json changed_options() {
           {"nee", false},
           {"rr_depth", 2},
           {"sky_sampling", false},
+          {"light_sampling", "solid-angle"},
           {"triangle_test", "moller-trumbore"},
           {"grid_resolution", 12},
           {"effects", "shadows,reflections"},
@@ -108,7 +109,8 @@ TEST(RenderOptions, RecordedWhenTheyDecideThePixels) {
   RenderSettings whitted{};
   RenderOptions w = recorded_options(whitted, BackgroundKind::Constant);
   EXPECT_TRUE(w.complete());
-  EXPECT_FALSE(w.nee || w.rr_depth || w.sky_sampling || w.triangle_test || w.grid_resolution || w.effects);
+  EXPECT_FALSE(w.nee || w.rr_depth || w.sky_sampling || w.light_sampling || w.triangle_test || w.grid_resolution ||
+               w.effects);
   RenderSettings path{};
   path.integrator = IntegratorKind::Path;
   path.grid_resolution = 8;
