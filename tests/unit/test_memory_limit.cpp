@@ -53,7 +53,7 @@ for cg in /sys/fs/cgroup/memory/tracer-test-$$:memory.limit_in_bytes /sys/fs/cgr
   dir=${cg%:*}; file=${cg##*:}
   mkdir "$dir" 2>/dev/null || continue
   if echo 268435456 > "$dir/$file" 2>/dev/null; then
-    sh -c "echo \$\$ > $dir/cgroup.procs && exec $1" ; status=$?
+    sh -c "echo \$\$ > $dir/cgroup.procs || exit 77; exec $1"; status=$?
     rmdir "$dir"; exit $status
   fi
   rmdir "$dir"
