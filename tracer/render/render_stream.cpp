@@ -134,21 +134,17 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
   const size_t state_bytes = stats.bytes_per_state * width;
   stats.state_bytes = std::max(stats.state_bytes, state_bytes);  // the largest of an adaptive render's passes
   if (width == 0) return;
-  const auto refuse = [&](const std::string& why) {
-    return InputError("--stream-width " + std::to_string(view.settings.stream_width) + ": " +
-                      std::to_string(state_bytes) + " bytes of ray states for " + std::to_string(width) +
-                      " samples in flight " + why + "; give a smaller width");
-  };
   if (const auto why = stream_memory_refusal(view.settings, total)) throw InputError(*why);
+  const auto refuse = [&] { return InputError(stream_width_refusal(view.settings, total, "cannot be allocated")); };
   HostStreamArrays arrays;
   OpenMpStream backend{view, variant, target, threads, counts, {}, {}};
   try {
     backend.states = allocate_stream_states(view.settings, width, arrays);
     for (uint32_t q = 0; q < stream_queue_count(view.settings); ++q) backend.queues[q].reserve(width);
   } catch (const std::bad_alloc&) {
-    throw refuse("cannot be allocated");
+    throw refuse();
   } catch (const std::length_error&) {
-    throw refuse("cannot be allocated");
+    throw refuse();
   }
   schedule_stream(total, width, backend, stats, progress);
 }
