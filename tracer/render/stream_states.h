@@ -35,6 +35,7 @@ StreamStates allocate_stream_states(const RenderSettings& rs, size_t width, Allo
   st.bsdf_pdf = array(static_cast<float*>(nullptr), path);
   st.depth = array(static_cast<uint32_t*>(nullptr), path);
   st.specular = array(static_cast<uint8_t*>(nullptr), path);
+  st.first_throughput = array(static_cast<float*>(nullptr), path);
   st.shadow_origin = array(static_cast<Vec3*>(nullptr), path || whitted);
   st.shadow_dir = array(static_cast<Vec3*>(nullptr), path || whitted);
   st.shadow_tmax = array(static_cast<float*>(nullptr), path || whitted);

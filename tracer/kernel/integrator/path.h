@@ -3,7 +3,9 @@
 // every non-specular vertex one light sample and one BSDF sample, each weighted against
 // the other's density; emission reached by a BSDF sample after a specular bounce, or with
 // `nee` off (the plain estimator), counts fully. Russian roulette from rr_depth bounces on
-// survives with q = min(max throughput, 0.95) and divides by q, so it stays unbiased.
+// survives with q = min(max throughput / first_throughput, 1) and divides by q, so it stays
+// unbiased: the throughput relative to the first vertex's (the pixel's own albedo), so a dark
+// surface the camera sees keeps its indirect light as long as a white one (docs/path.md).
 // A cube-map sky sampled as a light (render.sky_sampling) is MIS-weighted like the shapes.
 // Random numbers per bounce b: four pairs at dimensions kDimFirstFree + 4b + {0..3} (light
 // position; light choice and BSDF lobe; BSDF direction; roulette and sky cell), drawn by the
@@ -28,6 +30,7 @@ struct PathState {
   float bsdf_pdf;  // the density of the BSDF sample that chose ray
   uint32_t depth;
   bool specular;  // the camera ray or a specular bounce: emission it sees counts fully
+  float first_throughput;  // max throughput after the first vertex's BSDF sample: roulette's unit
 };
 
 // Next-event estimation's shadow ray and the radiance it adds when the light is visible.
@@ -45,7 +48,7 @@ struct PathStep {
 };
 
 TRACER_HD PathState path_start(const Ray& camera_ray) {
-  return {camera_ray, {0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, camera_ray.origin, 0.0f, 0u, true};
+  return {camera_ray, {0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, camera_ray.origin, 0.0f, 0u, true, 1.0f};
 }
 
 // The shadow ray from the shading point at s to the sampled light: a point light within its
@@ -119,8 +122,10 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
   st.throughput *= bs.weight;
   st.bsdf_pdf = bs.pdf;
   st.specular = bs.specular;
+  // the floor keeps the ratio finite after a first vertex that absorbs almost everything
+  if (st.depth == 0u) st.first_throughput = max_of(max_component(st.throughput), 1e-3f);
   if (roulette) {
-    const float q = min_of(max_component(st.throughput), 0.95f);
+    const float q = min_of(max_component(st.throughput) / st.first_throughput, 1.0f);
     if (!(rr_u < q)) return step;
     st.throughput = st.throughput / q;
   }

@@ -38,6 +38,7 @@ struct StreamStates {
   float* bsdf_pdf;
   uint32_t* depth;
   uint8_t* specular;
+  float* first_throughput;
   // the shadow ray (ShadowQuery; Whitted's has emitter kNoHit and no contribution)
   Vec3* shadow_origin;
   Vec3* shadow_dir;
@@ -56,7 +57,7 @@ struct StreamStates {
 
 TRACER_HD PathState load_path(const StreamStates& st, uint32_t i) {
   return {{st.origin[i], st.dir[i]}, st.radiance[i], st.throughput[i], st.from[i], st.bsdf_pdf[i], st.depth[i],
-          st.specular[i] != 0u};
+          st.specular[i] != 0u, st.first_throughput[i]};
 }
 
 TRACER_HD void store_path(const StreamStates& st, uint32_t i, const PathState& p) {
@@ -68,6 +69,7 @@ TRACER_HD void store_path(const StreamStates& st, uint32_t i, const PathState& p
   st.bsdf_pdf[i] = p.bsdf_pdf;
   st.depth[i] = p.depth;
   st.specular[i] = p.specular ? 1u : 0u;
+  st.first_throughput[i] = p.first_throughput;
 }
 
 TRACER_HD void store_shadow_ray(const StreamStates& st, uint32_t i, const Ray& ray, float tmax, uint32_t emitter) {
