@@ -111,12 +111,11 @@ TEST(Sobol, PairIsTheScrambledDimensionsOfTheShuffledIndex) {
   for (uint32_t pixel : {0u, 7u, 123456u})
     for (uint32_t dimension = 0; dimension < 12; ++dimension)
       for (uint32_t sample : {0u, 1u, 2u, 3u, 17u, 255u, 4096u, 0xfffffffeu}) {
-        const Philox4 keys =
-            philox4x32_10({{pixel, dimension, 0u, 1u}}, static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32));
-        const uint32_t index = nested_uniform_scramble(sample, keys.v[0]);
+        const SobolKeys keys = sobol_keys(seed, pixel, dimension);
+        const uint32_t index = nested_uniform_scramble(sample, keys.index);
         float a, b;
         sobol_uniform2(seed, pixel, sample, dimension, a, b);
-        EXPECT_EQ(a, uniform_from_bits(nested_uniform_scramble(sobol_dimension0(index), keys.v[1])));
-        EXPECT_EQ(b, uniform_from_bits(nested_uniform_scramble(sobol_dimension1(index), keys.v[2])));
+        EXPECT_EQ(a, uniform_from_bits(nested_uniform_scramble(sobol_dimension0(index), keys.x)));
+        EXPECT_EQ(b, uniform_from_bits(nested_uniform_scramble(sobol_dimension1(index), keys.y)));
       }
 }

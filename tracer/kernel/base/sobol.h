@@ -55,18 +55,41 @@ TRACER_HD uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
   return reverse_bits(laine_karras_permutation(reverse_bits(x), seed));
 }
 
-// Two uniforms in [0, 1) for dimension pair `dimension` of sample `sample` of `pixel`. One
-// Philox call keyed by the scene seed gives the pair's three scramble seeds; its counter
-// (pixel, dimension, 0, 1) never equals a stochastic draw's (pixel, sample, dimension, 0).
+// SplitMix64's output function (Steele, Lea and Flood, OOPSLA 2014; Stafford's Mix13
+// constants): a bijection of 64-bit words whose every output bit depends on every input bit.
+TRACER_HD uint64_t splitmix64_mix(uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+// The three scramble seeds of one dimension pair of one pixel: the sample index's shuffle and
+// the two coordinates' scrambles. Two SplitMix64 steps (counter, then the scene seed, each
+// added to a Weyl increment) give the first two seeds, one more step the third: six 64-bit
+// multiplies where a Philox4x32-10 call took twenty 32x32 products in ten dependent rounds.
+// Distinct (pixel, dimension) give distinct first words for a seed, each step being a
+// bijection.
+struct SobolKeys {
+  uint32_t index, x, y;
+};
+
+TRACER_HD SobolKeys sobol_keys(uint64_t seed, uint32_t pixel, uint32_t dimension) {
+  constexpr uint64_t kWeyl = 0x9e3779b97f4a7c15ull;  // 2^64 / golden ratio, SplitMix64's increment
+  const uint64_t counter = static_cast<uint64_t>(pixel) << 32 | dimension;
+  const uint64_t h = splitmix64_mix(seed + splitmix64_mix(counter + kWeyl));
+  const uint64_t g = splitmix64_mix(h + kWeyl);
+  return {static_cast<uint32_t>(h), static_cast<uint32_t>(h >> 32), static_cast<uint32_t>(g)};
+}
+
+// Two uniforms in [0, 1) for dimension pair `dimension` of sample `sample` of `pixel`.
 TRACER_HD void sobol_uniform2(uint64_t seed, uint32_t pixel, uint32_t sample, uint32_t dimension, float& a, float& b) {
-  const Philox4 keys =
-      philox4x32_10({{pixel, dimension, 0u, 1u}}, static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32));
-  const uint32_t index = nested_uniform_scramble(sample, keys.v[0]);
+  const SobolKeys keys = sobol_keys(seed, pixel, dimension);
+  const uint32_t index = nested_uniform_scramble(sample, keys.index);
   // nested_uniform_scramble(sobol_dimension0(index)) and nested_uniform_scramble(
   // sobol_dimension1(index)) with reverse_bits(reverse_bits(x)) = x cancelled: four of the
   // eight bit reversals, which took most of the draw's time (perf)
-  a = uniform_from_bits(reverse_bits(laine_karras_permutation(index, keys.v[1])));
-  b = uniform_from_bits(reverse_bits(laine_karras_permutation(superset_parity(index), keys.v[2])));
+  a = uniform_from_bits(reverse_bits(laine_karras_permutation(index, keys.x)));
+  b = uniform_from_bits(reverse_bits(laine_karras_permutation(superset_parity(index), keys.y)));
 }
 
 }  // namespace tracer
