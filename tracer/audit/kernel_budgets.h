@@ -18,7 +18,8 @@ struct KernelBudget {
 inline constexpr KernelBudget kKernelBudgets[] = {
     // kernel                            registers stack spill shared block
     // the megakernel, one per integrator (cuda/gpu_film.cu), 16x16 blocks
-    {"path_render_kernel",               156,  784, 0, 0, 256},
+    // path: two more for the Sobol scramble seeds' 64-bit SplitMix64 words (12.5 % occupancy either way)
+    {"path_render_kernel",               158,  784, 0, 0, 256},
     {"whitted_render_kernel",            203, 3424, 0, 0, 256},
     {"view_render_kernel",                86,  288, 0, 0, 256},
     // adaptive sampling (cuda/gpu_adaptive.cu)
@@ -31,8 +32,9 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     {"begin_batch_kernel",                20,    0, 0, 0, 128},
     {"generate_stage_kernel",             26,    0, 0, 0, 128},
     {"closest_hit_stage_kernel",          72,  288, 0, 0, 128},
-    // one register more for render.light_sampling's solid-angle branch, in the same occupancy step
-    {"path_shade_stage_kernel",          102,    0, 0, 0, 128},
+    // one register more for render.light_sampling's solid-angle branch and one for Russian
+    // roulette's first-vertex throughput, in the same occupancy step (25 %)
+    {"path_shade_stage_kernel",          103,    0, 0, 0, 128},
     {"whitted_shade_stage_kernel",        89,    0, 0, 0, 128},
     {"view_shade_stage_kernel",           45,    0, 0, 0, 128},
     {"shadow_any_hit_stage_kernel",       70,  288, 0, 0, 128},
