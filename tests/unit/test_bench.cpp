@@ -48,6 +48,50 @@ TEST(Bench, ConvergeWritesTableCsvAndPlot) {
   std::filesystem::remove_all(dir);
 }
 
+// --configs: a series per configuration of render options, each against the first, its label
+// quoted in the CSV where it holds a comma; a configuration that is no such list exits 2 first.
+TEST(Bench, ConvergeComparesConfigurations) {
+  const auto dir = test::temp_dir("bench-converge-configs");
+  const std::string csv = (dir / "c.csv").string(), plot = (dir / "c.png").string();
+  const std::string scene = test::source_path("scenes/cornell-box-path.json");
+  const auto cwd = std::filesystem::current_path();
+  std::filesystem::current_path(dir);
+  std::string output;
+  ASSERT_EQ(test::run_tracer("bench converge " + scene + " --width 16 --height 12 --spp 1,4 --ref-spp 16 --threads 1" +
+                                 " --configs 'rr_depth=3;rr_depth=65,nee=off' --csv " + csv + " --plot " + plot,
+                             &output),
+            0)
+      << output;
+  EXPECT_NE(output.find("rr_depth=65,nee=off against rr_depth=3, RMSE at equal spp: 1 spp"), std::string::npos)
+      << output;
+  EXPECT_NE(output.find("time to equal RMSE"), std::string::npos) << output;
+  std::ifstream in(csv);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("\nrr_depth=3,4,"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("\n\"rr_depth=65,nee=off\",4,"), std::string::npos) << text.str();
+  std::filesystem::current_path(cwd);
+  const struct {
+    const char *configs, *message;
+  } bad[] = {{"rr_depth=3", "give two or more configurations"},
+             {"rr_depth=3;spp=4", "spp is the command's own (--spp)"},
+             {"rr_depth=3;bogus=1", "unknown render option \"bogus\" in \"bogus=1\""},
+             {"rr_depth=3;nee", "\"nee\" in \"nee\": expected KEY=VALUE"},
+             {"rr_depth=3;;nee=off", "an empty configuration"},
+             {"rr_depth=3;rr_depth=x", "--configs: --rr-depth \"x\""}};
+  for (const auto& b : bad) {
+    std::filesystem::remove(csv);
+    EXPECT_EQ(test::run_tracer("bench converge " + scene + " --spp 4 --configs '" + b.configs + "' --csv " + csv +
+                                   " --plot " + plot,
+                               &output),
+              2)
+        << b.configs << ": " << output;
+    EXPECT_NE(output.find(b.message), std::string::npos) << b.configs << ": " << output;
+    EXPECT_FALSE(std::filesystem::exists(csv)) << b.configs;
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Bench, TradeHasARowPerKnobSetting) {
   const auto dir = test::temp_dir("bench-trade");
   const auto cwd = std::filesystem::current_path();

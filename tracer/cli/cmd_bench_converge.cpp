@@ -1,6 +1,7 @@
 // `tracer bench converge SCENE --spp 1,4,16,...`: error against time as the sample count
-// grows, for the scene's settings, for NEE+MIS and the plain estimator side by side, or for
-// several samplers side by side; a table, a CSV file and a log-log plot of RMSE against seconds.
+// grows, for the scene's settings, for NEE+MIS and the plain estimator side by side, for
+// several samplers or several configurations of render options side by side; a table, a CSV
+// file and a log-log plot of RMSE against seconds.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -16,12 +17,13 @@
 #include "io/input_error.h"
 #include "io/output_paths.h"
 #include "options/enum_names.h"
+#include "options/render_options.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
 
 struct BenchConvergeCommand {
-  std::string scene, ref, csv, plot, spp = "1,4,16,64,256", nee = "scene", samplers, thresholds;
+  std::string scene, ref, csv, plot, spp = "1,4,16,64,256", nee = "scene", samplers, configs, thresholds;
   uint32_t ref_spp = 0, width = 0, height = 0, min_spp = 0, adaptive_spp = 0;
   int threads = 0;
 };
@@ -70,7 +72,42 @@ const struct {
                 {"display RMSE", &ImageError::display_rmse, 1},
                 {"relMSE", &ImageError::rel_mse, 2}};
 
-// Series i against series 0 (the first sampler listed): RMSE at each equal spp as a ratio,
+// A CSV field (RFC 4180): quoted, quotes doubled, when it holds a comma or a quote.
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+// `--configs "rr_depth=3;rr_depth=65,nee=off"`: one series per configuration, each a set of
+// render options by their scene keys. spp, width and height are the command's own.
+std::vector<Series> parse_configs(const std::string& text) {
+  std::vector<Series> configs;
+  std::stringstream list(text);
+  for (std::string config; std::getline(list, config, ';');) {
+    Series series{config, {}};
+    std::stringstream pairs(config);
+    for (std::string pair; std::getline(pairs, pair, ',');) {
+      const size_t eq = pair.find('=');
+      const std::string key = pair.substr(0, eq);
+      if (eq == std::string::npos || key.empty())
+        throw InputError("--configs: \"" + pair + "\" in \"" + config + "\": expected KEY=VALUE");
+      if (key == "spp" || key == "width" || key == "height")
+        throw InputError("--configs: " + key + " is the command's own (--" + key + "), not a configuration's");
+      const auto& table = option_table();
+      if (std::none_of(table.begin(), table.end(), [&](const OptionInfo& o) { return key == o.name; }))
+        throw InputError("--configs: unknown render option \"" + key + "\" in \"" + config + "\"");
+      parse_option_text(key, pair.substr(eq + 1), "--configs: ", series.overrides);
+    }
+    if (config.empty()) throw InputError("--configs: an empty configuration in \"" + text + "\"");
+    configs.push_back(series);
+  }
+  if (configs.size() < 2) throw InputError("--configs: give two or more configurations, separated by ';'");
+  return configs;
+}
+
+// Series i against series 0 (the first sampler or configuration listed): RMSE at each equal spp as a ratio,
 // and the time series i needs to reach series 0's RMSE at its largest spp.
 void compare_with_baseline(const std::vector<Series>& setups, const std::vector<std::vector<Point>>& results,
                            size_t i) {
@@ -101,6 +138,9 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
   if (!samplers.empty() && cmd.nee == "both")
     throw InputError("--samplers: compares samplers with one estimator; give --nee scene, on or off with it");
   if (samplers.size() == 1) throw InputError("--samplers: give two or more samplers to compare");
+  const std::vector<Series> configs = cmd.configs.empty() ? std::vector<Series>{} : parse_configs(cmd.configs);
+  if (!configs.empty() && (cmd.nee == "both" || !samplers.empty()))
+    throw InputError("--configs: compares configurations alone; give it without --samplers or --nee both");
   std::vector<float> thresholds;
   std::stringstream threshold_texts(cmd.thresholds);
   for (std::string text; std::getline(threshold_texts, text, ',');) {
@@ -108,9 +148,9 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
     parse_option_text("noise_threshold", text, "--thresholds: ", o);
     thresholds.push_back(*o.noise_threshold);
   }
-  if (!thresholds.empty() && (cmd.nee == "both" || !samplers.empty()))
+  if (!thresholds.empty() && (cmd.nee == "both" || !samplers.empty() || !configs.empty()))
     throw InputError(
-        "--thresholds: compares adaptive with uniform sampling alone; give it without --samplers or "
+        "--thresholds: compares adaptive with uniform sampling alone; give it without --samplers, --configs or "
         "--nee both");
   const std::string stem = std::filesystem::path(cmd.scene).stem().string();
   const std::string csv = cmd.csv.empty() ? stem + "-converge.csv" : cmd.csv;
@@ -142,6 +182,12 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
     adaptive.noise_threshold = thresholds.front();
     load_scene(cmd.scene, adaptive);
   }
+  for (const Series& config : configs) {  // each configuration loads before the reference renders
+    RenderOverrides ov = base;
+    ov.override_with(config.overrides);
+    ov.spp = max_spp;
+    load_scene(cmd.scene, ov);
+  }
   std::printf("tracer bench converge %s: %ux%u, %s\n", cmd.scene.c_str(), probe.settings.width, probe.settings.height,
               cmd.nee == "both" ? "NEE+MIS and the plain estimator" : "the scene's estimator");
   const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 8ull * max_spp, cmd.threads,
@@ -158,13 +204,17 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
       series_setups.push_back({enum_name(kind), {}});
       series_setups.back().overrides.sampler = kind;
     }
+  } else if (!configs.empty()) {
+    series_setups = configs;
   } else {
     series_setups = {{probe.settings.integrator == IntegratorKind::Path ? (nee ? "NEE+MIS" : "plain") : "render", {}}};
   }
 
   std::ostringstream out;  // the table, written with the plot once every render is done
   out << "series,spp,seconds,rmse,display_rmse,rel_mse\n";
-  std::printf("%-10s %8s %10s %12s %13s %12s\n", "series", "spp", "seconds", "RMSE", "display RMSE", "relMSE");
+  int label_width = 10;
+  for (const Series& series : series_setups) label_width = std::max(label_width, static_cast<int>(series.label.size()));
+  std::printf("%-*s %8s %10s %12s %13s %12s\n", label_width, "series", "spp", "seconds", "RMSE", "display RMSE", "relMSE");
   std::vector<std::vector<Point>> results;
   std::vector<PlotSeries> lines;
   for (const auto& [label, overrides] : series_setups) {
@@ -179,9 +229,9 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
       results.back().push_back({spp, r.seconds, e});
       line.x.push_back(r.seconds);
       line.y.push_back(e.rmse);
-      std::printf("%-10s %8u %10.3f %12.6g %13.6g %12.6g\n", label.c_str(), spp, r.seconds, e.rmse, e.display_rmse,
+      std::printf("%-*s %8u %10.3f %12.6g %13.6g %12.6g\n", label_width, label.c_str(), spp, r.seconds, e.rmse, e.display_rmse,
                   e.rel_mse);
-      out << label << "," << spp << "," << r.seconds << "," << e.rmse << "," << e.display_rmse << "," << e.rel_mse
+      out << csv_field(label) << "," << spp << "," << r.seconds << "," << e.rmse << "," << e.display_rmse << "," << e.rel_mse
           << "\n";
     }
     lines.push_back(line);
@@ -198,7 +248,7 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
       results.back().push_back({*ov.spp, r.seconds, e});
       line.x.push_back(r.seconds);
       line.y.push_back(e.rmse);
-      std::printf("%-10s %8s %10.3f %12.6g %13.6g %12.6g  (threshold %g)\n", "adaptive", "", r.seconds, e.rmse,
+      std::printf("%-*s %8s %10.3f %12.6g %13.6g %12.6g  (threshold %g)\n", label_width, "adaptive", "", r.seconds, e.rmse,
                   e.display_rmse, e.rel_mse, static_cast<double>(threshold));
       out << "adaptive " << threshold << "," << *ov.spp << "," << r.seconds << "," << e.rmse << "," << e.display_rmse
           << "," << e.rel_mse << "\n";
@@ -209,7 +259,7 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
   outputs.add(csv, out.str());
   add_loglog_plot(outputs, plot, {"RMSE against render time: " + stem, "seconds", "RMSE"}, lines);
   outputs.commit();
-  if (!samplers.empty()) {
+  if (!samplers.empty() || !configs.empty()) {
     for (size_t i = 1; i < results.size(); ++i) compare_with_baseline(series_setups, results, i);
   } else if (!thresholds.empty()) {
     const Point& uniform = results[0].back();
@@ -249,6 +299,9 @@ const RegisterCommand kBenchConvergeCommand(
        app.add_option("--samplers", cmd->samplers,
                       "comma-separated samplers side by side (e.g. stochastic,stratified,sobol); ratios against the "
                       "first");
+       app.add_option("--configs", cmd->configs,
+                      "configurations side by side, separated by ';', each comma-separated KEY=VALUE render "
+                      "options (e.g. \"rr_depth=3;rr_depth=65\"); ratios against the first");
        app.add_option("--thresholds", cmd->thresholds,
                       "comma-separated noise thresholds: an adaptive series (at most --adaptive-spp) against "
                       "the uniform one");
