@@ -36,15 +36,19 @@ void expect_survival(float albedo, uint32_t rr_depth) {
   const std::string a = std::to_string(albedo);
   RenderOverrides ov;
   ov.rr_depth = rr_depth;
+  ov.max_depth = kMaxDepth;
+  ov.spp = kSpp;
   RenderStats stats;
-  render_cpu(test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 0], "to": [0, 0, 1], "vfov": 70},
-    "film": {"width": 40, "height": 40},
-    "render": {"integrator": "path", "spp": 16, "sampler": "stochastic", "max_depth": 8},
+  render_cpu(
+      test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 0], "to": [0, 0, 1], "vfov": 70},
+    "film": {"width": )" + std::to_string(kWidth) +
+                           R"(, "height": )" + std::to_string(kHeight) + R"(},
+    "render": {"integrator": "path", "sampler": "stochastic"},
     "materials": {"shell": {"type": "lambert", "albedo": [)" +
-                                  a + ", " + a + ", " + a + R"(]}},
+                           a + ", " + a + ", " + a + R"(]}},
     "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "shell"}]})",
-                              ov),
-             0, stats);
+                       ov),
+      0, stats);
   const double samples = double(kWidth) * kHeight * kSpp;
   const Moments k = secondary_rays_per_sample(albedo, rr_depth, kMaxDepth);
   const double measured = double(stats.rays.secondary) / samples;

@@ -73,17 +73,17 @@ TEST(Bench, ConvergeComparesConfigurations) {
   std::filesystem::current_path(cwd);
   const struct {
     const char *configs, *message;
-  } bad[] = {{"rr_depth=3", "give two or more configurations"},
-             {"rr_depth=3;spp=4", "spp is the command's own (--spp)"},
-             {"rr_depth=3;bogus=1", "unknown render option \"bogus\" in \"bogus=1\""},
-             {"rr_depth=3;nee", "\"nee\" in \"nee\": expected KEY=VALUE"},
-             {"rr_depth=3;;nee=off", "an empty configuration"},
-             {"rr_depth=3;rr_depth=x", "--configs: --rr-depth \"x\""}};
+  } bad[] = {{"rr_depth=3", "--configs: give two or more configurations"},
+             {"rr_depth=3;spp=4", "--configs \"spp=4\": spp is the command's own (--spp)"},
+             {"rr_depth=3;bogus=1", "--configs \"bogus=1\": unknown render option \"bogus\""},
+             {"rr_depth=3;nee", "--configs \"nee\": expected KEY=VALUE, not \"nee\""},
+             {"rr_depth=3;;nee=off", "--configs \"rr_depth=3;;nee=off\": an empty configuration"},
+             {"rr_depth=3;rr_depth=x", "--configs \"rr_depth=x\": --rr-depth \"x\""}};
   for (const auto& b : bad) {
     std::filesystem::remove(csv);
-    EXPECT_EQ(test::run_tracer("bench converge " + scene + " --spp 4 --configs '" + b.configs + "' --csv " + csv +
-                                   " --plot " + plot,
-                               &output),
+    EXPECT_EQ(test::run_tracer(
+                  "bench converge " + scene + " --spp 4 --configs '" + b.configs + "' --csv " + csv + " --plot " + plot,
+                  &output),
               2)
         << b.configs << ": " << output;
     EXPECT_NE(output.find(b.message), std::string::npos) << b.configs << ": " << output;

@@ -86,21 +86,19 @@ std::vector<Series> parse_configs(const std::string& text) {
   std::vector<Series> configs;
   std::stringstream list(text);
   for (std::string config; std::getline(list, config, ';');) {
+    const std::string context = "--configs \"" + config + "\": ";
+    if (config.empty()) throw InputError("--configs \"" + text + "\": an empty configuration");
     Series series{config, {}};
     std::stringstream pairs(config);
     for (std::string pair; std::getline(pairs, pair, ',');) {
       const size_t eq = pair.find('=');
       const std::string key = pair.substr(0, eq);
       if (eq == std::string::npos || key.empty())
-        throw InputError("--configs: \"" + pair + "\" in \"" + config + "\": expected KEY=VALUE");
+        throw InputError(context + "expected KEY=VALUE, not \"" + pair + "\"");
       if (key == "spp" || key == "width" || key == "height")
-        throw InputError("--configs: " + key + " is the command's own (--" + key + "), not a configuration's");
-      const auto& table = option_table();
-      if (std::none_of(table.begin(), table.end(), [&](const OptionInfo& o) { return key == o.name; }))
-        throw InputError("--configs: unknown render option \"" + key + "\" in \"" + config + "\"");
-      parse_option_text(key, pair.substr(eq + 1), "--configs: ", series.overrides);
+        throw InputError(context + key + " is the command's own (--" + key + "), not a configuration's");
+      parse_option_text(key, pair.substr(eq + 1), context, series.overrides);
     }
-    if (config.empty()) throw InputError("--configs: an empty configuration in \"" + text + "\"");
     configs.push_back(series);
   }
   if (configs.size() < 2) throw InputError("--configs: give two or more configurations, separated by ';'");
@@ -171,7 +169,7 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
       {{csv, "--csv"}, {plot, "--plot"}, {cmd.ref.empty() ? stem + "-converge-ref.exr" : "", "the reference cache"}},
       inputs);
   if (probe.settings.sampler == SamplerKind::Center && max_spp > 1)
-    base.sampler = SamplerKind::Stochastic;  // the center sampler takes one sample only
+    base.sampler = SamplerKind::Stochastic;                                // the center sampler takes one sample only
   std::sort(thresholds.begin(), thresholds.end(), std::greater<float>());  // cheapest first
   RenderOverrides adaptive = base;
   adaptive.spp = cmd.adaptive_spp ? cmd.adaptive_spp : 4 * max_spp;
@@ -214,7 +212,8 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
   out << "series,spp,seconds,rmse,display_rmse,rel_mse\n";
   int label_width = 10;
   for (const Series& series : series_setups) label_width = std::max(label_width, static_cast<int>(series.label.size()));
-  std::printf("%-*s %8s %10s %12s %13s %12s\n", label_width, "series", "spp", "seconds", "RMSE", "display RMSE", "relMSE");
+  std::printf("%-*s %8s %10s %12s %13s %12s\n", label_width, "series", "spp", "seconds", "RMSE", "display RMSE",
+              "relMSE");
   std::vector<std::vector<Point>> results;
   std::vector<PlotSeries> lines;
   for (const auto& [label, overrides] : series_setups) {
@@ -229,10 +228,10 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
       results.back().push_back({spp, r.seconds, e});
       line.x.push_back(r.seconds);
       line.y.push_back(e.rmse);
-      std::printf("%-*s %8u %10.3f %12.6g %13.6g %12.6g\n", label_width, label.c_str(), spp, r.seconds, e.rmse, e.display_rmse,
-                  e.rel_mse);
-      out << csv_field(label) << "," << spp << "," << r.seconds << "," << e.rmse << "," << e.display_rmse << "," << e.rel_mse
-          << "\n";
+      std::printf("%-*s %8u %10.3f %12.6g %13.6g %12.6g\n", label_width, label.c_str(), spp, r.seconds, e.rmse,
+                  e.display_rmse, e.rel_mse);
+      out << csv_field(label) << "," << spp << "," << r.seconds << "," << e.rmse << "," << e.display_rmse << ","
+          << e.rel_mse << "\n";
     }
     lines.push_back(line);
   }
@@ -248,8 +247,8 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
       results.back().push_back({*ov.spp, r.seconds, e});
       line.x.push_back(r.seconds);
       line.y.push_back(e.rmse);
-      std::printf("%-*s %8s %10.3f %12.6g %13.6g %12.6g  (threshold %g)\n", label_width, "adaptive", "", r.seconds, e.rmse,
-                  e.display_rmse, e.rel_mse, static_cast<double>(threshold));
+      std::printf("%-*s %8s %10.3f %12.6g %13.6g %12.6g  (threshold %g)\n", label_width, "adaptive", "", r.seconds,
+                  e.rmse, e.display_rmse, e.rel_mse, static_cast<double>(threshold));
       out << "adaptive " << threshold << "," << *ov.spp << "," << r.seconds << "," << e.rmse << "," << e.display_rmse
           << "," << e.rel_mse << "\n";
     }

@@ -149,7 +149,7 @@ void parse_option_text(const std::string& key, const std::string& text, const st
   }
   TRACER_RENDER_OPTIONS(TRACER_OPTION_TEXT)
 #undef TRACER_OPTION_TEXT
-  throw InputError("unknown render option \"" + key + "\"");
+  throw InputError(context + "unknown render option \"" + key + "\"");
 }
 
 RenderOptions resolved_options(const RenderSettings& settings) {

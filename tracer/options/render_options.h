@@ -61,7 +61,7 @@ struct RenderOverrides : RenderOptions {
 void read_options(JsonObject& obj, const char* section, RenderOptions& into);
 
 // Sets the option `name` from command-line text; an InputError names `context` (the scene
-// file and "command line ") and the flag. Numbers are decimal digits only; switches are on or off.
+// file and "command line ") and the flag, or the unknown name. Numbers are decimal digits only; switches are on or off.
 void parse_option_text(const std::string& name, const std::string& text, const std::string& context,
                        RenderOptions& into);
 
