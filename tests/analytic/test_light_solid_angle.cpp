@@ -29,11 +29,8 @@ constexpr int kSamples = 400000;
 struct Rectangle {
   Vec3 corner, u, v;
   std::string json() const {
-    const auto vec = [](Vec3 a) {
-      return "[" + std::to_string(a.x) + ", " + std::to_string(a.y) + ", " + std::to_string(a.z) + "]";
-    };
-    return R"({"type": "quad", "corner": )" + vec(corner) + R"(, "u": )" + vec(u) + R"(, "v": )" + vec(v) +
-           R"(, "material": "lamp"})";
+    return R"({"type": "quad", "corner": )" + test::json_array(corner) + R"(, "u": )" + test::json_array(u) +
+           R"(, "v": )" + test::json_array(v) + R"(, "material": "lamp"})";
   }
   Vec3 at(double s, double t) const { return corner + u * float(s) + v * float(t); }
   // The solid angle of the part [s0, s1] x [t0, t1], as two triangles.
@@ -52,7 +49,9 @@ TEST(LightSolidAngle, RectangleSamplesAreUniformInSolidAngle) {
   const struct {
     Rectangle rect;
     Vec3 from;
-  } cases[] = {{kLamp, {0.3f, 0.0f, 0.2f}}, {kLamp, {1.7f, 1.8f, -0.9f}}, {kTilted, {0.9f, 0.4f, -0.6f}},
+  } cases[] = {{kLamp, {0.3f, 0.0f, 0.2f}},
+               {kLamp, {1.7f, 1.8f, -0.9f}},
+               {kTilted, {0.9f, 0.4f, -0.6f}},
                {{{-0.125f, 5.0f, -0.125f}, {0.25f, 0, 0}, {0, 0, 0.25f}}, {0.4f, 0.0f, 0.3f}}};
   for (const auto& c : cases) {
     const LightFixture fx(c.rect.json(), "solid-angle");
@@ -69,7 +68,8 @@ TEST(LightSolidAngle, RectangleSamplesAreUniformInSolidAngle) {
       inverse_pdf.add(1.0 / ls.pdf);
       const Vec3 q = c.from + ls.wi * ls.distance - c.rect.corner;
       const double sq = dot(q, c.rect.u) / dot(c.rect.u, c.rect.u), tq = dot(q, c.rect.v) / dot(c.rect.v, c.rect.v);
-      const int bx = std::min(kBins - 1, std::max(0, int(sq * kBins))), by = std::min(kBins - 1, std::max(0, int(tq * kBins)));
+      const int bx = std::min(kBins - 1, std::max(0, int(sq * kBins))),
+                by = std::min(kBins - 1, std::max(0, int(tq * kBins)));
       observed[by * kBins + bx] += 1;
       by_area[std::min(kBins - 1, int(u2 * kBins)) * kBins + std::min(kBins - 1, int(u1 * kBins))] += 1;
     }
@@ -128,25 +128,13 @@ TEST(LightSolidAngle, ExtremesFallBackToAreaSamplingWithTheSameDensity) {
   }
 }
 
-// Irradiance at x (normal n) from a rectangle of radiance 1, Lambert's formula:
-// E = 1/2 sum_i theta_i n . normalize(R_i x R_i+1), R_i the unit directions to the corners.
-double polygon_irradiance(Vec3 x, Vec3 n, const Rectangle& r) {
-  const Vec3 corners[4] = {r.at(0, 0), r.at(1, 0), r.at(1, 1), r.at(0, 1)};
-  double sum = 0;
-  for (int i = 0; i < 4; ++i) {
-    const Vec3 a = normalize(corners[i] - x), b = normalize(corners[(i + 1) % 4] - x);
-    sum += std::acos(std::clamp(double(dot(a, b)), -1.0, 1.0)) * dot(n, normalize(cross(a, b)));
-  }
-  return 0.5 * std::abs(sum);
-}
-
 // A point on the floor beside the lamp's edge, as in a Cornell box: both strategies estimate
 // Lambert's answer, and the solid-angle one with at least 8x less variance at 65,536 samples
 // (the ratio measured here is 17.4).
 TEST(LightSolidAngle, PolygonIrradianceWithLessVarianceThanAreaSampling) {
   const Rectangle lamp = {{-0.5f, 1.0f, -0.5f}, {1, 0, 0}, {0, 0, 1}};
   const Vec3 x = {0.7f, 0.0f, 0.1f}, n = {0, 1, 0};
-  const double exact = polygon_irradiance(x, n, lamp);
+  const double exact = test::polygon_irradiance(x, n, {lamp.at(0, 0), lamp.at(1, 0), lamp.at(1, 1), lamp.at(0, 1)});
   const LightFixture fx(lamp.json(), "solid-angle");
   MeanEstimate solid, area;
   test::InputStream s{3};

@@ -1,9 +1,12 @@
 // What the light-sampling tests share: a scene holding one emitter, a Monte Carlo mean with
-// the tolerance its own noise allows, and the closed-form solid angle of a triangle.
+// the tolerance its own noise allows, the closed-form solid angle of a triangle and the
+// closed-form irradiance from a polygon.
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "scene/scene.h"
 #include "test_util.h"
@@ -16,13 +19,12 @@ struct LightFixture {
   SceneView view;
   // light_sampling: render.light_sampling, "area" (the default) or "solid-angle".
   explicit LightFixture(const std::string& shape, const std::string& light_sampling = "area")
-      : scene(
-            scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
+      : scene(scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
           "film": {"width": 4, "height": 4}, "render": {"integrator": "path", "light_sampling": ")" +
-                       light_sampling + R"("},
+                         light_sampling + R"("},
           "materials": {"lamp": {"type": "emissive", "radiance": [1, 1, 1], "two_sided": true}},
           "shapes": [)" + shape +
-                             "]}")),
+                         "]}")),
         view(scene.view()) {}
 };
 
@@ -52,6 +54,23 @@ inline double triangle_solid_angle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
   const double la = std::sqrt(dot3(A, A)), lb = std::sqrt(dot3(B, B)), lc = std::sqrt(dot3(C, C));
   const double denominator = la * lb * lc + dot3(A, B) * lc + dot3(A, C) * lb + dot3(B, C) * la;
   return 2 * std::atan2(std::abs(triple), denominator);
+}
+
+// A point as a scene file's JSON array.
+inline std::string json_array(Vec3 a) {
+  return "[" + std::to_string(a.x) + ", " + std::to_string(a.y) + ", " + std::to_string(a.z) + "]";
+}
+
+// Irradiance at x (normal n) from a polygon of radiance 1, Lambert's formula:
+// E = 1/2 sum_i theta_i n . normalize(R_i x R_i+1), R_i the unit directions to the corners.
+inline double polygon_irradiance(Vec3 x, Vec3 n, std::initializer_list<Vec3> polygon) {
+  const std::vector<Vec3> corners(polygon);
+  double sum = 0;
+  for (size_t i = 0; i < corners.size(); ++i) {
+    const Vec3 a = normalize(corners[i] - x), b = normalize(corners[(i + 1) % corners.size()] - x);
+    sum += std::acos(std::clamp(double(dot(a, b)), -1.0, 1.0)) * dot(n, normalize(cross(a, b)));
+  }
+  return 0.5 * std::abs(sum);
 }
 
 }  // namespace tracer::test

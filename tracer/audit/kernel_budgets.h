@@ -32,9 +32,10 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     {"begin_batch_kernel",                20,    0, 0, 0, 128},
     {"generate_stage_kernel",             26,    0, 0, 0, 128},
     {"closest_hit_stage_kernel",          72,  288, 0, 0, 128},
-    // one register more for render.light_sampling's solid-angle branch and one for Russian
-    // roulette's first-vertex throughput, in the same occupancy step (25 %)
-    {"path_shade_stage_kernel",          103,    0, 0, 0, 128},
+    // one register more for render.light_sampling's solid-angle branch, one for Russian
+    // roulette's first-vertex throughput and five for spherical triangles (Arvo's sample), in
+    // the same occupancy step (25 %)
+    {"path_shade_stage_kernel",          108,    0, 0, 0, 128},
     {"whitted_shade_stage_kernel",        89,    0, 0, 0, 128},
     {"view_shade_stage_kernel",           45,    0, 0, 0, 128},
     {"shadow_any_hit_stage_kernel",       70,  288, 0, 0, 128},

@@ -64,11 +64,11 @@ TRACER_HD uint64_t splitmix64_mix(uint64_t z) {
 }
 
 // The three scramble seeds of one dimension pair of one pixel: the sample index's shuffle and
-// the two coordinates' scrambles. Two SplitMix64 steps (counter, then the scene seed, each
-// added to a Weyl increment) give the first two seeds, one more step the third: six 64-bit
-// multiplies where a Philox4x32-10 call took twenty 32x32 products in ten dependent rounds.
-// Distinct (pixel, dimension) give distinct first words for a seed, each step being a
-// bijection.
+// the two coordinates' scrambles. Two SplitMix64 steps give the first two seeds (the counter
+// plus the Weyl increment, then the scene seed plus the first step's output), one more step
+// (its output plus the increment) the third: six 64-bit multiplies where a Philox4x32-10 call
+// took twenty 32x32 products in ten dependent rounds. Distinct (pixel, dimension) give
+// distinct first words for a seed, each step being a bijection.
 struct SobolKeys {
   uint32_t index, x, y;
 };

@@ -29,7 +29,7 @@ struct PathState {
                    // as sample_light saw it for the MIS weights to sum to 1
   float bsdf_pdf;  // the density of the BSDF sample that chose ray
   uint32_t depth;
-  bool specular;  // the camera ray or a specular bounce: emission it sees counts fully
+  bool specular;           // the camera ray or a specular bounce: emission it sees counts fully
   float first_throughput;  // max throughput after the first vertex's BSDF sample: roulette's unit
 };
 

@@ -52,8 +52,7 @@ template <IntegratorKind kKind>
 TRACER_HD FilmSum render_pixel_as(const SceneView& scene, uint32_t px, uint32_t py, uint32_t sample_begin,
                                   uint32_t sample_end, RayCounts& counts) {
   FilmSum sum = {{0, 0, 0}, 0u, 0u};
-  for (uint32_t s = sample_begin; s < sample_end; ++s)
-    film_add(sum, render_sample_as<kKind>(scene, px, py, s, counts));
+  for (uint32_t s = sample_begin; s < sample_end; ++s) film_add(sum, render_sample_as<kKind>(scene, px, py, s, counts));
   return sum;
 }
 
@@ -81,11 +80,13 @@ TRACER_HD void render_pixel_halves(const SceneView& scene, uint32_t px, uint32_t
                                    uint32_t sample_end, FilmSum& even, FilmSum& odd, RayCounts& counts) {
   switch (scene.settings.integrator) {
     case IntegratorKind::Whitted:
-      return render_pixel_halves_as<IntegratorKind::Whitted>(scene, px, py, sample_begin, sample_end, even, odd, counts);
+      return render_pixel_halves_as<IntegratorKind::Whitted>(scene, px, py, sample_begin, sample_end, even, odd,
+                                                             counts);
     case IntegratorKind::Path:
       return render_pixel_halves_as<IntegratorKind::Path>(scene, px, py, sample_begin, sample_end, even, odd, counts);
     default:
-      return render_pixel_halves_as<IntegratorKind::Normals>(scene, px, py, sample_begin, sample_end, even, odd, counts);
+      return render_pixel_halves_as<IntegratorKind::Normals>(scene, px, py, sample_begin, sample_end, even, odd,
+                                                             counts);
   }
 }
 

@@ -56,8 +56,8 @@ struct StreamStates {
 };
 
 TRACER_HD PathState load_path(const StreamStates& st, uint32_t i) {
-  return {{st.origin[i], st.dir[i]}, st.radiance[i], st.throughput[i], st.from[i], st.bsdf_pdf[i], st.depth[i],
-          st.specular[i] != 0u, st.first_throughput[i]};
+  return {{st.origin[i], st.dir[i]}, st.radiance[i],        st.throughput[i], st.from[i], st.bsdf_pdf[i], st.depth[i],
+          st.specular[i] != 0u,      st.first_throughput[i]};
 }
 
 TRACER_HD void store_path(const StreamStates& st, uint32_t i, const PathState& p) {

@@ -15,8 +15,9 @@ enum class AccelKind : uint32_t { Bvh, None, Kdtree, KdtreeMedian, Grid, Lbvh };
 enum class IntegratorKind : uint32_t { Whitted, Normals, Albedo, Depth, Path };
 enum class TriangleTest : uint32_t { Watertight, MollerTrumbore };
 enum class Switch : uint32_t { Off, On };
-// How next-event estimation samples a rectangular light: uniformly by area, or uniformly in the
-// solid angle it subtends (kernel/shading/spherical_rectangle.h; docs/path.md says when each pays).
+// How next-event estimation samples a rectangular or triangular light: uniformly by area, or
+// uniformly in the solid angle it subtends (kernel/shading/spherical_rectangle.h,
+// spherical_triangle.h; docs/path.md says when each pays).
 enum class LightSampling : uint32_t { Area, SolidAngle };
 // How the CPU or GPU walks the samples (the same image either way): one call per pixel
 // sample (render_pixel.h), or ray states in queues, one stage at a time (stream.h).
@@ -48,8 +49,8 @@ enum Effects : uint32_t {
   X(rr_depth, uint32_t, 3u, render, PathTracer, "path: Russian roulette from this many bounces on (default 3)")     \
   X(sky_sampling, Switch, Switch::On, render, PathTracerUnderCubemap,                                               \
     "path: sample a cube-map sky as a light, on (default) or off (only BSDF rays find it)")                         \
-  X(light_sampling, LightSampling, LightSampling::Area, render, UnlessDefault,                                     \
-    "path: rectangular lights sampled by area (default) or solid-angle (uniform in the solid angle they subtend)")  \
+  X(light_sampling, LightSampling, LightSampling::Area, render, UnlessDefault,                                      \
+    "path: rectangle and triangle lights sampled by area (default) or solid-angle (uniform in their solid angle)")  \
   X(triangle_test, TriangleTest, TriangleTest::Watertight, render, UnlessDefault,                                   \
     "watertight (default) or moller-trumbore")                                                                      \
   X(grid_resolution, uint32_t, 0u, render, UnlessDefault,                                                           \

@@ -3,15 +3,16 @@
 // triangles; emissive planes are infinite and only found by chance; a cube-map sky when
 // render.sky_sampling is on) with a selection probability proportional to its power
 // (tracer/light_table.cpp). Spheres seen from outside are sampled uniformly in the cone they
-// subtend; with render.light_sampling "solid-angle", rectangles uniformly in their solid angle
-// (kernel/shading/spherical_rectangle.h); other shapes, and rectangles by default or where
-// float cannot sample their solid angle, uniformly by area; the sky by its cells
-// (kernel/shading/sky_sampling.h).
+// subtend; with render.light_sampling "solid-angle", rectangles and triangles uniformly in their
+// solid angle (kernel/shading/spherical_rectangle.h, spherical_triangle.h); other shapes, and
+// rectangles and triangles by default or where float cannot sample their solid angle,
+// uniformly by area; the sky by its cells (kernel/shading/sky_sampling.h).
 #pragma once
 #include "kernel/shading/light_sources.h"
 #include "kernel/shading/sampling.h"
 #include "kernel/shading/sky_sampling.h"
 #include "kernel/shading/spherical_rectangle.h"
+#include "kernel/shading/spherical_triangle.h"
 #include "kernel/shading/surface.h"
 
 namespace tracer {
@@ -67,6 +68,10 @@ TRACER_HD float light_pdf(const SceneView& scene, uint32_t prim, Vec3 from, Vec3
     const SphericalRectangle rect = spherical_rectangle(from, p.a, p.b, p.c);
     if (rect.solid_angle > 0.0f) return pmf / rect.solid_angle;
   }
+  if (p.kind == ShapeKind::Triangle && scene.settings.light_sampling == LightSampling::SolidAngle) {
+    const float omega = spherical_triangle_solid_angle(from, p.a, p.b, p.c);
+    if (omega > 0.0f) return pmf / omega;
+  }
   const float cos_l = abs_of(dot(ng, wi));
   return cos_l > 0.0f ? pmf * t * t / (cos_l * primitive_area(p)) : 0.0f;
 }
@@ -107,6 +112,7 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
   s.prim = entry.index;
   Vec3 point, ng;
   float b1 = 0.0f, b2 = 0.0f;  // the sampled point's quad or triangle parameters, for its texture lookup
+  float solid_angle = 0.0f;    // > 0 where sampled uniformly in solid angle: light_pdf's pmf / solid_angle
   switch (p.kind) {
     case ShapeKind::Sphere: {
       const Vec3 to_center = p.a - from;
@@ -133,14 +139,20 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
       b1 = u1, b2 = u2;
       if (scene.settings.light_sampling == LightSampling::SolidAngle) {
         const SphericalRectangle rect = spherical_rectangle(from, p.a, p.b, p.c);
-        if (rect.solid_angle > 0.0f) sample_spherical_rectangle(rect, u1, u2, b1, b2);
+        solid_angle = rect.solid_angle;
+        if (solid_angle > 0.0f) sample_spherical_rectangle(rect, u1, u2, b1, b2);
       }
       point = p.a + p.b * b1 + p.c * b2;
       ng = normalize(cross(p.b, p.c));
       break;
     }
     case ShapeKind::Triangle: {
-      sample_triangle(u1, u2, b1, b2);
+      if (scene.settings.light_sampling == LightSampling::SolidAngle)
+        solid_angle = spherical_triangle_solid_angle(from, p.a, p.b, p.c);
+      if (solid_angle > 0.0f)
+        sample_spherical_triangle(from, p.a, p.b, p.c, solid_angle, u1, u2, b1, b2);
+      else
+        sample_triangle(u1, u2, b1, b2);
       point = p.a * (1.0f - b1 - b2) + p.b * b1 + p.c * b2;
       ng = normalize(cross(p.b - p.a, p.c - p.a));
       break;
@@ -160,7 +172,7 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
     Surface at = surface_at(scene, {from, s.wi}, {s.distance, entry.index, b1, b2});
     s.radiance = material_at(scene, at).radiance;
   }
-  s.pdf = light_pdf(scene, entry.index, from, s.wi, s.distance, ng);
+  s.pdf = solid_angle > 0.0f ? entry.pmf / solid_angle : light_pdf(scene, entry.index, from, s.wi, s.distance, ng);
   s.valid = s.pdf > 0.0f && s.pdf < kInfinity;
   return s;
 }

@@ -5,7 +5,16 @@
 
 namespace tracer {
 
-enum class MaterialKind : uint32_t { Lambert, Metal, Dielectric, Phong, Emissive, Conductor, RoughDielectric, MetalRough };
+enum class MaterialKind : uint32_t {
+  Lambert,
+  Metal,
+  Dielectric,
+  Phong,
+  Emissive,
+  Conductor,
+  RoughDielectric,
+  MetalRough
+};
 enum class FresnelKind : uint32_t { Schlick, Exact };
 
 // The colours of a material a texture may replace (Material::texture).

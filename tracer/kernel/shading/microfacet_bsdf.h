@@ -161,10 +161,12 @@ TRACER_HD BsdfValue eval_metal_rough(const Material& m, Vec3 wo, Vec3 wi) {
   const SpecularLobe r = specular_reflection(wo, wr, metal_rough_alpha(m));
   const MetalRoughLobes p = metal_rough_lobes(m, wo.z);
   const float fd = fresnel_schlick(r.cos_oh, 1.0f, m.ior);
-  if (transmitted) return {m.albedo * ((1.0f - m.metallic) * (1.0f - fd) * m.transmission * r.f_cos), p.transmission * r.pdf};
+  if (transmitted)
+    return {m.albedo * ((1.0f - m.metallic) * (1.0f - fd) * m.transmission * r.f_cos), p.transmission * r.pdf};
   if (!(wi.z > 0.0f)) return {{0.0f, 0.0f, 0.0f}, 0.0f};
   const Vec3 metal = fresnel_schlick_f0(m.albedo, r.cos_oh) * r.f_cos;
-  const Vec3 dielectric = m.albedo * ((1.0f - fd) * (1.0f - m.transmission) * wi.z / kPi) + Vec3{1.0f, 1.0f, 1.0f} * (fd * r.f_cos);
+  const Vec3 dielectric =
+      m.albedo * ((1.0f - fd) * (1.0f - m.transmission) * wi.z / kPi) + Vec3{1.0f, 1.0f, 1.0f} * (fd * r.f_cos);
   return {dielectric * (1.0f - m.metallic) + metal * m.metallic, p.specular * r.pdf + p.diffuse * wi.z / kPi};
 }
 
