@@ -108,19 +108,9 @@ TEST(LightSolidAngle, ExtremesFallBackToAreaSamplingWithTheSameDensity) {
     const LightFixture fx(c.rect.json(), "solid-angle");
     const float omega = spherical_rectangle(c.from, c.rect.corner, c.rect.u, c.rect.v).solid_angle;
     EXPECT_EQ(omega > 0.0f, c.sampled_by_solid_angle) << omega;
-    test::InputStream s{11};
     MeanEstimate inverse_pdf;
-    for (int i = 0; i < 4096; ++i) {
-      const float u1 = s.next(), u2 = s.next();
-      const LightSample ls = sample_light(fx.view, 0, c.from, u1, u2, 0.0f);
-      ASSERT_EQ(ls.valid, c.valid) << u1 << " " << u2;
-      if (!ls.valid) continue;
-      inverse_pdf.add(1.0 / ls.pdf);
-      ASSERT_TRUE(std::isfinite(ls.pdf) && ls.pdf > 0.0f && is_finite(ls.wi) && std::isfinite(ls.distance));
-      const Vec3 ng = normalize(cross(c.rect.u, c.rect.v));
-      ASSERT_EQ(light_pdf(fx.view, 0, c.from, ls.wi, ls.distance, ng), ls.pdf) << u1 << " " << u2;
-      if (c.sampled_by_solid_angle) ASSERT_EQ(ls.pdf, 1.0f / omega);
-    }
+    test::expect_consistent_light_samples(fx, c.from, normalize(cross(c.rect.u, c.rect.v)), omega, c.valid,
+                                          inverse_pdf);
     // Area sampling's density is right too: E[1 / pdf] is the solid angle (the parallelogram's
     // samples stay away from the grazing and near-zero distances whose 1 / pdf has no variance bound).
     if (std::string(c.what) == "a parallelogram")
@@ -149,8 +139,7 @@ TEST(LightSolidAngle, PolygonIrradianceWithLessVarianceThanAreaSampling) {
   }
   EXPECT_NEAR(solid.mean(), exact, solid.tolerance());
   EXPECT_NEAR(area.mean(), exact, area.tolerance());
-  const double solid_var = solid.sum2 / solid.n - solid.mean() * solid.mean();
-  const double area_var = area.sum2 / area.n - area.mean() * area.mean();
+  const double solid_var = solid.variance(), area_var = area.variance();
   EXPECT_GT(area_var / solid_var, 8.0) << "area " << area_var << ", solid angle " << solid_var;
   ::testing::Test::RecordProperty("variance_ratio", std::to_string(area_var / solid_var));
 }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -152,22 +153,10 @@ TEST(SphericalTriangle, ExtremesFallBackToAreaSamplingWithTheSameDensity) {
     const LightFixture fx(c.tri.json(), "solid-angle");
     const float omega = spherical_triangle_solid_angle(c.from, c.tri.v0, c.tri.v1, c.tri.v2);
     EXPECT_EQ(omega > 0.0f, c.sampled_by_solid_angle) << triangle_solid_angle(c.from, c.tri.v0, c.tri.v1, c.tri.v2);
-    test::InputStream s{11};
     MeanEstimate inverse_pdf;
-    for (int i = 0; i < 4096; ++i) {
-      const float u1 = s.next(), u2 = s.next();
-      const LightSample ls = sample_light(fx.view, 0, c.from, u1, u2, 0.0f);
-      if (!c.rounding_decides) {
-        ASSERT_EQ(ls.valid, c.valid) << u1 << " " << u2;
-      }
-      if (!ls.valid) continue;
-      inverse_pdf.add(1.0 / ls.pdf);
-      ASSERT_TRUE(std::isfinite(ls.pdf) && ls.pdf > 0.0f && is_finite(ls.wi) && std::isfinite(ls.distance));
-      ASSERT_EQ(light_pdf(fx.view, 0, c.from, ls.wi, ls.distance, c.tri.normal()), ls.pdf) << u1 << " " << u2;
-      if (c.sampled_by_solid_angle) {
-        ASSERT_EQ(ls.pdf, 1.0f / omega);
-      }
-    }
+    test::expect_consistent_light_samples(fx, c.from, c.tri.normal(), omega,
+                                          c.rounding_decides ? std::nullopt : std::optional<bool>(c.valid),
+                                          inverse_pdf);
     // Either way E[1 / pdf] is the solid angle (the small triangle's samples, by area or by
     // solid angle, stay away from the grazing distances whose 1 / pdf has no variance bound).
     if (c.tri.v0.x == small.v0.x) {
@@ -200,8 +189,7 @@ TEST(SphericalTriangle, PolygonIrradianceWithLessVarianceThanAreaSampling) {
   }
   EXPECT_NEAR(solid.mean(), exact, solid.tolerance());
   EXPECT_NEAR(area.mean(), exact, area.tolerance());
-  const double solid_var = solid.sum2 / solid.n - solid.mean() * solid.mean();
-  const double area_var = area.sum2 / area.n - area.mean() * area.mean();
+  const double solid_var = solid.variance(), area_var = area.variance();
   EXPECT_GT(area_var / solid_var, 8.0) << "area " << area_var << ", solid angle " << solid_var;
   ::testing::Test::RecordProperty("variance_ratio", std::to_string(area_var / solid_var));
 }

@@ -1,13 +1,17 @@
 // What the light-sampling tests share: a scene holding one emitter, a Monte Carlo mean with
 // the tolerance its own noise allows, the closed-form solid angle of a triangle and the
-// closed-form irradiance from a polygon.
+// closed-form irradiance from a polygon, and the checks every light sample must pass.
 #pragma once
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
+#include "kernel/shading/light_sampling.h"
 #include "scene/scene.h"
 #include "test_util.h"
 
@@ -36,11 +40,32 @@ struct MeanEstimate {
   long n = 0;
   void add(double x) { sum += x, sum2 += x * x, ++n; }
   double mean() const { return sum / n; }
-  double tolerance() const {
-    const double variance = std::max(0.0, sum2 / n - mean() * mean());
-    return 3.29 * std::sqrt(variance / n) + 1e-5 * std::abs(mean());
-  }
+  double variance() const { return std::max(0.0, sum2 / n - mean() * mean()); }
+  double tolerance() const { return 3.29 * std::sqrt(variance() / n) + 1e-5 * std::abs(mean()); }
 };
+
+// 4,096 samples of the fixture's one light from `from` (its geometric normal ng): each valid
+// one finite, with the density light_pdf gives its direction bit for bit, and 1 / omega where
+// the light is sampled in solid angle (omega > 0). `valid`: whether every sample is valid or
+// none is; no value where rounding decides. Adds each valid sample's 1 / pdf to inverse_pdf.
+inline void expect_consistent_light_samples(const LightFixture& fx, Vec3 from, Vec3 ng, float omega,
+                                            std::optional<bool> valid, MeanEstimate& inverse_pdf) {
+  InputStream s{11};
+  for (int i = 0; i < 4096; ++i) {
+    const float u1 = s.next(), u2 = s.next();
+    const LightSample ls = sample_light(fx.view, 0, from, u1, u2, 0.0f);
+    if (valid) {
+      ASSERT_EQ(ls.valid, *valid) << u1 << " " << u2;
+    }
+    if (!ls.valid) continue;
+    inverse_pdf.add(1.0 / ls.pdf);
+    ASSERT_TRUE(std::isfinite(ls.pdf) && ls.pdf > 0.0f && is_finite(ls.wi) && std::isfinite(ls.distance));
+    ASSERT_EQ(light_pdf(fx.view, 0, from, ls.wi, ls.distance, ng), ls.pdf) << u1 << " " << u2;
+    if (omega > 0.0f) {
+      ASSERT_EQ(ls.pdf, 1.0f / omega);
+    }
+  }
+}
 
 // Solid angle of triangle (a, b, c) seen from p (Van Oosterom and Strackee 1983):
 // tan(omega / 2) = |A . (B x C)| / (|A||B||C| + (A.B)|C| + (A.C)|B| + (B.C)|A|), A = a - p ...

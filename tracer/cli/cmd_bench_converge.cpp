@@ -168,8 +168,8 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
   refuse_outputs_naming_inputs(
       {{csv, "--csv"}, {plot, "--plot"}, {cmd.ref.empty() ? stem + "-converge-ref.exr" : "", "the reference cache"}},
       inputs);
-  if (probe.settings.sampler == SamplerKind::Center && max_spp > 1)
-    base.sampler = SamplerKind::Stochastic;                                // the center sampler takes one sample only
+  // The center sampler takes one sample only.
+  if (probe.settings.sampler == SamplerKind::Center && max_spp > 1) base.sampler = SamplerKind::Stochastic;
   std::sort(thresholds.begin(), thresholds.end(), std::greater<float>());  // cheapest first
   RenderOverrides adaptive = base;
   adaptive.spp = cmd.adaptive_spp ? cmd.adaptive_spp : 4 * max_spp;
