@@ -25,6 +25,11 @@ TEST(Sobol, KnownAnswersOfTheFirstTwoDimensions) {
   }
   EXPECT_EQ(reverse_bits(0x00000001u), 0x80000000u);
   EXPECT_EQ(reverse_bits(0x12345678u), 0x1e6a2c48u);
+  EXPECT_EQ(reverse_bits64(0x0000000012345678ull), 0x1e6a2c4800000000ull);
+  uint32_t a = 0x12345678u, b = 0x00000001u;
+  reverse_bits_of_both(a, b);
+  EXPECT_EQ(a, 0x1e6a2c48u);
+  EXPECT_EQ(b, 0x80000000u);
 }
 
 // An Owen scramble permutes the values and maps every aligned block of 2^k values onto an

@@ -96,12 +96,15 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
   const uint32_t dim = kDimFirstFree + 4u * st.depth;
   const bool sample_lights = nee && !is_specular(m);
   const bool roulette = st.depth + 1 >= rs.rr_depth;
-  // A pair is drawn only where it is used: each is a pure function of its dimension, so
-  // one left undrawn changes no other.
-  float light_u1 = 0.0f, light_u2 = 0.0f, pick_u, choice_u, dir_u1, dir_u2, rr_u = 0.0f, sky_cell_u = 0.0f;
+  // A pair is drawn only where it is read (a Lambert vertex lit by one light reads no light
+  // choice and no lobe choice): each is a pure function of its dimension, so one left undrawn
+  // changes no other.
+  float light_u1 = 0.0f, light_u2 = 0.0f, pick_u = 0.0f, choice_u = 0.0f, dir_u1 = 0.0f, dir_u2 = 0.0f, rr_u = 0.0f,
+        sky_cell_u = 0.0f;
   if (sample_lights) draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim, light_u1, light_u2);
-  draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 1u, pick_u, choice_u);
-  draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 2u, dir_u1, dir_u2);
+  if ((sample_lights && scene.light_entry_count > 1) || bsdf_uses_choice(m))
+    draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 1u, pick_u, choice_u);
+  if (!is_specular(m)) draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 2u, dir_u1, dir_u2);
   if (roulette || (sample_lights && scene.sky_light != kNoHit))
     draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 3u, rr_u, sky_cell_u);
 

@@ -38,6 +38,13 @@ TRACER_HD bool is_specular(const Material& m) {
          ((m.kind == MaterialKind::Conductor || m.kind == MaterialKind::RoughDielectric) && is_smooth(m.roughness));
 }
 
+// Whether sample_bsdf reads u_choice (a lobe, or Fresnel's reflect/refract); it reads (u1, u2)
+// exactly when the material is not specular. The path tracer draws only the numbers read.
+TRACER_HD bool bsdf_uses_choice(const Material& m) {
+  return m.kind == MaterialKind::Dielectric || m.kind == MaterialKind::RoughDielectric ||
+         m.kind == MaterialKind::MetalRough || m.kind == MaterialKind::Phong;
+}
+
 // A microfacet material's value in the frame of n (wo on n's side; `front`: wo is outside).
 TRACER_HD BsdfValue eval_microfacet(const Material& m, Vec3 wo, Vec3 wi, Vec3 n, bool front) {
   const Frame f = frame_around(n);

@@ -69,7 +69,7 @@ TRACER_HD float light_pdf(const SceneView& scene, uint32_t prim, Vec3 from, Vec3
     if (rect.solid_angle > 0.0f) return pmf / rect.solid_angle;
   }
   if (p.kind == ShapeKind::Triangle && scene.settings.light_sampling == LightSampling::SolidAngle) {
-    const float omega = spherical_triangle_solid_angle(from, p.a, p.b, p.c);
+    const float omega = spherical_triangle(from, p.a, p.b, p.c).solid_angle;
     if (omega > 0.0f) return pmf / omega;
   }
   const float cos_l = abs_of(dot(ng, wi));
@@ -147,12 +147,12 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
       break;
     }
     case ShapeKind::Triangle: {
-      if (scene.settings.light_sampling == LightSampling::SolidAngle)
-        solid_angle = spherical_triangle_solid_angle(from, p.a, p.b, p.c);
-      if (solid_angle > 0.0f)
-        sample_spherical_triangle(from, p.a, p.b, p.c, solid_angle, u1, u2, b1, b2);
-      else
-        sample_triangle(u1, u2, b1, b2);
+      if (scene.settings.light_sampling == LightSampling::SolidAngle) {
+        const SphericalTriangle tri = spherical_triangle(from, p.a, p.b, p.c);
+        solid_angle = tri.solid_angle;
+        if (solid_angle > 0.0f) sample_spherical_triangle(tri, from, p.a, p.b, p.c, u1, u2, b1, b2);
+      }
+      if (!(solid_angle > 0.0f)) sample_triangle(u1, u2, b1, b2);
       point = p.a * (1.0f - b1 - b2) + p.b * b1 + p.c * b2;
       ng = normalize(cross(p.b - p.a, p.c - p.a));
       break;

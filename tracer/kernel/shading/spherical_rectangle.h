@@ -5,18 +5,14 @@
 //
 // The rectangle is corner + s edge_u + t edge_v for (s, t) in [0, 1]^2, its edges perpendicular.
 // Where the parametrization loses its precision in float, the light is sampled by area
-// instead, the same choice in light sampling and in the density MIS evaluates (light_pdf):
-// a parallelogram, and solid angles outside [kSphericalRectangleMin, kSphericalRectangleMax]
-// steradians (below: a light far away, seen edge-on or from its own plane, where the solid angle
-// is a small difference of angles near pi / 2; above: a point almost on a large light).
+// instead (kernel/shading/solid_angle.h): a parallelogram, and solid angles outside the range
+// sampled that way.
 #pragma once
-#include "kernel/base/detmath.h"
 #include "kernel/base/vec3.h"
+#include "kernel/shading/solid_angle.h"
 
 namespace tracer {
 
-constexpr float kSphericalRectangleMin = 1e-3f;
-constexpr float kSphericalRectangleMax = 6.2f;
 // |cos| of the angle between the edges above which a quad is a parallelogram, not a rectangle.
 constexpr float kRectangleEdgeCosine = 1e-5f;
 
@@ -27,24 +23,6 @@ struct SphericalRectangle {
   float b0, b1, k;    // the normals' z of the first and third edge planes; 2 pi minus two angles
   float solid_angle;  // in steradians; 0 where the light is sampled by area
 };
-
-// acos in float for the rectangle's angles: Abramowitz and Stegun 4.4.46, sqrt(1 - x) times a
-// degree-7 polynomial on [0, 1], |error| <= 2e-8 (float's own rounding is 6e-8 at pi / 2), and
-// acos(-x) = pi - acos(x). det_acos's double-precision series made the light sample cost as
-// much as the rest of a path vertex.
-TRACER_HD float rectangle_acos(float x) {
-  const float a = abs_of(x);
-  float p = -0.0012624911f;
-  p = p * a + 0.0066700901f;
-  p = p * a - 0.0170881256f;
-  p = p * a + 0.0308918810f;
-  p = p * a - 0.0501743046f;
-  p = p * a + 0.0889789874f;
-  p = p * a - 0.2145988016f;
-  p = p * a + 1.5707963050f;
-  const float angle = det_sqrt(1.0f - a) * p;
-  return x < 0.0f ? kPi - angle : angle;
-}
 
 TRACER_HD SphericalRectangle spherical_rectangle(Vec3 from, Vec3 corner, Vec3 edge_u, Vec3 edge_v) {
   SphericalRectangle r = {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f};
@@ -64,14 +42,14 @@ TRACER_HD SphericalRectangle spherical_rectangle(Vec3 from, Vec3 corner, Vec3 ed
   const float z2 = r.z0 * r.z0;
   const float dx0 = det_sqrt(r.x0 * r.x0 + z2), dx1 = det_sqrt(r.x1 * r.x1 + z2);
   const float dy0 = det_sqrt(r.y0 * r.y0 + z2), dy1 = det_sqrt(r.y1 * r.y1 + z2);
-  const float g0 = rectangle_acos(clamp_of(r.y0 * r.x1 / (dy0 * dx1), -1.0f, 1.0f));
-  const float g1 = rectangle_acos(clamp_of(-r.x1 * r.y1 / (dx1 * dy1), -1.0f, 1.0f));
-  const float g2 = rectangle_acos(clamp_of(r.x0 * r.y1 / (dy1 * dx0), -1.0f, 1.0f));
-  const float g3 = rectangle_acos(clamp_of(-r.x0 * r.y0 / (dx0 * dy0), -1.0f, 1.0f));
+  const float g0 = solid_angle_acos(clamp_of(r.y0 * r.x1 / (dy0 * dx1), -1.0f, 1.0f));
+  const float g1 = solid_angle_acos(clamp_of(-r.x1 * r.y1 / (dx1 * dy1), -1.0f, 1.0f));
+  const float g2 = solid_angle_acos(clamp_of(r.x0 * r.y1 / (dy1 * dx0), -1.0f, 1.0f));
+  const float g3 = solid_angle_acos(clamp_of(-r.x0 * r.y0 / (dx0 * dy0), -1.0f, 1.0f));
   r.b0 = -r.y0 / dy0, r.b1 = r.y1 / dy1;
   r.k = 2.0f * kPi - g2 - g3;
   const float solid_angle = g0 + g1 - r.k;
-  if (solid_angle >= kSphericalRectangleMin && solid_angle <= kSphericalRectangleMax) r.solid_angle = solid_angle;
+  r.solid_angle = sampled_solid_angle(solid_angle);
   return r;
 }
 

@@ -2,61 +2,42 @@
 // Triangles", SIGGRAPH): directions uniform in the solid angle the triangle subtends from a
 // point, the triangle's counterpart of kernel/shading/spherical_rectangle.h.
 //
-// Where float would lose the construction's precision, the light is sampled by area instead,
-// the same choice in light sampling and in the density MIS evaluates (light_pdf): solid angles
-// outside [kSphericalTriangleMin, kSphericalTriangleMax] steradians (below: a light far away,
-// seen edge-on or from its own plane; above: a point almost on a large light).
+// Where float would lose the construction's precision, the light is sampled by area instead
+// (kernel/shading/solid_angle.h): solid angles outside the range sampled that way.
 #pragma once
-#include "kernel/base/detmath.h"
 #include "kernel/base/vec3.h"
+#include "kernel/shading/solid_angle.h"
 
 namespace tracer {
 
-constexpr float kSphericalTriangleMin = 1e-3f;
-constexpr float kSphericalTriangleMax = 6.2f;
+// The triangle as seen from a point: the unit directions to its vertices and its solid angle.
+struct SphericalTriangle {
+  Vec3 a, b, c;
+  float solid_angle;  // in steradians; 0 where the light is sampled by area
+};
 
-// atan2(y, x) for y >= 0 in float: atan on [0, 1] by Abramowitz and Stegun 4.4.49, t times a
-// degree-8 polynomial in t^2, |error| <= 2e-8 (relative 2e-8: it keeps small angles' precision),
-// with atan(t) = pi / 2 - atan(1 / t) above 1 and pi - atan for x < 0. det_atan2's
-// double-precision series made the solid angle cost as much as the sample itself.
-TRACER_HD float solid_angle_atan2(float y, float x) {
-  const float ax = abs_of(x);
-  if (!(y > 0.0f || ax > 0.0f)) return 0.0f;
-  const bool swapped = y > ax;
-  const float t = swapped ? ax / y : y / ax, z = t * t;
-  float p = 0.0028662257f;
-  p = p * z - 0.0161657367f;
-  p = p * z + 0.0429096138f;
-  p = p * z - 0.0752896400f;
-  p = p * z + 0.1065626393f;
-  p = p * z - 0.1420889944f;
-  p = p * z + 0.1999355085f;
-  p = p * z - 0.3333314528f;
-  p = p * z + 1.0f;
-  const float angle = swapped ? 0.5f * kPi - t * p : t * p;
-  return x < 0.0f ? kPi - angle : angle;
-}
-
-// The solid angle triangle (v0, v1, v2) subtends from `from`, or 0 where it is sampled by area.
-// Van Oosterom and Strackee (1983): tan(omega / 2) = |A . (B x C)| / (|A||B||C| + (A.B)|C| +
-// (A.C)|B| + (B.C)|A|) for A = v0 - from ..., with A . (B x C) taken as A . ((v1 - v0) x (v2 - v0)),
-// the distance to the plane times twice the area, which keeps its precision for a small triangle.
-TRACER_HD float spherical_triangle_solid_angle(Vec3 from, Vec3 v0, Vec3 v1, Vec3 v2) {
+// Triangle (v0, v1, v2) from `from`. Van Oosterom and Strackee (1983): tan(omega / 2) =
+// |A . (B x C)| / (|A||B||C| + (A.B)|C| + (A.C)|B| + (B.C)|A|) for A = v0 - from ..., with
+// A . (B x C) taken as A . ((v1 - v0) x (v2 - v0)), the distance to the plane times twice the
+// area, which keeps its precision for a small triangle.
+TRACER_HD SphericalTriangle spherical_triangle(Vec3 from, Vec3 v0, Vec3 v1, Vec3 v2) {
   const Vec3 a = v0 - from, b = v1 - from, c = v2 - from;
   const float la = length(a), lb = length(b), lc = length(c);
-  if (!(la > 0.0f && lb > 0.0f && lc > 0.0f)) return 0.0f;
+  if (!(la > 0.0f && lb > 0.0f && lc > 0.0f)) return {a, b, c, 0.0f};
   const float triple = abs_of(dot(a, cross(v1 - v0, v2 - v0)));
   const float denominator = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
   const float omega = 2.0f * solid_angle_atan2(triple, denominator);
-  return omega >= kSphericalTriangleMin && omega <= kSphericalTriangleMax ? omega : 0.0f;
+  return {a / la, b / lb, c / lc, sampled_solid_angle(omega)};
 }
 
 // The direction's barycentrics (b1, b2) on triangle (v0, v1, v2) for (u1, u2) in [0, 1)^2,
-// uniformly in the solid angle omega > 0 it subtends from `from` (Arvo's algorithm: u1 picks
-// the sub-triangle (a, b, c') of area u1 omega, u2 the point on the arc from b to c').
-TRACER_HD void sample_spherical_triangle(Vec3 from, Vec3 v0, Vec3 v1, Vec3 v2, float omega, float u1, float u2,
-                                         float& b1, float& b2) {
-  const Vec3 a = normalize(v0 - from), b = normalize(v1 - from), c = normalize(v2 - from);
+// uniformly in the solid angle it subtends from `from` (`st`, with solid_angle > 0; Arvo's
+// algorithm: u1 picks the sub-triangle (a, b, c') of area u1 omega, u2 the point on the arc
+// from b to c').
+TRACER_HD void sample_spherical_triangle(const SphericalTriangle& st, Vec3 from, Vec3 v0, Vec3 v1, Vec3 v2, float u1,
+                                         float u2, float& b1, float& b2) {
+  const Vec3 a = st.a, b = st.b, c = st.c;
+  const float omega = st.solid_angle;
   // The angle alpha at vertex a between the arcs to b and to c, from their tangents at a,
   // t_b = b - (a.b) a = db - (a.db) a with db = b - a (no cancellation for a small triangle):
   // |t_b x t_c| = |a . (b x c)|.
