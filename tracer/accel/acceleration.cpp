@@ -1,5 +1,7 @@
 #include "accel/acceleration.h"
 
+#include <algorithm>
+
 #include "accel/bvh_builder.h"
 #include "accel/grid_builder.h"
 #include "accel/huge_pages.h"
@@ -16,17 +18,36 @@ float structure_pad(Vec3 lo, Vec3 hi) {
 
 Acceleration build_acceleration(AccelKind kind, std::span<const Primitive> primitives, uint32_t grid_resolution) {
   Acceleration a;
-  std::vector<BuildItem> items;
-  reserve_on_huge_pages(items, primitives.size());
-  for (uint32_t id = 0; id < primitives.size(); ++id) {
-    const Primitive& p = primitives[id];
-    if (p.kind == ShapeKind::Plane) {
-      a.unbounded.push_back(id);
-      continue;
-    }
-    const Bounds b = primitive_bounds(p);
-    items.push_back({b, (b.lo + b.hi) * 0.5f, id});
+  // An item per bounded primitive, in primitive order (planes have no box): fixed chunks of
+  // primitives count theirs, then each fills its items from its offset, so the items are the
+  // same for any thread count.
+  constexpr uint32_t kChunk = 1u << 16;
+  const uint32_t n = static_cast<uint32_t>(primitives.size()), chunks = (n + kChunk - 1) / kChunk;
+  std::vector<uint32_t> offset(size_t{chunks} + 1, 0);
+#pragma omp parallel for schedule(static) if (chunks > 1)
+  for (int64_t c = 0; c < static_cast<int64_t>(chunks); ++c) {
+    const uint32_t begin = static_cast<uint32_t>(c) * kChunk, end = std::min(n, begin + kChunk);
+    uint32_t bounded = 0;
+    for (uint32_t id = begin; id < end; ++id) bounded += primitives[id].kind != ShapeKind::Plane;
+    offset[static_cast<size_t>(c) + 1] = bounded;
   }
+  for (uint32_t c = 0; c < chunks; ++c) offset[c + 1] += offset[c];
+  std::vector<BuildItem> items;
+  reserve_on_huge_pages(items, offset[chunks]);
+  items.resize(offset[chunks]);
+#pragma omp parallel for schedule(static) if (chunks > 1)
+  for (int64_t c = 0; c < static_cast<int64_t>(chunks); ++c) {
+    const uint32_t begin = static_cast<uint32_t>(c) * kChunk, end = std::min(n, begin + kChunk);
+    uint32_t k = offset[static_cast<size_t>(c)];
+    for (uint32_t id = begin; id < end; ++id) {
+      if (primitives[id].kind == ShapeKind::Plane) continue;
+      const Bounds b = primitive_bounds(primitives[id]);
+      items[k++] = {b, (b.lo + b.hi) * 0.5f, id};
+    }
+  }
+  if (offset[chunks] < n)
+    for (uint32_t id = 0; id < n; ++id)
+      if (primitives[id].kind == ShapeKind::Plane) a.unbounded.push_back(id);
   switch (kind) {
     case AccelKind::Bvh: a.bvh_nodes = build_sah_bvh(items, a.bounded); break;
     case AccelKind::Lbvh: a.bvh_nodes = build_lbvh(items); break;

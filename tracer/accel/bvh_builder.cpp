@@ -17,6 +17,11 @@ constexpr int kBins = 16;
 constexpr uint32_t kMaxLeafSize = 4;
 constexpr int kMaxBuildDepth = 60;         // traversal stacks hold 64 entries
 constexpr uint32_t kTaskItems = 1u << 15;  // ranges at least this large build their halves as OpenMP tasks
+constexpr uint32_t kTaskNodes = 1u << 14;  // subtrees at least this large are numbered as OpenMP tasks
+// Work over many items is split into chunks of kChunkItems fixed by the items alone, each
+// chunk's result combined in chunk order: the same result for any thread count.
+constexpr uint32_t kChunkItems = 1u << 16;
+constexpr uint32_t kParallelBinItems = 1u << 18;  // ranges at least this large are binned in chunks
 
 // One item in 32 bytes, as Embree's PrimRef: its box in SSE lanes x, y, z; lane 3 of `lo`
 // holds the item's index in `items` (bits), lane 3 of `hi` is 0, so lo + hi masked to
@@ -69,6 +74,65 @@ struct Split {
   float cost = kInfinity;
 };
 
+// Per axis and bin: the box of the refs whose centroids fall in it, and their count.
+struct Bins {
+  int count;  // bins per axis in use
+  __m128 lo[3][kBins], hi[3][kBins];
+  uint32_t refs[3][kBins];
+
+  explicit Bins(int bins) : count(bins) {
+    for (int axis = 0; axis < 3; ++axis)
+      for (int b = 0; b < count; ++b) lo[axis][b] = Box{}.lo, hi[axis][b] = Box{}.hi, refs[axis][b] = 0;
+  }
+
+  void add(const Ref& r, const Binner& binner) {
+    alignas(16) int32_t bin[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(bin), binner.bins(twice_centroid(r)));
+    for (int axis = 0; axis < 3; ++axis) {
+      const int b = bin[axis];
+      lo[axis][b] = _mm_min_ps(lo[axis][b], r.lo);
+      hi[axis][b] = _mm_max_ps(hi[axis][b], r.hi);
+      ++refs[axis][b];
+    }
+  }
+
+  void add(const Bins& other) {
+    for (int axis = 0; axis < 3; ++axis)
+      for (int b = 0; b < count; ++b) {
+        lo[axis][b] = _mm_min_ps(lo[axis][b], other.lo[axis][b]);
+        hi[axis][b] = _mm_max_ps(hi[axis][b], other.hi[axis][b]);
+        refs[axis][b] += other.refs[axis][b];
+      }
+  }
+
+  // The split at a bin boundary with the least SAH cost, left and right swept once each.
+  Split cheapest_split() const {
+    Split best;
+    for (int axis = 0; axis < 3; ++axis) {
+      float right_area[kBins];
+      uint32_t right_count[kBins];
+      Box acc;
+      uint32_t n = 0;
+      for (int b = count - 1; b > 0; --b) {
+        acc.grow(lo[axis][b], hi[axis][b]);
+        n += refs[axis][b];
+        right_area[b] = acc.half_area();
+        right_count[b] = n;
+      }
+      acc = Box{};
+      n = 0;
+      for (int split = 1; split < count; ++split) {
+        acc.grow(lo[axis][split - 1], hi[axis][split - 1]);
+        n += refs[axis][split - 1];
+        if (n == 0 || right_count[split] == 0) continue;
+        const float cost = acc.half_area() * n + right_area[split] * right_count[split];
+        if (cost < best.cost) best = {axis, split, cost};
+      }
+    }
+    return best;
+  }
+};
+
 // A range of refs with its box and its centroids' box (both known before it is visited).
 struct Range {
   uint32_t begin, end;
@@ -77,54 +141,72 @@ struct Range {
 
 // Nodes are first written to slots fixed by item ranges, so that threads never share a
 // counter: the subtree over m items has at most 2m - 1 nodes, its root in the slot its parent
-// chose and its other nodes in the 2m - 2 slots from `below`, its children's pair first. One
-// pass then numbers the used slots in depth-first order, both children of a node before the
-// first's subtree, so the nodes and their order do not depend on which thread built what.
+// chose and its other nodes in the 2m - 2 slots from `below`, its children's pair first. Then
+// the used slots are numbered in depth-first order, both children of a node before the first's
+// subtree, so the nodes and their order do not depend on which thread built what.
 class BvhBuilder {
  public:
-  BvhBuilder(std::vector<Ref>& refs, BvhNode* slots) : refs_(refs), slots_(slots) {}
+  BvhBuilder(std::vector<Ref>& refs, BvhNode* slots, uint32_t* subtree_nodes)
+      : refs_(refs), slots_(slots), subtree_nodes_(subtree_nodes) {}
 
-  void build(uint32_t slot, const Range& range, uint32_t below, int depth) {
+  // Builds the subtree over `range` into `slot` and the slots from `below`; returns its node count.
+  uint32_t build(uint32_t slot, const Range& range, uint32_t below, int depth) {
     Range left, right;
     BvhNode& node = slots_[slot];
-    if (!split_or_leaf(node, range, depth, left, right)) return;
-    node.first = below;
-    node.count = 0;
-    const uint32_t left_below = below + 2, right_below = left_below + 2 * (left.end - left.begin) - 2;
-    if (range.end - range.begin >= kTaskItems) {
-#pragma omp task firstprivate(below, left, left_below, depth)
-      build(below, left, left_below, depth + 1);
-      build(below + 1, right, right_below, depth + 1);
+    uint32_t nodes = 1;
+    if (split_or_leaf(node, range, depth, left, right)) {
+      node.first = below;
+      node.count = 0;
+      const uint32_t left_below = below + 2, right_below = left_below + 2 * (left.end - left.begin) - 2;
+      uint32_t left_nodes = 0, right_nodes = 0;
+      if (range.end - range.begin >= kTaskItems) {
+#pragma omp task shared(left_nodes) firstprivate(below, left, left_below, depth)
+        left_nodes = build(below, left, left_below, depth + 1);
+        right_nodes = build(below + 1, right, right_below, depth + 1);
 #pragma omp taskwait
-    } else {
-      build(below, left, left_below, depth + 1);
-      build(below + 1, right, right_below, depth + 1);
+      } else {
+        left_nodes = build(below, left, left_below, depth + 1);
+        right_nodes = build(below + 1, right, right_below, depth + 1);
+      }
+      nodes += left_nodes + right_nodes;
     }
+    subtree_nodes_[slot] = nodes;
+    return nodes;
   }
 
-  // The used slots, numbered depth-first.
+  // The used slots, numbered depth-first. A node's position fixes where its subtree goes (its
+  // children at `next` and `next + 1`, the first child's descendants from next + 2, the
+  // second's after them), so large subtrees are copied as OpenMP tasks, each into its own
+  // positions.
   std::vector<BvhNode> numbered() const {
+    const uint32_t total = subtree_nodes_[0];
     std::vector<BvhNode> nodes;
-    reserve_on_huge_pages(nodes, count(0));
-    nodes.push_back(slots_[0]);
-    number(nodes, 0);
+    reserve_on_huge_pages(nodes, total);
+    nodes.resize(total);
+    nodes[0] = slots_[0];
+#pragma omp parallel if (total >= kTaskNodes)
+#pragma omp single
+    number(nodes.data(), 0, 1);
     return nodes;
   }
 
  private:
-  uint32_t count(uint32_t slot) const {
-    const BvhNode& n = slots_[slot];
-    return n.count != 0 ? 1 : 1 + count(n.first) + count(n.first + 1);
-  }
-
-  void number(std::vector<BvhNode>& nodes, uint32_t index) const {
+  void number(BvhNode* nodes, uint32_t index, uint32_t next) const {
     if (nodes[index].count != 0) return;
-    const uint32_t slot = nodes[index].first, first = static_cast<uint32_t>(nodes.size());
-    nodes.push_back(slots_[slot]);
-    nodes.push_back(slots_[slot + 1]);
-    nodes[index].first = first;
-    number(nodes, first);
-    number(nodes, first + 1);
+    const uint32_t slot = nodes[index].first, left_nodes = subtree_nodes_[slot];
+    nodes[next] = slots_[slot];
+    nodes[next + 1] = slots_[slot + 1];
+    nodes[index].first = next;
+    const uint32_t right_next = next + 1 + left_nodes;  // after the first child's left_nodes - 1 descendants
+    if (left_nodes >= kTaskNodes) {
+#pragma omp task firstprivate(nodes, next)
+      number(nodes, next, next + 2);
+      number(nodes, next + 1, right_next);
+#pragma omp taskwait
+    } else {
+      number(nodes, next, next + 2);
+      number(nodes, next + 1, right_next);
+    }
   }
 
   // Sets the node's box; makes it a leaf (returns false) or partitions its refs in two.
@@ -151,47 +233,25 @@ class BvhBuilder {
     return true;
   }
 
-  // The SAH cost of splitting at every bin boundary on every axis, binned in one pass.
+  // The SAH cost of splitting at every bin boundary on every axis, binned in one pass; a large
+  // range is binned over fixed chunks as OpenMP tasks, merged in chunk order (a box's min and
+  // max and a count do not depend on the order they are taken in).
   Split best_split(const Range& range, const Binner& binner) const {
-    const int bins = binner.count;
-    __m128 bin_lo[3][kBins], bin_hi[3][kBins];  // only the first `bins` are used
-    uint32_t bin_count[3][kBins];
-    for (int axis = 0; axis < 3; ++axis)
-      for (int b = 0; b < bins; ++b) bin_lo[axis][b] = Box{}.lo, bin_hi[axis][b] = Box{}.hi, bin_count[axis][b] = 0;
-    alignas(16) int32_t bin[4];
-    for (uint32_t i = range.begin; i < range.end; ++i) {
-      const Ref& r = refs_[i];
-      _mm_store_si128(reinterpret_cast<__m128i*>(bin), binner.bins(twice_centroid(r)));
-      for (int axis = 0; axis < 3; ++axis) {
-        const int b = bin[axis];
-        bin_lo[axis][b] = _mm_min_ps(bin_lo[axis][b], r.lo);
-        bin_hi[axis][b] = _mm_max_ps(bin_hi[axis][b], r.hi);
-        ++bin_count[axis][b];
+    Bins bins(binner.count);
+    const uint32_t count = range.end - range.begin;
+    if (count >= kParallelBinItems) {
+      const uint32_t chunks = (count + kChunkItems - 1) / kChunkItems;
+      std::vector<Bins> chunk_bins(chunks, bins);
+#pragma omp taskloop grainsize(1) shared(chunk_bins)
+      for (uint32_t c = 0; c < chunks; ++c) {
+        const uint32_t begin = range.begin + c * kChunkItems;
+        for (uint32_t i = begin; i < std::min(range.end, begin + kChunkItems); ++i) chunk_bins[c].add(refs_[i], binner);
       }
+      for (const Bins& b : chunk_bins) bins.add(b);
+    } else {
+      for (uint32_t i = range.begin; i < range.end; ++i) bins.add(refs_[i], binner);
     }
-    Split best;
-    for (int axis = 0; axis < 3; ++axis) {
-      float right_area[kBins];
-      uint32_t right_count[kBins];
-      Box acc;
-      uint32_t n = 0;
-      for (int b = bins - 1; b > 0; --b) {
-        acc.grow(bin_lo[axis][b], bin_hi[axis][b]);
-        n += bin_count[axis][b];
-        right_area[b] = acc.half_area();
-        right_count[b] = n;
-      }
-      acc = Box{};
-      n = 0;
-      for (int split = 1; split < bins; ++split) {
-        acc.grow(bin_lo[axis][split - 1], bin_hi[axis][split - 1]);
-        n += bin_count[axis][split - 1];
-        if (n == 0 || right_count[split] == 0) continue;
-        const float cost = acc.half_area() * n + right_area[split] * right_count[split];
-        if (cost < best.cost) best = {axis, split, cost};
-      }
-    }
-    return best;
+    return bins.cheapest_split();
   }
 
   // Refs in bins below split.bin first, the others after; each side's boxes grown on the way.
@@ -231,7 +291,23 @@ class BvhBuilder {
 
   std::vector<Ref>& refs_;
   BvhNode* slots_;
+  uint32_t* subtree_nodes_;  // per used slot: the nodes of its subtree, itself included
 };
+
+template <class T>
+std::unique_ptr<T, decltype(&std::free)> allocate_on_huge_pages(size_t count) {
+  std::unique_ptr<T, decltype(&std::free)> p(static_cast<T*>(std::malloc(count * sizeof(T))), &std::free);
+  if (!p) throw std::bad_alloc();
+  advise_huge_pages(p.get(), count * sizeof(T));
+  return p;
+}
+
+uint32_t ref_index(const Ref& r) {
+  uint32_t index;
+  const float lane = _mm_cvtss_f32(_mm_shuffle_ps(r.lo, r.lo, _MM_SHUFFLE(3, 3, 3, 3)));
+  std::memcpy(&index, &lane, sizeof index);
+  return index;
+}
 
 }  // namespace
 
@@ -240,34 +316,40 @@ std::vector<BvhNode> build_sah_bvh(std::span<const BuildItem> items, std::vector
   const uint32_t n = static_cast<uint32_t>(items.size());
   std::vector<Ref> refs;
   reserve_on_huge_pages(refs, n);
-  Range root{0, n, {}, {}};
-  for (uint32_t i = 0; i < n; ++i) {
-    const Bounds& b = items[i].bounds;
-    float index;
-    std::memcpy(&index, &i, sizeof index);
-    const Ref r = {_mm_setr_ps(b.lo.x, b.lo.y, b.lo.z, index), _mm_setr_ps(b.hi.x, b.hi.y, b.hi.z, 0.0f)};
-    refs.push_back(r);
-    root.bounds.grow(r.lo, r.hi);
-    root.centroids.grow(twice_centroid(r));
+  refs.resize(n);
+  const uint32_t chunks = (n + kChunkItems - 1) / kChunkItems;
+  std::vector<Range> chunk_ranges(chunks);
+#pragma omp parallel for schedule(static) if (n >= kTaskItems)
+  for (int64_t c = 0; c < static_cast<int64_t>(chunks); ++c) {
+    Range& chunk = chunk_ranges[static_cast<size_t>(c)];
+    chunk.begin = static_cast<uint32_t>(c) * kChunkItems;
+    chunk.end = std::min<uint32_t>(n, chunk.begin + kChunkItems);
+    for (uint32_t i = chunk.begin; i < chunk.end; ++i) {
+      const Bounds& b = items[i].bounds;
+      float index;
+      std::memcpy(&index, &i, sizeof index);
+      const Ref r = {_mm_setr_ps(b.lo.x, b.lo.y, b.lo.z, index), _mm_setr_ps(b.hi.x, b.hi.y, b.hi.z, 0.0f)};
+      refs[i] = r;
+      chunk.bounds.grow(r.lo, r.hi);
+      chunk.centroids.grow(twice_centroid(r));
+    }
   }
+  Range root{0, n, {}, {}};
+  for (const Range& chunk : chunk_ranges) root.bounds.grow(chunk.bounds), root.centroids.grow(chunk.centroids);
   const size_t slot_count = 2 * size_t{n} - 1;  // BvhNode is an aggregate: malloc'd storage holds nodes
-  std::unique_ptr<BvhNode, decltype(&std::free)> slots(static_cast<BvhNode*>(std::malloc(slot_count * sizeof(BvhNode))),
-                                                       &std::free);
-  if (!slots) throw std::bad_alloc();
-  advise_huge_pages(slots.get(), slot_count * sizeof(BvhNode));
-  BvhBuilder builder(refs, slots.get());
+  const auto slots = allocate_on_huge_pages<BvhNode>(slot_count);
+  const auto subtree_nodes = allocate_on_huge_pages<uint32_t>(slot_count);
+  BvhBuilder builder(refs, slots.get(), subtree_nodes.get());
 #pragma omp parallel if (n >= kTaskItems)
 #pragma omp single
   builder.build(0, root, 1, 0);
   std::vector<BvhNode> nodes = builder.numbered();
   leaf_ids.clear();
   reserve_on_huge_pages(leaf_ids, n);
-  for (const Ref& r : refs) {
-    uint32_t index;
-    const float lane = _mm_cvtss_f32(_mm_shuffle_ps(r.lo, r.lo, _MM_SHUFFLE(3, 3, 3, 3)));
-    std::memcpy(&index, &lane, sizeof index);
-    leaf_ids.push_back(items[index].id);
-  }
+  leaf_ids.resize(n);
+#pragma omp parallel for schedule(static) if (n >= kTaskItems)
+  for (int64_t i = 0; i < static_cast<int64_t>(n); ++i)
+    leaf_ids[static_cast<size_t>(i)] = items[ref_index(refs[static_cast<size_t>(i)])].id;
   return nodes;
 }
 
