@@ -10,7 +10,8 @@
 
 namespace tracer {
 
-// The triangle as seen from a point: the unit directions to its vertices and its solid angle.
+// The triangle as seen from a point: its solid angle and, where that is > 0, the unit directions
+// to its vertices.
 struct SphericalTriangle {
   Vec3 a, b, c;
   float solid_angle;  // in steradians; 0 where the light is sampled by area
