@@ -58,6 +58,17 @@ TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
   EXPECT_EQ(test::run_command(std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu", &output), 2);
   EXPECT_NE(output.find("b.bundle: the bundle's view: grid: 0 cells along an axis (1 to 1024)"), std::string::npos)
       << output;
+  // The planar mirrors of mirror images index the primitives: an id past them is refused.
+  SceneBundle mirrors = make_scene_bundle(scene, scene.view(), {0, 1}, scene_path);
+  mirrors.scalars.settings.integrator = IntegratorKind::Path;
+  mirrors.scalars.settings.mirror_images = Switch::On;
+  const std::string count = std::to_string(mirrors.arrays.primitives.size());
+  mirrors.arrays.mirror_prims = {static_cast<uint32_t>(mirrors.arrays.primitives.size())};
+  write_bundle(bundle, encode_scene_bundle(mirrors));
+  EXPECT_EQ(test::run_command(std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu", &output), 2);
+  EXPECT_NE(output.find("b.bundle: the bundle's view: mirror_prims: primitive " + count + " of " + count),
+            std::string::npos)
+      << output;
   // An --expect that no hash can equal is refused before the render (it rendered, then exited 1).
   write_bundle(bundle, encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, 1}, scene_path)));
   EXPECT_EQ(

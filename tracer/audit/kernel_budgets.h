@@ -19,13 +19,17 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // kernel                            registers stack spill shared block
     // the megakernel, one per integrator (cuda/gpu_film.cu), 16x16 blocks
     // path: two more for the Sobol scramble seeds' 64-bit SplitMix64 words, two fewer since the
-    // GPU reverses bits with brev and draws only the pairs a vertex reads (12.5 % occupancy throughout)
-    {"path_render_kernel",               156,  784, 0, 0, 256},
-    {"whitted_render_kernel",            203, 3424, 0, 0, 256},
+    // GPU reverses bits with brev and draws only the pairs a vertex reads; 34 more for mirror
+    // images (kernel/shading/mirror_images.h: the image's light sample and its query live across
+    // the light's shadow ray), 12.5 % occupancy throughout. Every kernel holding a SceneView copy
+    // has 16 bytes more stack for its mirror_prims and mirror_count.
+    {"path_render_kernel",               190,  800, 0, 0, 256},
+    {"whitted_render_kernel",            203, 3440, 0, 0, 256},
     {"view_render_kernel",                86,  288, 0, 0, 256},
     // adaptive sampling (cuda/gpu_adaptive.cu)
-    {"path_adaptive_pass_kernel",        146,  784, 0, 0, 128},
-    {"whitted_adaptive_pass_kernel",     193, 3424, 0, 0, 128},
+    // path: mirror images, as the megakernel (18.75 % occupancy -> 12.5 %)
+    {"path_adaptive_pass_kernel",        180,  800, 0, 0, 128},
+    {"whitted_adaptive_pass_kernel",     193, 3440, 0, 0, 128},
     {"view_adaptive_pass_kernel",         78,  288, 0, 0, 128},
     {"mark_unconverged_kernel",           40,    0, 0, 0, 128},
     {"keep_kernel",                       16,    0, 0, 0, 128},
@@ -35,27 +39,29 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     {"closest_hit_stage_kernel",          72,  288, 0, 0, 128},
     // one register more for render.light_sampling's solid-angle branch, one for Russian
     // roulette's first-vertex throughput and five for spherical triangles (Arvo's sample), in
-    // the same occupancy step (25 %)
-    {"path_shade_stage_kernel",          108,    0, 0, 0, 128},
+    // the same occupancy step (25 %); 43 more and a stack frame for mirror images (25 % -> 18.75 %)
+    {"path_shade_stage_kernel",          151,  728, 0, 0, 128},
     {"whitted_shade_stage_kernel",        89,    0, 0, 0, 128},
     {"view_shade_stage_kernel",           45,    0, 0, 0, 128},
     {"shadow_any_hit_stage_kernel",       70,  288, 0, 0, 128},
-    // the trace variants' stages (kernel/accel/trace_variants.h), held to 64 registers
+    // the trace variants' stages (kernel/accel/trace_variants.h), held to 64 registers; each shadow
+    // stage traces a mirror image's two ways too (trace_shadows: one traversal call site), two to
+    // four registers more for the sphere variants, 80 bytes of spills for the 8-wide tree's
     {"closest_hit_bvh_triangles_kernel",  64,  272, 0, 0, 128},
     {"shadow_any_hit_bvh_triangles_kernel", 64, 272, 0, 0, 128},
     // the 8-wide tree: its 64-entry stack, the binary walk's for a deeper tree; 16 bytes of spill stores
     {"closest_hit_wide_bvh_triangles_kernel", 64, 1104, 76, 0, 128},
-    {"shadow_any_hit_wide_bvh_triangles_kernel", 64, 1120, 0, 0, 128},
+    {"shadow_any_hit_wide_bvh_triangles_kernel", 64, 1136, 80, 0, 128},
     {"closest_hit_bvh_spheres_kernel",    50,  272, 0, 0, 128},
-    {"shadow_any_hit_bvh_spheres_kernel", 56,  272, 0, 0, 128},
+    {"shadow_any_hit_bvh_spheres_kernel", 60,  272, 0, 0, 128},
     {"closest_hit_kdtree_triangles_kernel", 64,  0, 0, 0, 128},
-    {"shadow_any_hit_kdtree_triangles_kernel", 62, 0, 0, 0, 128},
+    {"shadow_any_hit_kdtree_triangles_kernel", 64, 0, 0, 0, 128},
     {"closest_hit_kdtree_spheres_kernel", 47,    0, 0, 0, 128},
-    {"shadow_any_hit_kdtree_spheres_kernel", 56,  0, 0, 0, 128},
+    {"shadow_any_hit_kdtree_spheres_kernel", 59,  0, 0, 0, 128},
     {"closest_hit_grid_triangles_kernel", 64,   32, 4, 0, 128},
-    {"shadow_any_hit_grid_triangles_kernel", 64, 24, 0, 0, 128},
+    {"shadow_any_hit_grid_triangles_kernel", 62, 24, 0, 0, 128},
     {"closest_hit_grid_spheres_kernel",   53,   24, 0, 0, 128},
-    {"shadow_any_hit_grid_spheres_kernel", 56,  24, 0, 0, 128},
+    {"shadow_any_hit_grid_spheres_kernel", 59,  24, 0, 0, 128},
     {"split_kernel",                      17,    0, 0, 0, 128},
     {"end_batch_kernel",                  28,    0, 0, 0, 128},
     // the LBVH build (cuda/lbvh_gpu.cu)
@@ -70,7 +76,8 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     {"bsdf_kernel",                       56,    0, 0, 0, 256},
     {"adaptive_kernel",                   46,    0, 0, 0, 256},
     {"trace_kernel",                      88,  272, 0, 0, 256},
-    {"sample_kernel",                    193, 2912, 0, 0, 256},
+    // the path tracer's sample, with mirror images
+    {"sample_kernel",                    211, 2912, 0, 0, 256},
 };
 
 inline const KernelBudget* find_kernel_budget(const std::string& name) {

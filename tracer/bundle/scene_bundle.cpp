@@ -28,6 +28,13 @@ std::string view_violation(const SceneBundle& b) {
       return "grid: " + std::to_string(cells) + " cells, but " + std::to_string(b.arrays.grid_cell_start.size()) +
              " cell starts";
   }
+  if (!b.arrays.mirror_prims.empty() &&
+      (v.settings.integrator != IntegratorKind::Path || v.settings.mirror_images != Switch::On))
+    return "mirror_prims: " + std::to_string(b.arrays.mirror_prims.size()) +
+           " planar mirrors, but the render does not sample mirror images";
+  for (const uint32_t id : b.arrays.mirror_prims)
+    if (id >= b.arrays.primitives.size())
+      return "mirror_prims: primitive " + std::to_string(id) + " of " + std::to_string(b.arrays.primitives.size());
   const uint64_t side = v.sky_cells_per_side;
   if (!b.arrays.sky_cells.empty() && (side < 1 || side > 4096 || 6 * side * side != b.arrays.sky_cells.size()))
     return "sky: " + std::to_string(side) + " cells per side, but " + std::to_string(b.arrays.sky_cells.size()) +

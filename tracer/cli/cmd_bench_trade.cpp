@@ -1,8 +1,10 @@
 // `tracer bench trade SCENE`: for each knob of the path integrator (NEE, sampler, Fresnel
-// model, Russian roulette depth, max_depth, sky sampling under a cube-map sky, triangle test), the time and the error
+// model, Russian roulette depth, max_depth, sky sampling under a cube-map sky, mirror images where the scene has a flat
+// mirror, triangle test), the time and the error
 // of a render at a fixed sample budget, and the error of a render given the baseline's time (its spp scaled by the
 // measured speed). Error is against one reference made with the scene's own settings, so a knob that changes the
 // expected image (max_depth, Fresnel) shows its bias too.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +13,7 @@
 #include "cli/command_registry.h"
 #include "cli/commands.h"
 #include "io/input_error.h"
+#include "kernel/shading/mirror_images.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
@@ -36,7 +39,7 @@ uint32_t nearest_square(double spp) {
   return n * n;
 }
 
-std::vector<Knob> knobs(bool cubemap_sky) {
+std::vector<Knob> knobs(bool cubemap_sky, bool flat_mirrors) {
   std::vector<Knob> k;
   const auto with = [](auto set) {
     RenderOverrides o;
@@ -54,6 +57,10 @@ std::vector<Knob> knobs(bool cubemap_sky) {
                with([](RenderOverrides& o) { o.light_sampling = LightSampling::Area; }), false});
   k.push_back({"light_sampling", "solid-angle",
                with([](RenderOverrides& o) { o.light_sampling = LightSampling::SolidAngle; }), false});
+  if (flat_mirrors) {
+    k.push_back({"mirror_images", "on", with([](RenderOverrides& o) { o.mirror_images = Switch::On; }), false});
+    k.push_back({"mirror_images", "off", with([](RenderOverrides& o) { o.mirror_images = Switch::Off; }), false});
+  }
   k.push_back({"sampler", "stochastic", with([](RenderOverrides& o) { o.sampler = SamplerKind::Stochastic; }), false});
   k.push_back({"sampler", "stratified", with([](RenderOverrides& o) { o.sampler = SamplerKind::Stratified; }), true});
   k.push_back({"sampler", "sobol", with([](RenderOverrides& o) { o.sampler = SamplerKind::Sobol; }), false});
@@ -99,7 +106,10 @@ static int run_bench_trade(const BenchTradeCommand& cmd) {
   std::printf("%-12s %-15s | %6s %9s %11s %11s | %14s %9s %11s\n", "knob", "setting", "spp", "seconds", "RMSE",
               "relMSE", "equal-time spp", "seconds", "RMSE");
   double baseline_seconds = 0;
-  for (const Knob& knob : knobs(probe.background.kind == BackgroundKind::Cubemap)) {
+  const SceneView probe_view = probe.view();
+  const bool flat_mirrors = std::any_of(probe.primitives.begin(), probe.primitives.end(),
+                                        [&](const Primitive& p) { return is_planar_mirror(probe_view, p); });
+  for (const Knob& knob : knobs(probe.background.kind == BackgroundKind::Cubemap, flat_mirrors)) {
     RenderOverrides ov = combine(base, knob.overrides);
     // the stratified sampler, the knob's or the scene's own, needs n x n samples
     const bool square =

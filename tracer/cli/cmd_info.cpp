@@ -27,6 +27,9 @@ static int run_info(const std::string& scene_path) {
   if (scene.report.degenerate_triangles > 0)
     std::printf("left out   %u mesh triangles of zero area\n", scene.report.degenerate_triangles);
   std::printf("materials  %zu, point lights %zu\n", scene.materials.size(), scene.lights.size());
+  if (!scene.mirror_prims.empty())
+    std::printf("mirrors    %zu flat mirrors, the lights seen in them sampled as mirror images (render.mirror_images)\n",
+                scene.mirror_prims.size());
   std::printf("features  ");
   for (const std::string& f : feature_names(scene.features)) std::printf(" %s", f.c_str());
   for (const std::string& line : scene.report.gltf) std::printf("\ngltf       %s", line.c_str());

@@ -32,6 +32,7 @@ inline std::optional<WorkLimitViolation> settings_violation(const RenderSettings
                         beyond("sampler", rs.sampler, SamplerKind::Sobol), beyond("accel", rs.accel, AccelKind::Lbvh),
                         beyond("nee", rs.nee, Switch::On), beyond("sky_sampling", rs.sky_sampling, Switch::On),
                         beyond("light_sampling", rs.light_sampling, LightSampling::SolidAngle),
+                        beyond("mirror_images", rs.mirror_images, Switch::On),
                         beyond("triangle_test", rs.triangle_test, TriangleTest::MollerTrumbore),
                         beyond("effects", rs.effects, kEffectAll), beyond("schedule", rs.schedule, Schedule::Stream),
                         beyond("grid_resolution", rs.grid_resolution, 1024u)})

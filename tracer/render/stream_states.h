@@ -36,11 +36,14 @@ StreamStates allocate_stream_states(const RenderSettings& rs, size_t width, Allo
   st.depth = array(static_cast<uint32_t*>(nullptr), path);
   st.specular = array(static_cast<uint8_t*>(nullptr), path);
   st.first_throughput = array(static_cast<float*>(nullptr), path);
+  st.mirror = array(static_cast<uint32_t*>(nullptr), path);
   st.shadow_origin = array(static_cast<Vec3*>(nullptr), path || whitted);
   st.shadow_dir = array(static_cast<Vec3*>(nullptr), path || whitted);
   st.shadow_tmax = array(static_cast<float*>(nullptr), path || whitted);
   st.shadow_emitter = array(static_cast<uint32_t*>(nullptr), path || whitted);
   st.shadow_contribution = array(static_cast<Vec3*>(nullptr), path);
+  st.shadow_kinds = array(static_cast<uint8_t*>(nullptr), path && rs.mirror_images == Switch::On);
+  st.image = array(static_cast<MirrorQuery*>(nullptr), path && rs.mirror_images == Switch::On);
   st.stack_size = whitted ? whitted_stack_size(rs.max_depth) : 0u;
   st.width = static_cast<uint32_t>(width);
   st.vertex = array(static_cast<WhittedVertex*>(nullptr), whitted);

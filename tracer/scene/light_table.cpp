@@ -6,6 +6,7 @@
 #include "accel/bounds.h"
 #include "kernel/shading/bsdf.h"
 #include "kernel/shading/light_sampling.h"
+#include "kernel/shading/mirror_images.h"
 
 namespace tracer {
 namespace {
@@ -110,6 +111,18 @@ void build_light_table(Scene& scene) {
     scene.light_table[i].pmf = static_cast<float>(pmf);
     scene.light_table[i].cdf = i + 1 == power.size() ? 1.0f : static_cast<float>(running);
   }
+  // The planar mirrors whose light images the path tracer samples (render.mirror_images). A
+  // render with none to sample runs with the setting off: no arrays for it in a stream's states.
+  scene.mirror_prims.clear();
+  const bool shapes_lit = std::any_of(scene.light_table.begin(), scene.light_table.end(),
+                                      [](const LightEntry& e) { return e.kind == LightKind::Shape; });
+  if (scene.settings.integrator == IntegratorKind::Path && scene.settings.mirror_images == Switch::On &&
+      scene.settings.nee == Switch::On && shapes_lit) {
+    const SceneView view = scene.view();
+    for (uint32_t id = 0; id < scene.primitives.size(); ++id)
+      if (is_planar_mirror(view, scene.primitives[id])) scene.mirror_prims.push_back(id);
+  }
+  if (scene.mirror_prims.empty()) scene.settings.mirror_images = Switch::Off;
 }
 
 }  // namespace tracer

@@ -27,6 +27,7 @@ inline void point_view_at(SceneView& view, const SceneArrays& arrays) {
   view.kd_node_count = static_cast<uint32_t>(arrays.kd_nodes.size());
   view.light_count = static_cast<uint32_t>(arrays.lights.size());
   view.light_entry_count = static_cast<uint32_t>(arrays.light_table.size());
+  view.mirror_count = static_cast<uint32_t>(arrays.mirror_prims.size());
 }
 
 // Bytes the arrays take (what a device upload allocates).

@@ -7,6 +7,9 @@
 // unbiased: the throughput relative to the first vertex's (the pixel's own albedo), so a dark
 // surface the camera sees keeps its indirect light as long as a white one (docs/path.md).
 // A cube-map sky sampled as a light (render.sky_sampling) is MIS-weighted like the shapes.
+// With render.mirror_images a non-specular vertex also samples one light through one flat
+// mirror (kernel/shading/mirror_images.h), weighted against the BSDF sample that reaches the
+// light off that mirror; it draws two more pairs, at dimensions past every bounce's four.
 // Random numbers per bounce b: four pairs at dimensions kDimFirstFree + 4b + {0..3} (light
 // position; light choice and BSDF lobe; BSDF direction; roulette and sky cell), drawn by the
 // scene's sampler (sampler.h: Philox pairs, or scrambled Sobol pairs for `sobol`).
@@ -16,6 +19,7 @@
 #include "kernel/integrator/whitted.h"
 #include "kernel/shading/bsdf.h"
 #include "kernel/shading/light_sampling.h"
+#include "kernel/shading/mirror_images.h"
 #include "kernel/shading/surface.h"
 
 namespace tracer {
@@ -31,6 +35,8 @@ struct PathState {
   uint32_t depth;
   bool specular;           // the camera ray or a specular bounce: emission it sees counts fully
   float first_throughput;  // max throughput after the first vertex's BSDF sample: roulette's unit
+  uint32_t mirror;  // the planar mirror the ray just left, reached from a non-specular vertex (whose
+                    // from and bsdf_pdf the state keeps) when mirror images are sampled; else kNoHit
 };
 
 // Next-event estimation's shadow ray and the radiance it adds when the light is visible.
@@ -41,14 +47,30 @@ struct ShadowQuery {
   Vec3 contribution;
 };
 
+// A light sampled through a planar mirror: the way to the mirror (its closest hit must be the
+// mirror, its emitter) and, from where it meets the mirror along its direction reflected, the
+// way to the light (whose closest hit must be `light`); to_mirror's contribution is what the
+// light adds when both are clear.
+struct MirrorQuery {
+  ShadowQuery to_mirror;
+  uint32_t light;
+};
+
+// Which of a vertex's shadow queries to trace, and which were clear (bits).
+enum ShadowKind : uint8_t { kShadowLight = 1u, kShadowMirror = 2u };
+
 // What one shading step leaves to do.
 struct PathStep {
   bool shadow;  // trace `shadow` and add its contribution if the light is visible
+  bool mirror;  // trace `image` (mirror images) and add its contribution if the way is clear
   bool alive;   // trace state.ray next
 };
 
+// The first dimension of the mirror-image pairs of bounce 0: past the four of every bounce.
+constexpr uint32_t kDimMirrorImages = kDimFirstFree + 4u * kMaxDepth;
+
 TRACER_HD PathState path_start(const Ray& camera_ray) {
-  return {camera_ray, {0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, camera_ray.origin, 0.0f, 0u, true, 1.0f};
+  return {camera_ray, {0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, camera_ray.origin, 0.0f, 0u, true, 1.0f, kNoHit};
 }
 
 // The shadow ray from the shading point at s to the sampled light: a point light within its
@@ -66,13 +88,60 @@ TRACER_HD bool light_visible(const SceneView& scene, const ShadowQuery& q) {
   return trace_query<kCode>(scene, q.ray, q.tmax, q.emitter == kNoHit).prim == q.emitter;
 }
 
+// The second way of an image query, from to_mirror's hit at t on the mirror to the light.
+TRACER_HD ShadowQuery mirror_to_light(const SceneView& scene, const MirrorQuery& q, float t) {
+  const Vec3 n = mirror_normal(scene.primitives[q.to_mirror.emitter]);
+  const Vec3 dir = reflect(q.to_mirror.ray.dir, n);
+  return {{offset_ray_origin(ray_at(q.to_mirror.ray, t), n, dir, scene.offset_scale), dir},
+          kInfinity,
+          q.light,
+          {0.0f, 0.0f, 0.0f}};
+}
+
+// Traces the shadow queries `kinds` names, from one traversal call site (a GPU kernel then holds
+// one copy of it): the light sample's, then the image's way to the mirror and, where it gets
+// there, on to the light. Returns the bits of those that are clear; `image` may be null when
+// kinds has no kShadowMirror.
+template <uint32_t kCode = kTraceAll>
+TRACER_HD uint8_t trace_shadows(const SceneView& scene, uint8_t kinds, const ShadowQuery& light,
+                                const MirrorQuery* image) {
+  enum Leg : uint8_t { kLegLight, kLegToMirror, kLegToLight, kLegDone };
+  uint8_t clear = 0u;
+  Leg leg = (kinds & kShadowLight) ? kLegLight : (kinds & kShadowMirror) ? kLegToMirror : kLegDone;
+  ShadowQuery q;
+  if (leg == kLegLight) q = light;
+  if (leg == kLegToMirror) q = image->to_mirror;
+  while (leg != kLegDone) {
+    const Hit h = trace_query<kCode>(scene, q.ray, q.tmax, q.emitter == kNoHit);
+    const bool reached = h.prim == q.emitter;
+    if (leg == kLegLight) {
+      if (reached) clear |= kShadowLight;
+      leg = (kinds & kShadowMirror) ? kLegToMirror : kLegDone;
+      if (leg == kLegToMirror) q = image->to_mirror;
+    } else if (leg == kLegToMirror) {
+      leg = reached ? kLegToLight : kLegDone;
+      if (reached) q = mirror_to_light(scene, *image, h.t);
+    } else {
+      if (reached) clear |= kShadowMirror;
+      leg = kLegDone;
+    }
+  }
+  return clear;
+}
+
+// The query for image sample `is` from the shading point at s.
+TRACER_HD MirrorQuery mirror_query(const SceneView& scene, const Surface& s, const MirrorImageSample& is) {
+  return {{{offset_ray_origin(s.p, s.ng, is.wi, scene.offset_scale), is.wi}, kInfinity, is.mirror, {0.0f, 0.0f, 0.0f}},
+          is.light};
+}
+
 // One vertex of the path: `hit` is the closest hit of st.ray. Adds the emission it sees,
 // draws the light sample (into shadow) and the BSDF sample (the next st.ray).
 TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint32_t sample, const Hit& hit,
-                                   PathState& st, ShadowQuery& shadow, RayCounts& counts) {
+                                   PathState& st, ShadowQuery& shadow, MirrorQuery& image, RayCounts& counts) {
   const RenderSettings& rs = scene.settings;
   const bool nee = rs.nee == Switch::On && scene.light_entry_count > 0;
-  PathStep step = {false, false};
+  PathStep step = {false, false, false};
   if (hit.prim == kNoHit) {
     const float w = nee && !st.specular && scene.sky_light != kNoHit
                         ? power_heuristic(st.bsdf_pdf, sky_light_pdf(scene, st.ray.dir))
@@ -84,10 +153,11 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
   const Material m = material_at(scene, s);  // may bend s.ns by a normal or bump map
   const bool front = dot(st.ray.dir, s.ng) < 0.0f;
   if (m.kind == MaterialKind::Emissive && (front || m.two_sided)) {
-    const float w =
-        nee && !st.specular
-            ? power_heuristic(st.bsdf_pdf, light_pdf(scene, hit.prim, st.from, st.ray.dir, length(s.p - st.from), s.ng))
-            : 1.0f;
+    float w = 1.0f;
+    if (nee && !st.specular)
+      w = power_heuristic(st.bsdf_pdf, light_pdf(scene, hit.prim, st.from, st.ray.dir, length(s.p - st.from), s.ng));
+    else if (nee && st.mirror != kNoHit)
+      w = power_heuristic(st.bsdf_pdf, mirror_image_pdf(scene, st.mirror, hit.prim, st.from, st.ray.dir, s.p, s.ng));
     st.radiance += st.throughput * m.radiance * w;
   }
   if (st.depth >= rs.max_depth) return step;
@@ -96,17 +166,23 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
   const uint32_t dim = kDimFirstFree + 4u * st.depth;
   const bool sample_lights = nee && !is_specular(m);
   const bool roulette = st.depth + 1 >= rs.rr_depth;
+  // An image sample only where the mirror's vertex may still bounce, as a BSDF path could.
+  const bool sample_images = sample_lights && scene.mirror_count > 0 && st.depth + 1u < rs.max_depth;
   // A pair is drawn only where it is read (a Lambert vertex lit by one light reads no light
   // choice and no lobe choice): each is a pure function of its dimension, so one left undrawn
   // changes no other.
   float light_u1 = 0.0f, light_u2 = 0.0f, pick_u = 0.0f, choice_u = 0.0f, dir_u1 = 0.0f, dir_u2 = 0.0f, rr_u = 0.0f,
-        sky_cell_u = 0.0f;
+        sky_cell_u = 0.0f, image_pick_u = 0.0f, mirror_u = 0.0f, image_u1 = 0.0f, image_u2 = 0.0f;
   if (sample_lights) draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim, light_u1, light_u2);
   if ((sample_lights && scene.light_entry_count > 1) || bsdf_uses_choice(m))
     draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 1u, pick_u, choice_u);
   if (!is_specular(m)) draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 2u, dir_u1, dir_u2);
   if (roulette || (sample_lights && scene.sky_light != kNoHit))
     draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 3u, rr_u, sky_cell_u);
+  if (sample_images) {
+    draw_uniform2(rs.sampler, rs.seed, pixel, sample, kDimMirrorImages + 2u * st.depth, image_pick_u, mirror_u);
+    draw_uniform2(rs.sampler, rs.seed, pixel, sample, kDimMirrorImages + 2u * st.depth + 1u, image_u1, image_u2);
+  }
 
   if (sample_lights) {
     const LightSample ls = sample_light(scene, pick_light(scene, pick_u), s.p, light_u1, light_u2, sky_cell_u);
@@ -119,11 +195,26 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
       step.shadow = true;
     }
   }
+  if (sample_images) {
+    const MirrorImageSample is = sample_mirror_image(scene, s.p, image_pick_u, mirror_u, image_u1, image_u2);
+    const BsdfValue f = is.valid ? eval_bsdf(m, wo, is.wi, n, front) : BsdfValue{{0.0f, 0.0f, 0.0f}, 0.0f};
+    if (max_component(f.f_cos) > 0.0f) {
+      counts.shadow += 2u;
+      image = mirror_query(scene, s, is);
+      image.to_mirror.contribution = st.throughput * f.f_cos * is.radiance * (power_heuristic(is.pdf, f.pdf) / is.pdf);
+      step.mirror = true;
+    }
+  }
 
   BsdfSample bs;
   if (!sample_bsdf(m, wo, n, front, choice_u, dir_u1, dir_u2, bs)) return step;
   st.throughput *= bs.weight;
-  st.bsdf_pdf = bs.pdf;
+  // A mirror reached from a non-specular vertex keeps that vertex's from and bsdf_pdf for the
+  // image's MIS weight where the light is hit next.
+  const bool off_image_mirror =
+      scene.mirror_count > 0 && bs.specular && !st.specular && is_planar_mirror(scene, scene.primitives[hit.prim]);
+  st.mirror = off_image_mirror ? hit.prim : kNoHit;
+  if (!off_image_mirror) st.bsdf_pdf = bs.pdf;
   st.specular = bs.specular;
   // the floor keeps the ratio finite after a first vertex that absorbs almost everything
   if (st.depth == 0u) st.first_throughput = max_of(max_component(st.throughput), 1e-3f);
@@ -133,7 +224,7 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
     st.throughput = st.throughput / q;
   }
   st.ray = {offset_ray_origin(s.p, s.ng, bs.wi, scene.offset_scale), bs.wi};
-  st.from = s.p;
+  if (!off_image_mirror) st.from = s.p;
   ++st.depth;
   ++counts.secondary;
   step.alive = true;
@@ -147,8 +238,13 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, const Ray& camera_ray, uint
   for (;;) {
     const Hit hit = trace_closest(scene, st.ray, kInfinity);
     ShadowQuery shadow;
-    const PathStep step = path_shade(scene, pixel, sample, hit, st, shadow, counts);
-    if (step.shadow && light_visible(scene, shadow)) st.radiance += shadow.contribution;
+    MirrorQuery image;
+    const PathStep step = path_shade(scene, pixel, sample, hit, st, shadow, image, counts);
+    const uint8_t kinds =
+        static_cast<uint8_t>((step.shadow ? unsigned{kShadowLight} : 0u) | (step.mirror ? unsigned{kShadowMirror} : 0u));
+    const uint8_t clear = trace_shadows(scene, kinds, shadow, &image);
+    if (clear & kShadowLight) st.radiance += shadow.contribution;
+    if (clear & kShadowMirror) st.radiance += image.to_mirror.contribution;
     if (!step.alive) return st.radiance;
   }
 }

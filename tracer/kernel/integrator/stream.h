@@ -39,12 +39,18 @@ struct StreamStates {
   uint32_t* depth;
   uint8_t* specular;
   float* first_throughput;
+  uint32_t* mirror;
   // the shadow ray (ShadowQuery; Whitted's has emitter kNoHit and no contribution)
   Vec3* shadow_origin;
   Vec3* shadow_dir;
   float* shadow_tmax;
   uint32_t* shadow_emitter;
   Vec3* shadow_contribution;
+  // the path's shadow queries (ShadowKind bits) and its mirror-image query, with
+  // render.mirror_images on (the loader turns it off where there is no mirror); without them
+  // the shadow stage traces the light's shadow ray alone
+  uint8_t* shadow_kinds;
+  MirrorQuery* image;
   // Whitted: the vertex being lit and the depth-first stack, stack_size entries per state,
   // slot-major: entry k of state i at stack[k * width + i], so the states of a warp reading
   // their k-th entries read adjacent memory (coalesced on a GPU)
@@ -57,7 +63,7 @@ struct StreamStates {
 
 TRACER_HD PathState load_path(const StreamStates& st, uint32_t i) {
   return {{st.origin[i], st.dir[i]}, st.radiance[i],        st.throughput[i], st.from[i], st.bsdf_pdf[i], st.depth[i],
-          st.specular[i] != 0u,      st.first_throughput[i]};
+          st.specular[i] != 0u,      st.first_throughput[i], st.mirror[i]};
 }
 
 TRACER_HD void store_path(const StreamStates& st, uint32_t i, const PathState& p) {
@@ -70,6 +76,7 @@ TRACER_HD void store_path(const StreamStates& st, uint32_t i, const PathState& p
   st.depth[i] = p.depth;
   st.specular[i] = p.specular ? 1u : 0u;
   st.first_throughput[i] = p.first_throughput;
+  st.mirror[i] = p.mirror;
 }
 
 TRACER_HD void store_shadow_ray(const StreamStates& st, uint32_t i, const Ray& ray, float tmax, uint32_t emitter) {
@@ -133,14 +140,20 @@ TRACER_HD void stream_shade_as(const SceneView& scene, const StreamStates& st, u
   if constexpr (kKind == IntegratorKind::Path) {
     PathState p = load_path(st, i);
     ShadowQuery shadow;
-    const PathStep step = path_shade(scene, st.pixel[i], st.sample[i], st.hit[i], p, shadow, counts);
+    MirrorQuery image;
+    const PathStep step = path_shade(scene, st.pixel[i], st.sample[i], st.hit[i], p, shadow, image, counts);
     store_path(st, i, p);
     if (step.shadow) {
       store_shadow_ray(st, i, shadow.ray, shadow.tmax, shadow.emitter);
       st.shadow_contribution[i] = shadow.contribution;
     }
-    st.next[i] =
-        static_cast<uint8_t>((step.shadow ? unsigned{kStreamShadow} : 0u) | (step.alive ? unsigned{kStreamTrace} : 0u));
+    if (st.shadow_kinds) {
+      if (step.mirror) st.image[i] = image;
+      st.shadow_kinds[i] = static_cast<uint8_t>((step.shadow ? unsigned{kShadowLight} : 0u) |
+                                                (step.mirror ? unsigned{kShadowMirror} : 0u));
+    }
+    st.next[i] = static_cast<uint8_t>((step.shadow || step.mirror ? unsigned{kStreamShadow} : 0u) |
+                                      (step.alive ? unsigned{kStreamTrace} : 0u));
   } else if constexpr (kKind == IntegratorKind::Whitted) {
     st.next[i] = whitted_shade(scene, st, i, counts);
   } else {
@@ -163,15 +176,23 @@ TRACER_HD void stream_closest(const SceneView& scene, const StreamStates& st, ui
   st.hit[i] = trace_closest<kCode>(scene, {st.origin[i], st.dir[i]}, kInfinity);
 }
 
-// The shadow stage for state i, with the trace code kCode.
+// The shadow stage for state i, with the trace code kCode: a path adds the light sample's and
+// then the mirror image's contribution, in the megakernel's order.
 template <uint32_t kCode = kTraceAll>
 TRACER_HD void stream_shadow(const SceneView& scene, const StreamStates& st, uint32_t i) {
-  const ShadowQuery q = {{st.shadow_origin[i], st.shadow_dir[i]}, st.shadow_tmax[i], st.shadow_emitter[i], {}};
-  if (!light_visible<kCode>(scene, q)) return;
-  if (scene.settings.integrator == IntegratorKind::Whitted)
-    whitted_add_light(scene, st.vertex[i]);
-  else
-    st.radiance[i] += st.shadow_contribution[i];
+  const uint8_t kinds = st.shadow_kinds ? st.shadow_kinds[i] : uint8_t{kShadowLight};
+  ShadowQuery light;
+  if (kinds & kShadowLight)
+    light = {{st.shadow_origin[i], st.shadow_dir[i]}, st.shadow_tmax[i], st.shadow_emitter[i], {0.0f, 0.0f, 0.0f}};
+  const MirrorQuery* image = st.image ? st.image + i : nullptr;
+  const uint8_t clear = trace_shadows<kCode>(scene, kinds, light, image);
+  if (clear & kShadowLight) {
+    if (scene.settings.integrator == IntegratorKind::Whitted)
+      whitted_add_light(scene, st.vertex[i]);
+    else
+      st.radiance[i] += st.shadow_contribution[i];
+  }
+  if (clear & kShadowMirror) st.radiance[i] += image->to_mirror.contribution;
 }
 
 // One stage for state i: what the schedulers call per queue entry.

@@ -51,6 +51,9 @@ enum Effects : uint32_t {
     "path: sample a cube-map sky as a light, on (default) or off (only BSDF rays find it)")                         \
   X(light_sampling, LightSampling, LightSampling::Area, render, UnlessDefault,                                      \
     "path: rectangle and triangle lights sampled by area (default) or solid-angle (uniform in their solid angle)")  \
+  X(mirror_images, Switch, Switch::On, render, UnlessDefault,                                                      \
+    "path: also sample the lights seen in flat mirrors, as their mirror images, on (default) or off (only BSDF "    \
+    "rays find them)")                                                                                              \
   X(triangle_test, TriangleTest, TriangleTest::Watertight, render, UnlessDefault,                                   \
     "watertight (default) or moller-trumbore")                                                                      \
   X(grid_resolution, uint32_t, 0u, render, UnlessDefault,                                                           \

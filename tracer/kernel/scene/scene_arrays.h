@@ -23,4 +23,5 @@
   X(PointLight, lights)                                                                              \
   X(LightEntry, light_table) /* path: every light with its selection probability */                  \
   X(uint32_t, light_of_prim) /* per primitive: its light_table entry, or kNoHit */                   \
-  X(SkyCell, sky_cells)      /* 6 faces x n x n, face-major then row-major */
+  X(SkyCell, sky_cells)      /* 6 faces x n x n, face-major then row-major */                      \
+  X(uint32_t, mirror_prims)  /* path with mirror_images: the planar mirrors' primitive ids */

@@ -60,6 +60,7 @@ struct SceneView {
   uint32_t kd_node_count;
   uint32_t light_count;
   uint32_t light_entry_count;
+  uint32_t mirror_count;  // mirror_prims' length: 0 unless render.mirror_images finds planar mirrors
   Vec3 kd_lo, kd_hi;  // the kd-tree's box
   float kd_pad;       // as GridInfo::pad
   GridInfo grid;
