@@ -38,6 +38,7 @@ nlohmann::json changed_options() {
           {"rr_depth", 2},
           {"sky_sampling", false},
           {"light_sampling", "solid-angle"},
+          {"mirror_images", false},
           {"triangle_test", "moller-trumbore"},
           {"grid_resolution", 12},
           {"effects", "shadows,reflections"},

@@ -53,8 +53,8 @@ std::vector<Knob> knobs(bool cubemap_sky, bool flat_mirrors) {
     k.push_back({"sky_sampling", "on", with([](RenderOverrides& o) { o.sky_sampling = Switch::On; }), false});
     k.push_back({"sky_sampling", "off", with([](RenderOverrides& o) { o.sky_sampling = Switch::Off; }), false});
   }
-  k.push_back({"light_sampling", "area",
-               with([](RenderOverrides& o) { o.light_sampling = LightSampling::Area; }), false});
+  k.push_back(
+      {"light_sampling", "area", with([](RenderOverrides& o) { o.light_sampling = LightSampling::Area; }), false});
   k.push_back({"light_sampling", "solid-angle",
                with([](RenderOverrides& o) { o.light_sampling = LightSampling::SolidAngle; }), false});
   if (flat_mirrors) {

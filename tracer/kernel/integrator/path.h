@@ -35,8 +35,8 @@ struct PathState {
   uint32_t depth;
   bool specular;           // the camera ray or a specular bounce: emission it sees counts fully
   float first_throughput;  // max throughput after the first vertex's BSDF sample: roulette's unit
-  uint32_t mirror;  // the planar mirror the ray just left, reached from a non-specular vertex (whose
-                    // from and bsdf_pdf the state keeps) when mirror images are sampled; else kNoHit
+  uint32_t mirror;         // the planar mirror the ray just left, reached from a non-specular vertex (whose
+                           // from and bsdf_pdf the state keeps) when mirror images are sampled; else kNoHit
 };
 
 // Next-event estimation's shadow ray and the radiance it adds when the light is visible.
@@ -240,8 +240,8 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, const Ray& camera_ray, uint
     ShadowQuery shadow;
     MirrorQuery image;
     const PathStep step = path_shade(scene, pixel, sample, hit, st, shadow, image, counts);
-    const uint8_t kinds =
-        static_cast<uint8_t>((step.shadow ? unsigned{kShadowLight} : 0u) | (step.mirror ? unsigned{kShadowMirror} : 0u));
+    const uint8_t kinds = static_cast<uint8_t>((step.shadow ? unsigned{kShadowLight} : 0u) |
+                                               (step.mirror ? unsigned{kShadowMirror} : 0u));
     const uint8_t clear = trace_shadows(scene, kinds, shadow, &image);
     if (clear & kShadowLight) st.radiance += shadow.contribution;
     if (clear & kShadowMirror) st.radiance += image.to_mirror.contribution;

@@ -62,7 +62,7 @@ struct StreamStates {
 };
 
 TRACER_HD PathState load_path(const StreamStates& st, uint32_t i) {
-  return {{st.origin[i], st.dir[i]}, st.radiance[i],        st.throughput[i], st.from[i], st.bsdf_pdf[i], st.depth[i],
+  return {{st.origin[i], st.dir[i]}, st.radiance[i],         st.throughput[i], st.from[i], st.bsdf_pdf[i], st.depth[i],
           st.specular[i] != 0u,      st.first_throughput[i], st.mirror[i]};
 }
 

@@ -11,6 +11,7 @@
 // with no texture on its colour. Point lights and the sky have no image: only shapes are sampled.
 #pragma once
 #include "kernel/accel/primitive_hit.h"
+#include "kernel/base/float_to_int.h"
 #include "kernel/shading/bsdf.h"
 #include "kernel/shading/light_sampling.h"
 
@@ -45,11 +46,11 @@ TRACER_HD Vec3 mirror_reflectance(const Material& m, float cos_theta) {
 TRACER_HD Vec3 reflect_point(Vec3 x, Vec3 a, Vec3 n) { return x - n * (2.0f * dot(x - a, n)); }
 
 struct MirrorImageSample {
-  Vec3 wi;           // unit direction from x to the mirror
-  Vec3 mirror_point;  // where wi meets the mirror
-  Vec3 wi_light;      // unit direction from the mirror point to the light (wi reflected)
-  Vec3 radiance;      // the light's radiance times the mirror's reflectance
-  float pdf;          // solid-angle density at x, the image's selection probability included
+  Vec3 wi;                 // unit direction from x to the mirror
+  Vec3 mirror_point;       // where wi meets the mirror
+  Vec3 wi_light;           // unit direction from the mirror point to the light (wi reflected)
+  Vec3 radiance;           // the light's radiance times the mirror's reflectance
+  float pdf;               // solid-angle density at x, the image's selection probability included
   uint32_t mirror, light;  // primitive ids
   bool valid;
 };
@@ -74,12 +75,12 @@ TRACER_HD MirrorImageSample sample_mirror_image(const SceneView& scene, Vec3 x, 
   const uint32_t entry = pick_light(scene, pick_u);
   if (scene.light_table[entry].kind != LightKind::Shape) return s;
   const uint32_t count = scene.mirror_count;
-  s.mirror = scene.mirror_prims[min_of(static_cast<uint32_t>(mirror_u * static_cast<float>(count)), count - 1u)];
+  s.mirror = scene.mirror_prims[min_of(trunc_to_uint32(mirror_u * static_cast<float>(count)), count - 1u)];
   const Primitive& p = scene.primitives[s.mirror];
   const Vec3 n = mirror_normal(p);
   const float side = dot(x - p.a, n);  // x's signed distance from the plane
   if (side == 0.0f) return s;
-  const LightSample ls = sample_light(scene, entry, x - n * (2.0f * side), u1, u2, 0.0f);
+  const LightSample ls = sample_light(scene, entry, reflect_point(x, p.a, n), u1, u2, 0.0f);
   if (!ls.valid) return s;
   // From the image of x the ray crosses the plane, at side / along, before the light point.
   const float along = dot(ls.wi, n);
