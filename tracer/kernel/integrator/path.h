@@ -82,12 +82,6 @@ TRACER_HD ShadowQuery shadow_query(const SceneView& scene, const Surface& s, con
   return {ray, kInfinity, ls.prim, {0.0f, 0.0f, 0.0f}};
 }
 
-template <uint32_t kCode = kTraceAll>
-TRACER_HD bool light_visible(const SceneView& scene, const ShadowQuery& q) {
-  // One traversal, any hit or the closest: the kernel holds one copy of it.
-  return trace_query<kCode>(scene, q.ray, q.tmax, q.emitter == kNoHit).prim == q.emitter;
-}
-
 // The second way of an image query, from to_mirror's hit at t on the mirror to the light.
 TRACER_HD ShadowQuery mirror_to_light(const SceneView& scene, const MirrorQuery& q, float t) {
   const Vec3 n = mirror_normal(scene.primitives[q.to_mirror.emitter]);
@@ -111,7 +105,7 @@ TRACER_HD uint8_t trace_shadows(const SceneView& scene, uint8_t kinds, const Sha
   ShadowQuery q;
   if (leg == kLegLight) q = light;
   if (leg == kLegToMirror) q = image->to_mirror;
-  while (leg != kLegDone) {
+  while (leg != kLegDone) {  // any hit, or the closest where an emitter must be it
     const Hit h = trace_query<kCode>(scene, q.ray, q.tmax, q.emitter == kNoHit);
     const bool reached = h.prim == q.emitter;
     if (leg == kLegLight) {

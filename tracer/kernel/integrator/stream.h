@@ -3,7 +3,7 @@
 // structure of arrays, one entry per sample), and each stage is a function of one state that
 // a scheduler calls over a queue of state indices: the OpenMP loop of
 // tracer/render/render_stream.cpp, or a CUDA grid. The stages call the megakernel's own
-// steps (path_shade, light_visible, whitted_begin, ...) in the megakernel's order for each
+// steps (path_shade, trace_shadows, whitted_begin, ...) in the megakernel's order for each
 // state, and every random number is a function of (pixel, sample, dimension), so a sample's
 // radiance is the megakernel's bit for bit however the queues are ordered; the host adds the
 // batch's samples to the film in pixel-sample order (film.h's sums saturate near 2^62).
