@@ -20,6 +20,7 @@ test_packages=(
   strace                                  # stops a command at its Nth rename with a signal (commit tests)
   python3                                 # ci/mutation.py, the mutation campaign
   assimp-testmodels                       # glTF files, broken ones included: the glTF reader's corpus test
+  nodejs npm                              # the Khronos glTF validator (ci/fetch-gltf-validator.sh), the bunny
   fonts-dejavu-core                       # the font of the bench converge plot
   libembree-dev                           # the Embree row of bench rays (benchmark only)
   clang libomp-dev libclang-rt-14-dev     # the second compiler, its OpenMP runtime, libFuzzer and sanitizers (ci/extra.sh sanitize)

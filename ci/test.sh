@@ -5,4 +5,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/install-deps.sh
 bash ci/build.sh
+bash ci/fetch-gltf-validator.sh
 ctest --preset default "$@"

@@ -55,7 +55,8 @@ def cornell_box():
     ids = {name: g.lambert(name, c) for name, c in COLOURS.items()}
     ids["lamp"] = g.material("lamp", emissiveFactor=LAMP_FACTOR,
                              pbrMetallicRoughness={"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0},
-                             extensions={"KHR_materials_emissive_strength": {"emissiveStrength": LAMP_STRENGTH}})
+                             extensions={"KHR_materials_emissive_strength": {"emissiveStrength": LAMP_STRENGTH},
+                                         "KHR_materials_specular": {"specularFactor": 0}})
     for i, (material, corners) in enumerate(cornell_quads()):
         g.node(mesh=g.mesh("quad%d" % i, [c for p in corners for c in p], [0, 1, 2, 0, 2, 3], ids[material]))
     # Looks down +z from in front of the open side: 180 degrees about y.
@@ -69,7 +70,7 @@ def cornell_box():
             "camera": {"from": [278, 273, -800], "to": [278, 273, -799], "up": [0, 1, 0], "vfov": vfov},
             "film": {"width": 640, "height": 480},
             "render": {"integrator": "path", "spp": 64, "sampler": "sobol", "max_depth": 8},
-            "background": {"type": "constant", "radiance": [0, 0, 0]},
+            "background": {"type": "constant", "radiance": [1, 1, 1]},  # the glTF reader's neutral sky
             "materials": dict({n: {"type": "lambert", "albedo": c} for n, c in COLOURS.items()},
                               lamp={"type": "emissive", "radiance": lamp}),
             "shapes": [{"type": "mesh", "material": m, "positions": q, "indices": [[0, 1, 2], [0, 2, 3]]}

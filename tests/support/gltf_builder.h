@@ -1,6 +1,7 @@
 // glTF documents for tests: a valid one-triangle file (data-URI buffer, a camera, a material)
 // as nlohmann JSON that a test edits before writing it, and the pieces to build others.
 #pragma once
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -55,6 +56,68 @@ inline nlohmann::json triangle_gltf() {
     "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
     "buffers": [{"byteLength": 42, "uri": ")" +
                                data_uri(buffer) + R"("}]})");
+}
+
+// A glTF document assembled piece by piece: accessors go into one binary buffer, written as a
+// data URI by finish().
+class GltfDoc {
+ public:
+  nlohmann::json doc = {{"asset", {{"version", "2.0"}}}, {"scene", 0}, {"scenes", {{{"nodes", nlohmann::json::array()}}}}};
+
+  // A float accessor of `type` ("VEC2", "VEC3", "VEC4"); with bounds, its min and max per component.
+  int floats(const std::vector<float>& values, const char* type, int components, bool bounds = false) {
+    nlohmann::json a = {{"bufferView", view(bytes_of(values))},
+                        {"componentType", 5126},
+                        {"count", values.size() / components},
+                        {"type", type}};
+    if (bounds) {
+      std::vector<float> lo(values.begin(), values.begin() + components), hi = lo;
+      for (size_t i = 0; i < values.size(); ++i)
+        lo[i % components] = std::min(lo[i % components], values[i]),
+                        hi[i % components] = std::max(hi[i % components], values[i]);
+      a["min"] = lo;
+      a["max"] = hi;
+    }
+    return push("accessors", a);
+  }
+  int indices(const std::vector<uint32_t>& values) {
+    return push("accessors", {{"bufferView", view(bytes_of(values))},
+                              {"componentType", 5125},
+                              {"count", values.size()},
+                              {"type", "SCALAR"}});
+  }
+  int push(const char* array, const nlohmann::json& element) {
+    doc[array].push_back(element);
+    return static_cast<int>(doc[array].size()) - 1;
+  }
+  nlohmann::json finish() const {
+    nlohmann::json out = doc;
+    out["buffers"] = {{{"byteLength", bin_.size()}, {"uri", data_uri(bin_)}}};
+    return out;
+  }
+
+ private:
+  int view(const std::string& bytes) {
+    while (bin_.size() % 4 != 0) bin_ += '\0';
+    const int v = push("bufferViews", {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", bytes.size()}});
+    bin_ += bytes;
+    return v;
+  }
+  std::string bin_;
+};
+
+// A .glb of `doc` (its first buffer the binary chunk `bin`; glTF 2.0, 4.4).
+inline std::string write_glb(const std::filesystem::path& path, const nlohmann::json& doc, std::string bin) {
+  std::string json = doc.dump();
+  while (json.size() % 4 != 0) json += ' ';
+  while (bin.size() % 4 != 0) bin += '\0';
+  const uint32_t header[5] = {0x46546C67u, 2u, static_cast<uint32_t>(28 + json.size() + bin.size()),
+                              static_cast<uint32_t>(json.size()), 0x4E4F534Au};
+  const uint32_t bin_header[2] = {static_cast<uint32_t>(bin.size()), 0x004E4942u};
+  std::ofstream(path, std::ios::binary) << std::string(reinterpret_cast<const char*>(header), sizeof header) << json
+                                        << std::string(reinterpret_cast<const char*>(bin_header), sizeof bin_header)
+                                        << bin;
+  return path.string();
 }
 
 inline std::string write_gltf(const std::filesystem::path& path, const nlohmann::json& doc) {

@@ -133,13 +133,17 @@ inline std::string source_path(const std::string& rel) { return std::string(TRAC
 
 // The scene files every test may use: each .json under scenes/ except scenes/large/, whose
 // meshes ci/generate-meshes.sh writes at set-up (test_scene_loader.cpp checks those), and
-// except scenes/generated/, git-ignored output of `tracer generate` and benchmarks.
+// except scenes/generated/ and below, git-ignored output of `tracer generate`, benchmarks and
+// fetched tools.
 inline std::vector<std::filesystem::path> shipped_scenes() {
   std::vector<std::filesystem::path> out;
   const std::filesystem::path root(source_path("scenes")), large = root / "large", generated = root / "generated";
-  for (const auto& e : std::filesystem::recursive_directory_iterator(root))
-    if (e.path().extension() == ".json" && e.path().parent_path() != large && e.path().parent_path() != generated)
-      out.push_back(e.path());
+  for (auto e = std::filesystem::recursive_directory_iterator(root); e != std::filesystem::recursive_directory_iterator();
+       ++e) {
+    if (e->path() == generated) e.disable_recursion_pending();
+    if (e->path().extension() == ".json" && e->path().parent_path() != large && e->path().parent_path() != generated)
+      out.push_back(e->path());
+  }
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -128,7 +128,7 @@ TEST_F(GltfReader, PointLightsInCandelaAndOtherLightsRefused) {
   ASSERT_EQ(s.lights.size(), 1u);
   EXPECT_EQ(s.lights[0].intensity, (Vec3{8, 4, 2}));
   EXPECT_EQ(s.lights[0].position, (Vec3{0, 0, 3}));
-  EXPECT_EQ(s.background.radiance, (Vec3{0, 0, 0}));  // lit by its own lights: black
+  EXPECT_EQ(s.background.radiance, (Vec3{1, 1, 1}));  // lit by its own lights, and the viewer's sky
   doc["extensions"]["KHR_lights_punctual"]["lights"][0]["type"] = "directional";
   expect_error(doc, "extensions.KHR_lights_punctual.lights[0]: a directional light");
 }
@@ -146,7 +146,7 @@ TEST_F(GltfReader, MaterialsFactorsEmissionAndTheDiffuseSpecialCase) {
   doc["materials"][0]["emissiveFactor"] = {1, 0.5, 0};
   doc["materials"][0]["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = 4;
   m = load(doc).materials[0];
-  EXPECT_EQ(m.kind, MaterialKind::Emissive);
+  EXPECT_EQ(m.kind, MaterialKind::Lambert);  // emitting as well as reflecting
   EXPECT_EQ(m.radiance, (Vec3{4, 2, 0}));
   doc["materials"][0]["pbrMetallicRoughness"]["roughnessFactor"] = 1.5;
   expect_error(doc, "materials[0].pbrMetallicRoughness.roughnessFactor: must be in [0, 1]");

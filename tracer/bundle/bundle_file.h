@@ -14,7 +14,7 @@
 
 namespace tracer {
 
-constexpr uint32_t kBundleVersion = 1;
+constexpr uint32_t kBundleVersion = 2;  // 2: TriangleShading gained bitangent_sign
 constexpr uint64_t kBundleMaxBytes = 1ull << 30;  // what a reader accepts
 
 struct BundleSection {

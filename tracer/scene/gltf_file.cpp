@@ -11,6 +11,7 @@
 #include "io/input_error.h"
 #include "io/json_reader.h"
 #include "scene/gltf_accessor.h"
+#include "scene/gltf_normalize.h"
 #include "scene/gltf_schema.h"
 
 namespace tracer {
@@ -136,14 +137,23 @@ void check_external_uris(const Json& root, const std::string& path) {
 constexpr unsigned char kGlbMagic[4] = {'g', 'l', 'T', 'F'};
 
 // The JSON text of a .gltf file, or of a .glb's first chunk (glTF 2.0, 4.4), for the checked
-// parse; an empty string when the binary header is too short to hold one (tinygltf says why).
-std::string json_text(const std::string& bytes) {
-  if (bytes.size() < 4 || std::memcmp(bytes.data(), kGlbMagic, 4) != 0) return bytes;
-  if (bytes.size() < 20) return "";
-  uint32_t chunk_length;
-  std::memcpy(&chunk_length, bytes.data() + 12, 4);
-  if (chunk_length > bytes.size() - 20) return "";
-  return bytes.substr(20, chunk_length);
+// parse; a .glb's header is checked here.
+std::string json_text(const std::string& bytes, bool binary, const std::string& path) {
+  if (!binary) return bytes;
+  uint32_t header[5];
+  if (bytes.size() < sizeof header)
+    throw InputError(path + ": a binary glTF file of " + std::to_string(bytes.size()) +
+                     " bytes, shorter than the 20 bytes of its header and first chunk's header");
+  std::memcpy(header, bytes.data(), sizeof header);
+  if (header[2] != bytes.size())
+    throw InputError(path + ": a binary glTF file whose header gives its length as " + std::to_string(header[2]) +
+                     " bytes; it has " + std::to_string(bytes.size()));
+  if (header[1] != 2)
+    throw InputError(path + ": a binary glTF file of version " + std::to_string(header[1]) + "; the reader reads version 2");
+  if (header[3] > bytes.size() - 20 || header[4] != 0x4E4F534Au)
+    throw InputError(path + ": a binary glTF file whose first chunk is not JSON of at most the " +
+                     std::to_string(bytes.size() - 20) + " bytes that follow the header");
+  return bytes.substr(20, header[3]);
 }
 
 }  // namespace
@@ -156,12 +166,12 @@ bool is_gltf_path(const std::string& path) {
 
 GltfFile read_gltf_file(const std::string& bytes, const std::string& path) {
   if (bytes.size() > kMaxGltfFileBytes) throw InputError(path + ": larger than 4 GiB, the limit of a glTF file");
-  const std::string json = json_text(bytes);
-  if (!json.empty()) {
-    const Json root = parse_json_text(json, path);  // syntax, depth and duplicate keys first
-    check_gltf_schema(root, path);
-    check_external_uris(root, path);
-  }
+  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), kGlbMagic, 4) == 0;
+  Json root = parse_json_text(json_text(bytes, binary, path), path);  // syntax, depth and duplicate keys first
+  check_gltf_schema(root, path);
+  check_external_uris(root, path);
+  const std::vector<int> viewless = normalize_gltf_json(root, binary, path);
+  const std::string normalized = binary ? glb_with_json(bytes, root.dump(), path) : root.dump();
   std::error_code ec;
   Confinement confinement;
   const fs::path dir = fs::absolute(fs::path(path), ec).parent_path();
@@ -173,12 +183,11 @@ GltfFile read_gltf_file(const std::string& bytes, const std::string& path) {
   file.path = path;
   loader.SetImageLoader(keep_encoded_image, &file.model);
   std::string err, warn;
-  const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), kGlbMagic, 4) == 0;
   const bool ok = binary ? loader.LoadBinaryFromMemory(&file.model, &err, &warn,
-                                                       reinterpret_cast<const unsigned char*>(bytes.data()),
-                                                       static_cast<unsigned int>(bytes.size()), dir.string())
-                         : loader.LoadASCIIFromString(&file.model, &err, &warn, bytes.data(),
-                                                      static_cast<unsigned int>(bytes.size()), dir.string());
+                                                       reinterpret_cast<const unsigned char*>(normalized.data()),
+                                                       static_cast<unsigned int>(normalized.size()), dir.string())
+                         : loader.LoadASCIIFromString(&file.model, &err, &warn, normalized.data(),
+                                                      static_cast<unsigned int>(normalized.size()), dir.string());
   const auto trimmed = [](std::string s) {
     while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
     return s;
@@ -188,6 +197,7 @@ GltfFile read_gltf_file(const std::string& bytes, const std::string& path) {
     if (!confinement.refusal.empty()) why = confinement.refusal;
     throw InputError(path + ": not a glTF 2.0 file the reader accepts: " + (why.empty() ? "tinygltf refused it" : why));
   }
+  for (const int a : viewless) file.model.accessors[static_cast<size_t>(a)].bufferView = -1;
   if (!warn.empty()) file.notes.push_back(trimmed(warn));
   file.files_read = std::move(confinement.files_read);
   return file;

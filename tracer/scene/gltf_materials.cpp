@@ -220,22 +220,26 @@ Material GltfMaterials::convert(const tinygltf::Material& g, const std::string& 
     if (!(strength >= 0.0 && strength <= 1e6)) fail(file_, at + ".emissiveStrength", "must be in [0, 1e6]");
     emission = emission * static_cast<float>(strength);
   }
-  if (std::max(emission.x, std::max(emission.y, emission.z)) > 0.0f) {
-    // An emitting surface is an area light: it reflects nothing (docs/gltf.md).
-    Material e{};
-    e.kind = MaterialKind::Emissive;
-    for (uint32_t& t : e.texture) t = kNoTexture;
-    e.factor_map = e.normal_map = e.bump_map = kNoTexture;
-    e.radiance = emission;
-    e.two_sided = g.doubleSided ? 1u : 0u;
-    if (g.emissiveTexture.index >= 0) {
-      const std::string at = path + ".emissiveTexture";
-      transform_of(g.emissiveTexture.extensions, at);
-      const Baked b = texture(g.emissiveTexture.index, g.emissiveTexture.texCoord, Bake::SrgbTimes, emission, at);
-      e.texture[kSlotRadiance] = b.texture;
-      if (b.texture != kNoTexture) e.radiance = b.mean;
-    }
-    return e;
+  if (!(std::max(emission.x, std::max(emission.y, emission.z)) > 0.0f)) return m;
+  // glTF adds the emission to the surface's reflection (3.9.3): the material emits, and its
+  // triangles are area lights. One that reflects nothing (a black Lambert surface: a lamp)
+  // is the tracer's emissive material, the same light without a BSDF to evaluate.
+  const bool black = m.kind == MaterialKind::Lambert && m.texture[kSlotAlbedo] == kNoTexture &&
+                     std::max(m.albedo.x, std::max(m.albedo.y, m.albedo.z)) == 0.0f;
+  if (black) {
+    m = Material{};
+    m.kind = MaterialKind::Emissive;
+    for (uint32_t& t : m.texture) t = kNoTexture;
+    m.factor_map = m.normal_map = m.bump_map = kNoTexture;
+  }
+  m.radiance = emission;
+  m.two_sided = g.doubleSided ? 1u : 0u;
+  if (g.emissiveTexture.index >= 0) {
+    const std::string at = path + ".emissiveTexture";
+    transform_of(g.emissiveTexture.extensions, at);
+    const Baked b = texture(g.emissiveTexture.index, g.emissiveTexture.texCoord, Bake::SrgbTimes, emission, at);
+    m.texture[kSlotRadiance] = b.texture;
+    if (b.texture != kNoTexture) m.radiance = b.mean;
   }
   return m;
 }
@@ -261,6 +265,7 @@ uint32_t GltfMaterials::material(int index, GltfUvTransform& uv) {
   scene_.report.used_types.insert(m.kind == MaterialKind::Emissive  ? "material:emissive"
                                   : m.kind == MaterialKind::Lambert ? "material:lambert"
                                                                     : "material:metal_rough");
+  if (m.kind != MaterialKind::Emissive && emits(m)) scene_.report.used_types.insert("material:emission");
   materials_.emplace(index, std::make_pair(id, uv));
   return id;
 }

@@ -120,6 +120,10 @@ class GltfSceneReader {
         ignore(path + ": mode " + std::to_string(prim.mode) + " (points and lines are left out)");
         continue;
       }
+      if (attribute(prim, "POSITION") < 0) {  // glTF 2.0, 3.7.2.1: a client skips it
+        ignore(path + ": no POSITION (not drawn)");
+        continue;
+      }
       if (!prim.targets.empty()) ignore(path + ".targets (drawn without morph targets)");
       GltfUvTransform uv;
       const uint32_t material = materials_.material(prim.material, uv);
@@ -141,7 +145,6 @@ class GltfSceneReader {
                                       const GltfUvTransform& uv_transform) {
     const std::string attrs = path + ".attributes";
     const int position = attribute(prim, "POSITION");
-    if (position < 0) fail_at(file_.path, attrs, "has no POSITION");
     const std::vector<float> p = read_gltf_floats(model_, position, 3, file_.path, attrs + ".POSITION");
     const size_t vertices = p.size() / 3;
     const auto same_count = [&](const std::vector<float>& v, size_t per, const char* name) {
@@ -187,9 +190,10 @@ class GltfSceneReader {
           tri.uv[c][1] = 1.0f - st[1];  // glTF's v runs down the image, the tracer's up
         }
         if (!tangent.empty()) tri.tangent[c] = {tangent[k * 4], tangent[k * 4 + 1], tangent[k * 4 + 2]};
-        if (!tangent.empty() && tangent[k * 4 + 3] < 0.0f)
-          ignore(path + ".attributes.TANGENT: w = -1 (mirrored uvs: the bitangent is taken as n x t)");
       }
+      // w = -1 marks mirrored uvs: the bitangent is w (n x t) (glTF 2.0, 3.7.2.1); the first
+      // corner's sign holds for the triangle.
+      if (!tangent.empty() && tangent[corners[t * 3] * 4 + 3] < 0.0f) tri.bitangent_sign = -1.0f;
       tri.has_normals = !n.empty();
       tri.has_uvs = !uv.empty();
       tri.has_tangents = !tangent.empty();

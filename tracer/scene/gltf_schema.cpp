@@ -113,26 +113,55 @@ const std::map<std::string, std::vector<Rule>>& rules() {
 }
 
 // The extensions the reader understands (docs/gltf.md); a file that requires another is refused.
-const std::vector<std::string> kReadExtensions = {"KHR_lights_punctual",    "KHR_materials_emissive_strength",
-                                                  "KHR_materials_ior",      "KHR_materials_transmission",
-                                                  "KHR_materials_specular", "KHR_texture_transform"};
+const std::vector<std::string> kReadExtensions = {
+    "KHR_lights_punctual",        "KHR_materials_emissive_strength", "KHR_materials_ior",
+    "KHR_materials_transmission", "KHR_materials_specular",          "KHR_texture_transform",
+    "KHR_mesh_quantization"};  // integer attributes: the accessors read every component type
+
+// The properties an object must have (glTF 2.0's schema, "required").
+const std::map<std::string, std::vector<const char*>>& required() {
+  static const std::map<std::string, std::vector<const char*>> table = {
+      {"root", {"asset"}},
+      {"asset", {"version"}},
+      {"mesh", {"primitives"}},
+      {"primitive", {"attributes"}},
+      {"accessor", {"componentType", "count", "type"}},
+      {"sparse", {"count", "indices", "values"}},
+      {"sparsePart", {"bufferView"}},
+      {"bufferView", {"buffer", "byteLength"}},
+      {"buffer", {"byteLength"}},
+      {"textureInfo", {"index"}},
+      {"camera", {"type"}},
+  };
+  return table;
+}
 
 template <class Test>
-bool every(const Json& v, Test test) {
+bool every(Json& v, Test test) {
   return v.is_array() && std::all_of(v.begin(), v.end(), test);
 }
 
-bool has_kind(const Json& v, Kind kind) {
+// A whole number >= 0. JSON does not tell 12 from 12.0, and glTF's schema calls both an
+// integer: an integral float below 2^53 counts, and becomes an integer for tinygltf.
+bool whole(Json& v) {
+  if (v.is_number_unsigned()) return true;
+  if (!v.is_number_float()) return false;
+  const double d = v.get<double>();
+  if (!(d >= 0.0 && d < 9007199254740992.0 && d == static_cast<double>(static_cast<uint64_t>(d)))) return false;
+  v = static_cast<uint64_t>(d);
+  return true;
+}
+
+bool has_kind(Json& v, Kind kind) {
   switch (kind) {
     case Kind::String: return v.is_string();
-    case Kind::Uint: return v.is_number_unsigned();
+    case Kind::Uint: return whole(v);
     case Kind::Number: return v.is_number();
     case Kind::Bool: return v.is_boolean();
     case Kind::NumberArray: return every(v, [](const Json& e) { return e.is_number(); });
-    case Kind::UintArray: return every(v, [](const Json& e) { return e.is_number_unsigned(); });
+    case Kind::UintArray: return every(v, [](Json& e) { return whole(e); });
     case Kind::StringArray: return every(v, [](const Json& e) { return e.is_string(); });
-    case Kind::UintValues:
-      return v.is_object() && std::all_of(v.begin(), v.end(), [](const Json& e) { return e.is_number_unsigned(); });
+    case Kind::UintValues: return v.is_object() && std::all_of(v.begin(), v.end(), [](Json& e) { return whole(e); });
     case Kind::Object: return v.is_object();
     case Kind::ObjectArray: return every(v, [](const Json& e) { return e.is_object(); });
   }
@@ -157,19 +186,22 @@ const char* kind_name(Kind kind) {
 
 std::string child(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
 
-void check_object(const Json& object, const std::string& context, const std::string& path, const std::string& file) {
+void check_object(Json& object, const std::string& context, const std::string& path, const std::string& file) {
   const std::vector<Rule>& table = rules().at(context);
-  for (const auto& item : object.items()) {
+  if (const auto must = required().find(context); must != required().end())
+    for (const char* key : must->second)
+      if (!object.contains(key)) fail_at(file, child(path, key), "is missing; glTF 2.0 requires it");
+  for (auto item : object.items()) {
     const std::string at = child(path, item.key());
-    const Json& v = item.value();
+    Json& v = item.value();
     if (item.key() == "name" && !v.is_string()) fail_at(file, at, "expected a string, got " + describe(v));
     if (item.key() == "extensions") {
       if (!v.is_object()) fail_at(file, at, "expected an object, got " + describe(v));
-      for (const auto& ext : v.items()) {
+      for (auto ext : v.items()) {
         if (!ext.value().is_object())
           fail_at(file, child(at, ext.key()), "expected an object, got " + describe(ext.value()));
         // The texture references inside the extensions the tracer reads.
-        for (const auto& part : ext.value().items())
+        for (auto part : ext.value().items())
           if (part.value().is_object() && part.key().size() > 7 &&
               part.key().compare(part.key().size() - 7, 7, "Texture") == 0)
             check_object(part.value(), "textureInfo", child(child(at, ext.key()), part.key()), file);
@@ -187,7 +219,7 @@ void check_object(const Json& object, const std::string& context, const std::str
 
 }  // namespace
 
-void check_gltf_schema(const Json& root, const std::string& file) {
+void check_gltf_schema(Json& root, const std::string& file) {
   if (!root.is_object()) fail_at(file, "", "a glTF file is a JSON object, got " + describe(root));
   check_object(root, "root", "", file);
   if (const auto it = root.find("extensionsRequired"); it != root.end())

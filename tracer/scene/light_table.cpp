@@ -84,7 +84,7 @@ void build_light_table(Scene& scene) {
   for (uint32_t id = 0; id < scene.primitives.size(); ++id) {
     const Primitive& p = scene.primitives[id];
     const Material& m = scene.materials[p.material];
-    if (m.kind != MaterialKind::Emissive || p.kind == ShapeKind::Plane || !(luminance(m.radiance) > 0.0f)) continue;
+    if (!emits(m) || p.kind == ShapeKind::Plane || !(luminance(m.radiance) > 0.0f)) continue;
     scene.light_of_prim[id] = static_cast<uint32_t>(scene.light_table.size());
     scene.light_table.push_back({LightKind::Shape, id, 0.0f, 0.0f});
     power.push_back(kPi * luminance(m.radiance) * primitive_area(p) * (m.two_sided ? 2.0 : 1.0));

@@ -16,6 +16,7 @@ struct MeshTriangle {
   bool has_uvs = false;
   bool has_tangents = false;  // per-vertex tangents (mesh_tangents.h)
   Vec3 tangent[3];
+  float bitangent_sign = 1.0f;  // glTF's TANGENT w: the bitangent is bitangent_sign * (n x t)
   int32_t mtl = -1;  // the face's material in the OBJ's MTL file, or -1
 };
 

@@ -16,6 +16,24 @@ void append_primitive(Scene& scene, const Primitive& p) {
   scene.primitives.push_back(p);
 }
 
+namespace {
+
+// A tangent is a direction in the surface: the part of the given one orthogonal to the
+// vertex normal (Gram-Schmidt, in the file's frame, where both were given), placed as a
+// vector (which keeps it orthogonal to the placed normal), normalised.
+Vec3 placed_tangent(const Transform& xf, const MeshTriangle& t, int c) {
+  Vec3 tangent = t.tangent[c];
+  if (t.has_normals) {
+    const Vec3 n = normalize(t.n[c]);
+    tangent = tangent - n * dot(tangent, n);
+  }
+  const Vec3 v = xf.vector(tangent);
+  const float len = length(v);
+  return len > 0.0f ? v / len : Vec3{0.0f, 0.0f, 0.0f};
+}
+
+}  // namespace
+
 size_t append_mesh_triangles(Scene& scene, std::vector<MeshTriangle> tris, const Transform& xf,
                              const std::vector<uint32_t>& materials, const std::function<void()>& zero_normal) {
   compute_vertex_tangents(tris);
@@ -29,6 +47,7 @@ size_t append_mesh_triangles(Scene& scene, std::vector<MeshTriangle> tris, const
     int32_t shading = -1;
     if (t.has_normals || t.has_uvs) {
       TriangleShading sh{};
+      sh.bitangent_sign = 1.0f;
       if (t.has_normals) {
         for (int k = 0; k < 3; ++k)
           if (!(length(t.n[k]) > 0.0f)) zero_normal();
@@ -43,9 +62,11 @@ size_t append_mesh_triangles(Scene& scene, std::vector<MeshTriangle> tris, const
         sh.has_uvs = 1;
       }
       if (t.has_tangents) {
-        sh.t0 = xf.vector(t.tangent[0]);
-        sh.t1 = xf.vector(t.tangent[1]);
-        sh.t2 = xf.vector(t.tangent[2]);
+        sh.t0 = placed_tangent(xf, t, 0);
+        sh.t1 = placed_tangent(xf, t, 1);
+        sh.t2 = placed_tangent(xf, t, 2);
+        // A mirroring placement turns n x t against the placed bitangent: M(n x t) = det M (Mn x Mt).
+        sh.bitangent_sign = xf.mirrors() ? -t.bitangent_sign : t.bitangent_sign;
         sh.has_tangents = 1;
       }
       shading = static_cast<int32_t>(scene.triangle_shading.size());

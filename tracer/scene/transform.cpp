@@ -1,6 +1,5 @@
 #include "scene/transform.h"
 
-#include <glm/gtc/matrix_access.hpp>
 #include <glm/matrix.hpp>
 
 #include "kernel/base/detmath.h"
@@ -10,14 +9,18 @@ namespace tracer {
 Vec3 Transform::vector(Vec3 v) const { return m * v; }  // each row's products summed left to right
 
 Vec3 Transform::normal(Vec3 n) const {
-  // cofactor matrix = det * inverse transpose; dividing by |det| keeps the orientation (our
-  // own: glm::inverseTranspose divides each entry by the determinant, which rounds otherwise)
-  const Vec3 r0 = glm::row(m, 0), r1 = glm::row(m, 1), r2 = glm::row(m, 2);
-  const Vec3 c0 = cross(r1, r2), c1 = cross(r2, r0), c2 = cross(r0, r1);
-  const float det = dot(r0, c0);
+  // The cofactor matrix, det * M^-T, has the columns c0, c1, c2: the cross products of M's
+  // columns, which are det times the rows of M^-1. Dividing its product with n by |det|
+  // keeps the orientation when M mirrors (our own, not glm::inverseTranspose, whose division
+  // by the determinant rounds each entry).
+  const Vec3 a0 = m[0], a1 = m[1], a2 = m[2];
+  const Vec3 c0 = cross(a1, a2), c1 = cross(a2, a0), c2 = cross(a0, a1);
+  const float det = dot(a0, c0);
   const Vec3 out = c0 * n.x + c1 * n.y + c2 * n.z;
   return normalize(det < 0.0f ? -out : out);
 }
+
+bool Transform::mirrors() const { return dot(m[0], cross(m[1], m[2])) < 0.0f; }
 
 Transform Transform::then(const Transform& next) const {
   Transform r;

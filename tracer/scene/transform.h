@@ -17,6 +17,7 @@ struct Transform {
   Vec3 point(Vec3 p) const { return vector(p) + t; }
   Vec3 vector(Vec3 v) const;
   Vec3 normal(Vec3 n) const;  // by the inverse transpose, normalised
+  bool mirrors() const;       // a negative determinant: the placement turns right-handed frames left
 
   // this, followed by `next`
   Transform then(const Transform& next) const;

@@ -22,7 +22,8 @@ struct Primitive {
 struct TriangleShading {
   Vec3 n0, n1, n2;
   float u0, v0, u1, v1, u2, v2;
-  Vec3 t0, t1, t2;  // per-vertex tangents, when has_tangents
+  Vec3 t0, t1, t2;       // per-vertex tangents, when has_tangents
+  float bitangent_sign;  // the bitangent is bitangent_sign * (n x t): -1 where the uvs or the placement mirror
   uint32_t has_normals, has_uvs, has_tangents;
 };
 

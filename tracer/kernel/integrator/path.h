@@ -146,7 +146,7 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
   Surface s = surface_at(scene, st.ray, hit);
   const Material m = material_at(scene, s);  // may bend s.ns by a normal or bump map
   const bool front = dot(st.ray.dir, s.ng) < 0.0f;
-  if (m.kind == MaterialKind::Emissive && (front || m.two_sided)) {
+  if (emits(m) && (front || m.two_sided)) {
     float w = 1.0f;
     if (nee && !st.specular)
       w = power_heuristic(st.bsdf_pdf, light_pdf(scene, hit.prim, st.from, st.ray.dir, length(s.p - st.from), s.ng));

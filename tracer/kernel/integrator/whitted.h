@@ -28,7 +28,7 @@ struct WhittedResponse {
 // conductor's Fresnel reflectance).
 TRACER_HD WhittedResponse whitted_response(const Material& m, float cos_o) {
   const Vec3 zero = {0.0f, 0.0f, 0.0f};
-  WhittedResponse w = {zero, zero, zero, 1.0f, zero, zero, 1.0f, m.fresnel, zero, false, false};
+  WhittedResponse w = {zero, zero, zero, 1.0f, zero, zero, 1.0f, m.fresnel, m.radiance, m.two_sided != 0, false};
   switch (m.kind) {
     case MaterialKind::Lambert:
       w.ka = m.albedo;
@@ -53,8 +53,6 @@ TRACER_HD WhittedResponse whitted_response(const Material& m, float cos_o) {
     case MaterialKind::Emissive:  // an emitter, Lambertian with its albedo (0 unless given)
       w.ka = m.albedo;
       w.kd = m.albedo;
-      w.emission = m.radiance;
-      w.two_sided = m.two_sided != 0;
       break;
     case MaterialKind::Conductor:  // a mirror tinted by its Fresnel reflectance, or lit by its BRDF
       if (is_smooth(m.roughness)) w.kr = conductor_fresnel(m, cos_o);

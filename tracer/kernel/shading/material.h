@@ -24,13 +24,14 @@ struct Material {
   MaterialKind kind;
   FresnelKind fresnel;             // dielectric, rough_dielectric, phong with transparency; conductor: Schlick
                                    // from albedo as F0, or Exact from eta and k
-  uint32_t two_sided;              // emissive
+  uint32_t two_sided;              // whether the emission leaves both sides
   float shininess;                 // phong
   Vec3 albedo;                     // lambert, metal; phong's diffuse colour; conductor's F0; metal_rough's base colour
   Vec3 ambient;                    // phong
   Vec3 specular;                   // phong
   Vec3 tint;                       // dielectric and rough_dielectric transmission colour
-  Vec3 radiance;                   // emissive
+  Vec3 radiance;                   // emitted: emissive's; metal_rough's and lambert's added to their
+                                   // reflection (glTF's emissiveFactor); 0 for a surface that does not emit
   float roughness;                 // metal; conductor, rough_dielectric, metal_rough (GGX alpha = roughness^2)
   float metallic;                  // metal_rough
   float transmission;              // metal_rough (thin-walled, KHR_materials_transmission)
@@ -45,5 +46,8 @@ struct Material {
   uint32_t normal_map;             // tangent-space normals (2c - 1); kNoTexture when absent
   uint32_t bump_map;               // heights; kNoTexture when absent
 };
+
+// Whether a surface of this material emits (where its radiance texture, if any, is not black).
+TRACER_HD bool emits(const Material& m) { return max_component(m.radiance) > 0.0f; }
 
 }  // namespace tracer

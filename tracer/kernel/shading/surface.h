@@ -114,6 +114,14 @@ TRACER_HD Vec3 surface_tangent(const SceneView& scene, const Surface& s) {
   return len > 0.0f ? t / len : frame_around(s.ns).t;
 }
 
+// The sign that makes bitangent_sign * (ns x t) the surface's bitangent: a triangle's own
+// (glTF's TANGENT w, turned by a mirroring placement), else 1.
+TRACER_HD float bitangent_sign(const SceneView& scene, const Surface& s) {
+  const Primitive& p = scene.primitives[s.prim];
+  if (p.kind != ShapeKind::Triangle || p.shading < 0 || !scene.triangle_shading[p.shading].has_tangents) return 1.0f;
+  return scene.triangle_shading[p.shading].bitangent_sign;
+}
+
 // The material at a surface point with its textured colours looked up at (u, v).
 TRACER_HD Material material_colours_at(const SceneView& scene, const Surface& s) {
   Material m = scene.materials[s.material];
@@ -140,7 +148,7 @@ TRACER_HD Material material_at(const SceneView& scene, Surface& s) {
   const Material m = material_colours_at(scene, s);
   if (!uses_feature(scene.features, kFeatureTextures)) return m;
   if (m.normal_map == kNoTexture && m.bump_map == kNoTexture) return m;
-  const Vec3 t = surface_tangent(scene, s), b = cross(s.ns, t);
+  const Vec3 t = surface_tangent(scene, s), b = cross(s.ns, t) * bitangent_sign(scene, s);
   Vec3 local = {0.0f, 0.0f, 1.0f};
   if (m.normal_map != kNoTexture) {
     local = sample_texture(scene.textures, scene.texels, m.normal_map, s.u, s.v) * 2.0f - Vec3{1.0f, 1.0f, 1.0f};
