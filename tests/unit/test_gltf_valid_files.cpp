@@ -153,6 +153,9 @@ TEST(GltfValidFiles, RefusalsNameTheJsonPathInTheReadersWords) {
   doc["extensionsRequired"] = {"KHR_mesh_quantization", "EXT_meshopt_compression"};
   expect_refused(test::write_gltf(dir / "e.gltf", doc), "extensionsRequired[1]: the file requires EXT_meshopt_compression");
   doc = test::triangle_gltf();
+  doc["buffers"][0]["uri"] = "missing.bin";
+  expect_refused(test::write_gltf(dir / "g.gltf", doc), "buffers[0].uri: " + (dir / "missing.bin").string() + ": no such file");
+  doc = test::triangle_gltf();
   doc["accessors"][0]["count"] = 2.5;
   expect_refused(test::write_gltf(dir / "f.gltf", doc), "accessors[0].count: expected a whole number >= 0, got 2.5");
   fs::remove_all(dir);

@@ -80,6 +80,28 @@ TEST(Textures, BilinearWeightsWrapAndClamp) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Textures, MirroredRepeatReadsEveryOtherCopyReversed) {
+  // glTF's MIRRORED_REPEAT (along u only here; v clamps): u in [1, 2] reads 2 - u, u in
+  // [-1, 0] reads -u, and the filter at the edge of a copy reads its edge texel twice.
+  const auto dir = test::temp_dir("tex-mirror");
+  const Image img = test_image();
+  write_image(img, (dir / "t.exr").string());
+  Scene s = textured_scene(dir, R"({"texture": "t.exr"})");
+  s.textures[0].wrap_u = TextureWrap::Mirror;
+  s.textures[0].wrap_v = TextureWrap::Clamp;
+  const auto at = [&](float u, float v) { return sample_texture(s.textures.data(), s.texels.data(), 0, u, v).y; };
+  const auto texel = [&](int x, int y) { return img.rgb[3 * (y * 4 + x) + 1]; };
+  for (const float u : {0.1f, 0.375f, 0.8f}) {
+    EXPECT_FLOAT_EQ(at(2.0f - u, 0.4f), at(u, 0.4f)) << u;  // within the rounding of 2 - u
+    EXPECT_FLOAT_EQ(at(-u, 0.4f), at(u, 0.4f)) << u;
+    EXPECT_FLOAT_EQ(at(4.0f + u, 0.4f), at(u, 0.4f)) << u;
+  }
+  EXPECT_EQ(at(1.0f, 1.0f - 0.5f / 4.0f), texel(3, 0));  // between column 3 and its mirror image
+  EXPECT_EQ(at(0.0f, 1.0f - 0.5f / 4.0f), texel(0, 0));
+  EXPECT_EQ(at(0.3f, 1.7f), at(0.3f, 1.0f));  // v clamps
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Textures, EightBitImagesAreSrgbDecoded) {
   const auto dir = test::temp_dir("tex-srgb");
   OIIO::ImageBuf buf(OIIO::ImageSpec(2, 2, 3, OIIO::TypeDesc::UINT8));

@@ -24,6 +24,7 @@ namespace fs = std::filesystem;
 struct Confinement {
   fs::path folder;  // canonical
   std::string refusal;
+  std::string refused;  // the path refused
   std::set<std::string> files_read;
 };
 
@@ -59,6 +60,7 @@ bool file_exists(const std::string& path, void* user) {
   std::string why;
   if (inside_folder(path, c, why)) return true;
   c.refusal = why;
+  c.refused = path;
   return false;
 }
 
@@ -70,17 +72,20 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
   std::error_code ec;
   if (!inside_folder(path, c, why)) {
     *err = c.refusal = why;
+    c.refused = path;
     return false;
   }
   const uint64_t size = fs::file_size(path, ec);
   if (ec || size > kMaxGltfExternalBytes) {
     *err = c.refusal = path + ": " + (ec ? ec.message() : "larger than 1 GiB, the limit for a buffer or image");
+    c.refused = path;
     return false;
   }
   std::ifstream in(path, std::ios::binary);
   out->resize(size);
   if (!in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
     *err = c.refusal = path + ": cannot read it";
+    c.refused = path;
     return false;
   }
   c.files_read.insert(path);
@@ -113,25 +118,45 @@ bool keep_encoded_image(tinygltf::Image* image, const int index, std::string* er
   return true;
 }
 
-// A buffer's or image's URI is data, or a path relative to the file's folder: an absolute
-// path or another scheme (http:, file:) is refused by its JSON path before anything is read.
-void check_external_uris(const Json& root, const std::string& path) {
+// The first buffer or image whose uri `stop(uri)` is true for, as its JSON path
+// ("images[2].uri"); "" when none is.
+template <class Stop>
+std::string first_uri(const Json& root, Stop stop) {
   for (const char* array : {"buffers", "images"}) {
     const auto list = root.find(array);
     if (list == root.end()) continue;
     for (size_t i = 0; i < list->size(); ++i) {
       const auto uri = (*list)[i].find("uri");
-      if (uri == (*list)[i].end()) continue;
-      const std::string text = uri->get<std::string>();
-      const std::string at = std::string(array) + "[" + std::to_string(i) + "].uri";
-      if (text.rfind("data:", 0) == 0) continue;
-      if (!text.empty() && text[0] == '/')
-        fail_at(path, at,
-                "an absolute path; buffers and images must be in the glTF file's folder, named relative to it");
-      if (text.find(':') != std::string::npos)
-        fail_at(path, at, "names a URI scheme; the reader reads data URIs and files in the glTF file's folder");
+      if (uri != (*list)[i].end() && stop(uri->get<std::string>()))
+        return std::string(array) + "[" + std::to_string(i) + "].uri";
     }
   }
+  return "";
+}
+
+// A buffer's or image's URI is data, or a path relative to the file's folder: an absolute
+// path or another scheme (http:, file:) is refused by its JSON path before anything is read.
+void check_external_uris(const Json& root, const std::string& path) {
+  const auto external = [](const std::string& text) { return text.rfind("data:", 0) != 0; };
+  const std::string absolute =
+      first_uri(root, [&](const std::string& text) { return external(text) && !text.empty() && text[0] == '/'; });
+  if (!absolute.empty())
+    fail_at(path, absolute,
+            "an absolute path; buffers and images must be in the glTF file's folder, named relative to it");
+  const std::string scheme = first_uri(
+      root, [&](const std::string& text) { return external(text) && text.find(':') != std::string::npos; });
+  if (!scheme.empty())
+    fail_at(path, scheme, "names a URI scheme; the reader reads data URIs and files in the glTF file's folder");
+}
+
+// The JSON path of the buffer or image whose uri names `refused` (a file the reader would
+// not read), with ": " after it; "" when none does.
+std::string uri_path_of(const Json& root, const std::string& refused) {
+  const std::string at = first_uri(root, [&](const std::string& name) {
+    return !name.empty() && refused.size() >= name.size() &&
+           refused.compare(refused.size() - name.size(), name.size(), name) == 0;
+  });
+  return at.empty() ? "" : at + ": ";
 }
 
 constexpr unsigned char kGlbMagic[4] = {'g', 'l', 'T', 'F'};
@@ -192,10 +217,12 @@ GltfFile read_gltf_file(const std::string& bytes, const std::string& path) {
     while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
     return s;
   };
-  if (!ok) {
-    std::string why = trimmed(err.empty() ? warn : err);
-    if (!confinement.refusal.empty()) why = confinement.refusal;
-    throw InputError(path + ": not a glTF 2.0 file the reader accepts: " + (why.empty() ? "tinygltf refused it" : why));
+  if (!ok && !confinement.refusal.empty())
+    throw InputError(path + ": " + uri_path_of(root, confinement.refused) + confinement.refusal);
+  if (!ok) {  // past every check above: what the library itself says, marked as its words
+    const std::string why = trimmed(err.empty() ? warn : err);
+    throw InputError(path + ": not a glTF 2.0 file the reader accepts (tinygltf: " +
+                     (why.empty() ? "no reason given" : why) + ")");
   }
   for (const int a : viewless) file.model.accessors[static_cast<size_t>(a)].bufferView = -1;
   if (!warn.empty()) file.notes.push_back(trimmed(warn));

@@ -103,17 +103,20 @@ GltfMaterials::Baked GltfMaterials::texture(int index, int tex_coord, Bake bake,
   const ImagePixels& pixels = image->second;
   Texture tex{};
   tex.kind = TextureKind::Image;
-  tex.wrap = TextureWrap::Repeat;
+  tex.wrap_u = tex.wrap_v = TextureWrap::Repeat;
   if (t.sampler >= 0) {
     if (static_cast<size_t>(t.sampler) >= file_.model.samplers.size())
       fail(file_, path + ".sampler",
            "names sampler " + std::to_string(t.sampler) + "; the file has " +
                std::to_string(file_.model.samplers.size()));
     const tinygltf::Sampler& s = file_.model.samplers[t.sampler];
-    if (s.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE && s.wrapT == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
-      tex.wrap = TextureWrap::Clamp;
-    else if (s.wrapS != s.wrapT || s.wrapS == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT)
-      ignore("samplers[" + std::to_string(t.sampler) + "]: mirrored or mixed wrap modes (drawn as repeat)");
+    const auto wrap = [](int mode) {
+      return mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE     ? TextureWrap::Clamp
+             : mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::Mirror
+                                                             : TextureWrap::Repeat;
+    };
+    tex.wrap_u = wrap(s.wrapS);
+    tex.wrap_v = wrap(s.wrapT);
   }
   tex.width = pixels.width;
   tex.height = pixels.height;

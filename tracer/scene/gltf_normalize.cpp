@@ -93,10 +93,11 @@ void blank_unread_accessors(Json& root) {
     if (!read.count(i)) accessors[i] = {{"componentType", 5126}, {"count", 1}, {"type", "SCALAR"}};
 }
 
-// Gives every index accessor without a buffer view one over a new buffer of 4 zero bytes.
+// Gives every index accessor without a buffer view one (shared) over a new buffer of 4 zero bytes.
 std::vector<int> give_index_accessors_a_view(Json& root) {
   std::vector<int> viewless;
   if (!root.contains("meshes")) return viewless;
+  int64_t zeros = -1;  // the shared view
   for (const Json& mesh : root["meshes"])
     for (const Json& prim : mesh["primitives"]) {
       if (!prim.contains("indices")) continue;
@@ -104,11 +105,14 @@ std::vector<int> give_index_accessors_a_view(Json& root) {
       if (!root.contains("accessors") || index >= root["accessors"].size()) continue;  // named later
       Json& accessor = root["accessors"][index];
       if (accessor.contains("bufferView")) continue;
-      if (!root.contains("buffers")) root["buffers"] = Json::array();
-      if (!root.contains("bufferViews")) root["bufferViews"] = Json::array();
-      root["buffers"].push_back({{"byteLength", 4}, {"uri", std::string(kBase64Prefix) + "AAAAAA=="}});
-      root["bufferViews"].push_back({{"buffer", root["buffers"].size() - 1}, {"byteLength", 4}});
-      accessor["bufferView"] = root["bufferViews"].size() - 1;
+      if (zeros < 0) {
+        if (!root.contains("buffers")) root["buffers"] = Json::array();
+        if (!root.contains("bufferViews")) root["bufferViews"] = Json::array();
+        root["buffers"].push_back({{"byteLength", 4}, {"uri", std::string(kBase64Prefix) + "AAAAAA=="}});
+        root["bufferViews"].push_back({{"buffer", root["buffers"].size() - 1}, {"byteLength", 4}});
+        zeros = static_cast<int64_t>(root["bufferViews"].size()) - 1;
+      }
+      accessor["bufferView"] = zeros;
       viewless.push_back(static_cast<int>(index));
     }
   return viewless;

@@ -122,7 +122,7 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& path,
   const bool srgb = !data && !pixels.float_format;
   Texture t{};
   t.kind = TextureKind::Image;
-  t.wrap = wrap;
+  t.wrap_u = t.wrap_v = wrap;
   t.width = pixels.width;
   t.height = pixels.height;
   t.offset = static_cast<uint32_t>(scene_.texels.size());

@@ -12,28 +12,42 @@ namespace tracer {
 constexpr uint32_t kNoTexture = 0xffffffffu;
 
 enum class TextureKind : uint32_t { Image, Checker };
-enum class TextureWrap : uint32_t { Repeat, Clamp };
+enum class TextureWrap : uint32_t { Repeat, Clamp, Mirror };  // Mirror: glTF's MIRRORED_REPEAT
 
 struct Texture {
   TextureKind kind;
-  TextureWrap wrap;
+  TextureWrap wrap_u, wrap_v;  // along u (the image's x) and v (its y)
   uint32_t width, height;
   uint32_t offset;  // image: its texels start at texels[offset], 3 floats each, row by row
   Vec3 even, odd;   // checker: colour where floor(u s) + floor(v s) is even / odd
   float scale;      // checker: squares per unit of u and v
 };
 
+// A texel index outside [0, n): clamped, repeated, or mirrored (period 2n, the second copy
+// reversed: -1 reads 0 and n reads n - 1).
 TRACER_HD int wrap_texel(int i, int n, TextureWrap wrap) {
   if (wrap == TextureWrap::Clamp) return i < 0 ? 0 : (i >= n ? n - 1 : i);
-  const int r = i % n;
-  return r < 0 ? r + n : r;
+  const int period = wrap == TextureWrap::Mirror ? 2 * n : n;
+  int r = i % period;
+  r = r < 0 ? r + period : r;
+  return r < n ? r : period - 1 - r;
 }
 
 TRACER_HD Vec3 texel_at(const float* texels, const Texture& t, int x, int y) {
   const float* p = texels + t.offset +
-                   3u * (static_cast<uint32_t>(wrap_texel(y, t.height, t.wrap)) * t.width +
-                         static_cast<uint32_t>(wrap_texel(x, t.width, t.wrap)));
+                   3u * (static_cast<uint32_t>(wrap_texel(y, t.height, t.wrap_v)) * t.width +
+                         static_cast<uint32_t>(wrap_texel(x, t.width, t.wrap_u)));
   return {p[0], p[1], p[2]};
+}
+
+// A texture coordinate into [0, 1]: its fraction (repeat), the nearest edge (clamp), or its
+// distance into a period of 2 folded back past 1 (mirror); NaN becomes 0.
+TRACER_HD float wrap_coordinate(float c, TextureWrap wrap) {
+  c = c == c ? c : 0.0f;
+  if (wrap == TextureWrap::Clamp) return c < 0.0f ? 0.0f : (c > 1.0f ? 1.0f : c);
+  if (wrap == TextureWrap::Repeat) return c - floorf(c);
+  const float f = c - 2.0f * floorf(c * 0.5f);
+  return f > 1.0f ? 2.0f - f : f;
 }
 
 // Bilinear filter as two linear interpolations along x, then one along y, each a + (b - a) f:
@@ -47,17 +61,9 @@ TRACER_HD Vec3 sample_texture(const Texture* textures, const float* texels, uint
     const float parity = cu + cv - 2.0f * floorf((cu + cv) * 0.5f);
     return parity == 0.0f ? t.even : t.odd;
   }
-  // Into [0, 1] first (repeat: the fraction; clamp: the nearest edge; NaN: 0), so texel
-  // indices stay small whatever the coordinates.
-  u = u == u ? u : 0.0f;
-  v = v == v ? v : 0.0f;
-  if (t.wrap == TextureWrap::Repeat) {
-    u = u - floorf(u);
-    v = v - floorf(v);
-  } else {
-    u = u < 0.0f ? 0.0f : (u > 1.0f ? 1.0f : u);
-    v = v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v);
-  }
+  // Into [0, 1] first, so texel indices stay small whatever the coordinates.
+  u = wrap_coordinate(u, t.wrap_u);
+  v = wrap_coordinate(v, t.wrap_v);
   const float x = u * static_cast<float>(t.width) - 0.5f, y = (1.0f - v) * static_cast<float>(t.height) - 0.5f;
   const float x0 = floorf(x), y0 = floorf(y);
   const float fx = x - x0, fy = y - y0;
