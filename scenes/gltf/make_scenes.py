@@ -6,7 +6,7 @@
                              floor, a point light, an emissive panel and a camera
   textured.glb               a node hierarchy (scaled, rotated, translated parents) of cubes with
                              base colour, normal and metallic-roughness textures and a
-                             KHR_texture_transform
+                             KHR_texture_transform; one cube's uvs mirrored, one mirrored by its scale
   conventions.glb            a diffuse plane under a 10 cd point light 2 m above it, beside an
                              emissive quad of strength 2, seen from above: docs/gltf.md renders
                              it in Blender too (blender_compare.sh) to check camera and units
@@ -132,6 +132,11 @@ def textured():
     g.node(parent=root, name="box", mesh=box, rotation=[0, math.sin(0.35), 0, math.cos(0.35)])
     arm = g.node(parent=root, name="arm", translation=[1.1, 0, 0.3], rotation=[0, 0, math.sin(0.2), math.cos(0.2)])
     g.node(parent=arm, name="small", mesh=small, scale=[0.4, 0.4, 0.4], translation=[0, 0.2, 0])
+    # Mirrored tangent frames: the tiled box with its uvs mirrored in u, and under a mirroring scale.
+    flipped = g.primitive("flipped", g.geometry(pos, idx, normals=nor, uvs=[1 - c if k % 2 == 0 else c
+                                                                            for k, c in enumerate(uv)]), m)
+    g.node(parent=root, name="flipped uvs", mesh=flipped, scale=[0.35, 0.35, 0.35], translation=[-1.15, -0.3, 0.2])
+    g.node(parent=root, name="mirrored", mesh=box, scale=[-0.35, 0.35, 0.35], translation=[-0.75, -0.3, 0.85])
     floor(g, 3, 3, 0.6)
     g.point_light([1, 1, 1], 15.0, translation=[1.5, 3, 2.5])
     pitched_camera(g, 45, [0.4, 2.2, 4.2], -15)

@@ -7,6 +7,7 @@
 #include "kernel/base/detmath.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_materials.h"
+#include "scene/gltf_schema.h"
 #include "scene/mesh_primitives.h"
 
 namespace tracer {
@@ -96,6 +97,9 @@ class GltfSceneReader {
     contents_.textures = static_cast<uint32_t>(materials_.texture_count());
     for (const std::string& s : materials_.ignored()) contents_.ignored.push_back(s);
     for (const std::string& s : file_.notes) contents_.ignored.push_back("tinygltf: " + s);
+    for (size_t i = 0; i < model_.extensionsUsed.size(); ++i)
+      if (!gltf_extension_read(model_.extensionsUsed[i]))
+        contents_.ignored.push_back(at("extensionsUsed", i) + ": " + model_.extensionsUsed[i] + " (not read)");
     return contents_;
   }
 

@@ -219,13 +219,17 @@ void check_object(Json& object, const std::string& context, const std::string& p
 
 }  // namespace
 
+bool gltf_extension_read(const std::string& name) {
+  return std::find(kReadExtensions.begin(), kReadExtensions.end(), name) != kReadExtensions.end();
+}
+
 void check_gltf_schema(Json& root, const std::string& file) {
   if (!root.is_object()) fail_at(file, "", "a glTF file is a JSON object, got " + describe(root));
   check_object(root, "root", "", file);
   if (const auto it = root.find("extensionsRequired"); it != root.end())
     for (size_t i = 0; i < it->size(); ++i) {
       const std::string name = (*it)[i].get<std::string>();
-      if (std::find(kReadExtensions.begin(), kReadExtensions.end(), name) == kReadExtensions.end())
+      if (!gltf_extension_read(name))
         fail_at(file, "extensionsRequired[" + std::to_string(i) + "]",
                 "the file requires " + name + ", which the tracer does not read");
     }

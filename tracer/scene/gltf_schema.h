@@ -15,4 +15,7 @@ namespace tracer {
 
 void check_gltf_schema(Json& root, const std::string& file);
 
+// Whether the reader reads the extension `name` (docs/gltf.md's table).
+bool gltf_extension_read(const std::string& name);
+
 }  // namespace tracer
