@@ -23,14 +23,13 @@ struct Texture {
   float scale;      // checker: squares per unit of u and v
 };
 
-// A texel index outside [0, n): clamped, repeated, or mirrored (period 2n, the second copy
-// reversed: -1 reads 0 and n reads n - 1).
+// The bilinear filter's texel index, in [-1, n] once its coordinate is wrapped into [0, 1]:
+// past an edge, repeat reads the opposite edge; clamp and mirror read the edge texel itself
+// (a mirrored copy begins with the texel it ends on).
 TRACER_HD int wrap_texel(int i, int n, TextureWrap wrap) {
-  if (wrap == TextureWrap::Clamp) return i < 0 ? 0 : (i >= n ? n - 1 : i);
-  const int period = wrap == TextureWrap::Mirror ? 2 * n : n;
-  int r = i % period;
-  r = r < 0 ? r + period : r;
-  return r < n ? r : period - 1 - r;
+  if (i >= 0 && i < n) return i;
+  if (wrap == TextureWrap::Repeat) return i < 0 ? n - 1 : 0;
+  return i < 0 ? 0 : n - 1;
 }
 
 TRACER_HD Vec3 texel_at(const float* texels, const Texture& t, int x, int y) {
