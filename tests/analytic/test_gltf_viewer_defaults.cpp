@@ -4,6 +4,9 @@
 // the default camera fills the frame with the model whatever its shape.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+
 #include "gltf_builder.h"
 #include "image/image_io.h"
 #include "render/render_cpu.h"

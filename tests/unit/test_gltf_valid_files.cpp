@@ -4,6 +4,7 @@
 // no error in any of them. Refusals name the file and the JSON path in the reader's words.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <functional>
 
 #include "gltf_builder.h"
@@ -118,7 +119,7 @@ TEST(GltfValidFiles, TheKhronosValidatorFindsNoErrorInThem) {
     GTEST_SKIP() << package << " is absent: bash ci/fetch-gltf-validator.sh fetches it from the npm registry";
   const auto dir = test::temp_dir("gltf-validator");
   std::string files;
-  for (const ValidFile& f : valid_files()) files += " " + f.write(dir);
+  for (const ValidFile& f : valid_files()) files.append(" ").append(f.write(dir));
   std::string out;
   ASSERT_EQ(test::run_command("node " + test::source_path("tests/support/gltf_validate.js") + " " + package + files, &out), 0)
       << out;
