@@ -444,7 +444,7 @@ TEST(TransformInvariance, AJsonMeshRotatedShadesAsItsRotatedTwin) {
     nlohmann::json mesh = {{"type", "mesh"}, {"material", "m"}, {"positions", list(ps)}, {"normals", list(ns)},
                            {"indices", {{0, 1, 2}, {0, 2, 3}}}};
     if (transformed) mesh["transform"] = {{{"rotate", {{"axis", {0, 0, 1}}, {"degrees", 40}}}}};
-    doc["shapes"] = {mesh};
+    doc["shapes"] = nlohmann::json::array({mesh});  // {mesh} alone is a copy under clang
     RenderStats stats;
     return render_cpu(test::scene_from(doc.dump()), 1, stats);
   };
