@@ -81,7 +81,9 @@ TEST(LightSolidAngle, RectangleSamplesAreUniformInSolidAngle) {
                                     omega;
     EXPECT_GT(chi2_p_value(observed, expected), kSignificance) << "from " << c.from.x << " " << c.from.y;
     // The test has power: beside the lamp, points uniform by area are not uniform in solid angle.
-    if (&c == &cases[0]) EXPECT_LT(chi2_p_value(by_area, expected), 1e-12);
+    if (&c == &cases[0]) {
+      EXPECT_LT(chi2_p_value(by_area, expected), 1e-12);
+    }
     // One light: the density is 1 / omega for every sample.
     EXPECT_NEAR(inverse_pdf.mean(), omega, 1e-4 * omega) << "from " << c.from.x << " " << c.from.y;
   }
@@ -113,8 +115,9 @@ TEST(LightSolidAngle, ExtremesFallBackToAreaSamplingWithTheSameDensity) {
                                           inverse_pdf);
     // Area sampling's density is right too: E[1 / pdf] is the solid angle (the parallelogram's
     // samples stay away from the grazing and near-zero distances whose 1 / pdf has no variance bound).
-    if (std::string(c.what) == "a parallelogram")
+    if (std::string(c.what) == "a parallelogram") {
       EXPECT_NEAR(inverse_pdf.mean(), c.rect.solid_angle(c.from), inverse_pdf.tolerance());
+    }
   }
 }
 

@@ -39,7 +39,9 @@ void expect_variant_answers_as_full_code(const std::string& what, const SceneVie
     const float tmax = full.prim != kNoHit ? full.t * 1.5f : 1e3f;
     ASSERT_EQ(kQueries[v].any(view, ray, tmax), trace_any(view, ray, tmax)) << what << ", " << kTraceVariants[v].name;
     // The any-hit query at exactly the closest hit's t: a hit at tmax does not occlude.
-    if (full.prim != kNoHit) ASSERT_EQ(kQueries[v].any(view, ray, full.t), trace_any(view, ray, full.t));
+    if (full.prim != kNoHit) {
+      ASSERT_EQ(kQueries[v].any(view, ray, full.t), trace_any(view, ray, full.t));
+    }
   }
 }
 

@@ -181,7 +181,9 @@ TEST(Cli, StatsNameEveryAccelerationStructure) {
       EXPECT_GT(stats["accel"]["nodes"].get<int>(), 0) << accel;
     }
     EXPECT_EQ(stats["accel"].contains("cells"), accel == "grid") << accel;
-    if (accel == "grid") EXPECT_GT(stats["accel"]["cells"].get<int>(), 0);
+    if (accel == "grid") {
+      EXPECT_GT(stats["accel"]["cells"].get<int>(), 0);
+    }
   }
   std::filesystem::remove_all(dir);
 }

@@ -55,7 +55,9 @@ TEST(Layering, NoFolderIncludesOneAboveIt) {
 
 TEST(Layering, EveryFolderOfTracerHasALayer) {
   for (const auto& entry : fs::directory_iterator(fs::path(TRACER_SOURCE_DIR) / "tracer"))
-    if (entry.is_directory()) EXPECT_TRUE(kLayer.count(entry.path().filename().string())) << entry.path();
+    if (entry.is_directory()) {
+      EXPECT_TRUE(kLayer.count(entry.path().filename().string())) << entry.path();
+    }
 }
 
 }  // namespace

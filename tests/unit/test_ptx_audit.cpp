@@ -89,7 +89,7 @@ TEST(PtxAudit, MinMaxNeedTheHelperAndASafeConstant) {
   EXPECT_EQ(a.explained.at("tracer/kernel/base/platform.h:82  min.f32").first, 2);
   EXPECT_EQ(a.total().differs, 3);
   // Two registers, NaN, the wrong zero, the .NaN variant, or outside the helper: not argued.
-  for (const std::string& ins :
+  for (const char* ins :
        {"\t.loc\t2 82 3\n\tmin.f32 \t%f1, %f2, %f3;\n", "\t.loc\t2 82 3\n\tmax.f32 \t%f1, %f2, 0f7FC00000;\n",
         "\t.loc\t2 82 3\n\tmin.f32 \t%f1, %f2, 0f00000000;\n", "\t.loc\t2 86 3\n\tmax.f32 \t%f1, %f2, 0f80000000;\n",
         "\t.loc\t2 82 3\n\tmin.NaN.f32 \t%f1, %f2, 0f3F800000;\n",

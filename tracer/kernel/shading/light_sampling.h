@@ -110,7 +110,7 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
   }
   const Primitive& p = scene.primitives[entry.index];
   s.prim = entry.index;
-  Vec3 point, ng;
+  Vec3 point = {0.0f, 0.0f, 0.0f}, ng = {0.0f, 0.0f, 0.0f};  // every shape case sets both
   float b1 = 0.0f, b2 = 0.0f;  // the sampled point's quad or triangle parameters, for its texture lookup
   float solid_angle = 0.0f;    // > 0 where sampled uniformly in solid angle: light_pdf's pmf / solid_angle
   switch (p.kind) {
