@@ -1,5 +1,5 @@
 // The tracer's `--device cuda`: the scene's arrays rendered by cuda/gpu_film.cu, the kernel
-// the self-contained runner launches too. With the strict flags of DESIGN.md rule 1 the
+// the self-contained runner launches too. With the strict flags of docs/determinism.md rule 1 the
 // pixels equal the CPU's bit for bit.
 #include "cuda_device.h"
 #include "gpu_adaptive.h"

@@ -116,7 +116,7 @@ void run_ray_bench(const SceneBundle& bundle, const std::string& label, bool gpu
     std::snprintf(note, sizeof note, "  (trace %s; %.1fx, %.1fx, %.1fx the CPU)", device.variant(),
                   cpu.seconds[0] / t.seconds[0], cpu.seconds[1] / t.seconds[1], cpu.seconds[2] / t.seconds[2]);
     print_row(name, rays, t, sum, reference, note);
-    if (sum != reference) throw std::runtime_error(name + ": hits differ from the CPU's (DESIGN.md rule 1)");
+    if (sum != reference) throw std::runtime_error(name + ": hits differ from the CPU's (docs/determinism.md rule 1)");
   }
 }
 

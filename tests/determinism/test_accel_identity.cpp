@@ -1,4 +1,4 @@
-// DESIGN.md rule 4 made real: every acceleration structure returns the same closest hit,
+// docs/determinism.md rule 4 made real: every acceleration structure returns the same closest hit,
 // bit for bit, and the same any-hit answer. Ray by ray over every shipped scene, with rays
 // aimed at shared edges and vertices (ties at equal t) and along cell boundaries; and image
 // by image, every golden rendered with every structure hashes to its golden.

@@ -1,4 +1,4 @@
-// Sample ranges (DESIGN.md rule 5): `render --samples A:B` parts merged by `tracer merge`
+// Sample ranges (docs/determinism.md rule 5): `render --samples A:B` parts merged by `tracer merge`
 // equal the whole render bit for bit, however the samples are split; merge refuses parts
 // that leave a gap, overlap, or come from another render.
 #include <gtest/gtest.h>

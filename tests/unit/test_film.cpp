@@ -1,4 +1,4 @@
-// The film's fixed-point accumulation (kernel/base/film.h, DESIGN.md rule 5): each sample is
+// The film's fixed-point accumulation (kernel/base/film.h, docs/determinism.md rule 5): each sample is
 // rounded to the nearest 2^-32 of radiance, halves away from zero, so the bias a sample adds
 // is at most half a unit; a rejected sample adds nothing to any channel.
 #include <gtest/gtest.h>

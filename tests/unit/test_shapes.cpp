@@ -166,9 +166,9 @@ TEST(Shapes, NoSelfIntersectionAtLargeCoordinates) {
   EXPECT_EQ(self_hits(tris, {0, 274, 280}, 270.0f), 0);
 }
 
-// DESIGN.md rule 4: the BVH returns exactly the hit of brute force, ties included.
+// docs/determinism.md rule 4: the BVH returns exactly the hit of brute force, ties included.
 // The closest hit is, by definition, brute force's minimum of (t, id) over every primitive
-// (DESIGN.md rule 4), and the any-hit answer is whether that set is empty: every structure
+// (docs/determinism.md rule 4), and the any-hit answer is whether that set is empty: every structure
 // must return exactly that on random rays through a soup of spheres and triangles, with a
 // dense cluster of small triangles so leaves hold several triangle blocks and primitives
 // straddle many kd-tree leaves and grid cells.

@@ -160,7 +160,8 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     std::printf("%10.2f %10.2f %10.2f | %016llx %s\n", rates[0], rates[1], rates[2],
                 static_cast<unsigned long long>(sum), sum == reference ? "same" : "DIFFERENT");
     if (sum != reference)
-      throw std::runtime_error(label + ": hits differ from " + enum_name(accels[0]) + "'s (DESIGN.md rule 4)");
+      throw std::runtime_error(label + ": hits differ from " + enum_name(accels[0]) +
+                               "'s (docs/determinism.md rule 4)");
   };
   // The GPU's row for a structure: its trace variant's kernels (kernel/accel/trace_variants.h);
   // `wide_bvh`: bvh's 8-wide tree on the device.
@@ -176,7 +177,7 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
                 "", rays.primary.size() / seconds[0] / 1e6, rays.incoherent.size() / seconds[1] / 1e6,
                 rays.shadow.size() / seconds[2] / 1e6, static_cast<unsigned long long>(sum),
                 sum == reference ? "same" : "DIFFERENT", device.variant());
-    if (sum != reference) throw std::runtime_error(label + ": hits differ from the CPU's (DESIGN.md rule 1)");
+    if (sum != reference) throw std::runtime_error(label + ": hits differ from the CPU's (docs/determinism.md rule 1)");
   };
   for (const AccelKind accel : accels) {
     const Scene scene = load_bench_scene(cmd.scene, accel, cmd.grid_resolution);

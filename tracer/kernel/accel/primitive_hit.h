@@ -1,6 +1,6 @@
 // A ray's hit and the primitive test every acceleration structure calls
 // (kernel/accel/trace.h dispatches the queries). The closest hit is the minimum of
-// (t, primitive id) compared lexicographically (DESIGN.md rule 4).
+// (t, primitive id) compared lexicographically (docs/determinism.md rule 4).
 #pragma once
 #include "kernel/accel/trace_code.h"
 #include "kernel/geom/plane.h"

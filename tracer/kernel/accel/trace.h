@@ -1,6 +1,6 @@
 // Closest-hit and any-hit queries, dispatched on the acceleration structure with a switch.
 // Every structure returns the same hit, bit for bit: the closest hit is the minimum of
-// (t, primitive id), and no structure prunes a candidate that could beat it (DESIGN.md rule 4).
+// (t, primitive id), and no structure prunes a candidate that could beat it (docs/determinism.md rule 4).
 #pragma once
 #include "kernel/accel/traverse_bvh.h"
 #include "kernel/accel/traverse_grid.h"

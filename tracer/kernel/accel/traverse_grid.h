@@ -2,7 +2,7 @@
 // Algorithm for Ray Tracing", 1987): step from cell to cell across the nearest boundary.
 // Each boundary's t is computed afresh from its coordinate (not accumulated), primitives
 // sit in every cell their padded bounds overlap, and the walk stops early only when the
-// best hit lies before the cell's exit minus the pad (DESIGN.md rule 4).
+// best hit lies before the cell's exit minus the pad (docs/determinism.md rule 4).
 #pragma once
 #include "kernel/accel/primitive_hit.h"
 #include "kernel/base/float_to_int.h"

@@ -3,7 +3,7 @@
 // ray at t_min, test its primitives, and restart at the leaf's exit. Primitives sit in every
 // leaf their padded bounds overlap; the search stops early only when the best hit lies
 // before the leaf's exit minus the pad, so it can never miss a closer hit or a smaller id
-// at equal t in a later leaf (DESIGN.md rule 4).
+// at equal t in a later leaf (docs/determinism.md rule 4).
 #pragma once
 #include "kernel/accel/primitive_hit.h"
 

@@ -1,4 +1,4 @@
-// Deterministic transcendental functions (DESIGN.md rule 2): built only from + - * /,
+// Deterministic transcendental functions (docs/determinism.md rule 2): built only from + - * /,
 // sqrt, floor, comparisons and integer operations, so the host and CUDA give the same
 // bits. Each float function evaluates in double and rounds once; tests/extremes/test_detmath.cpp
 // measures the error against libm's double precision (bound: < 1 ulp, faithful rounding).

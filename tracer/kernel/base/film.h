@@ -1,4 +1,4 @@
-// Film accumulation in 64-bit fixed point (DESIGN.md rule 5). Each sample's radiance is
+// Film accumulation in 64-bit fixed point (docs/determinism.md rule 5). Each sample's radiance is
 // rounded to a multiple of 2^-32 and the integers are added; integer addition is
 // associative, so sums of sample ranges rendered apart (by threads, devices or machines)
 // add up to exactly the sum of all samples, and the merged image equals the whole render

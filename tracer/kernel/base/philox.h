@@ -1,6 +1,6 @@
 // Philox4x32-10 counter-based generator (Salmon et al., "Parallel random numbers: as easy
 // as 1, 2, 3", SC 2011; constants from Random123). A number is a pure function of
-// (key, counter): key = scene seed, counter = (pixel, sample, dimension, 0) (DESIGN.md rule 3).
+// (key, counter): key = scene seed, counter = (pixel, sample, dimension, 0) (docs/determinism.md rule 3).
 #pragma once
 #include "kernel/base/platform.h"
 

@@ -1,5 +1,5 @@
 // Portability layer for kernel code: the same header compiles as host C++ and as CUDA
-// device code. Only correctly rounded IEEE operations live here (DESIGN.md rule 1).
+// device code. Only correctly rounded IEEE operations live here (docs/determinism.md rule 1).
 #pragma once
 #include <cmath>
 #include <cstdint>

@@ -6,7 +6,7 @@
 // Sobol indices of one aligned block of 2^k, in some order, and every such block of a
 // (0,2)-sequence is a (0,k,2)-net, which Owen scrambling keeps: each pair's first 2^k points
 // put one point in every elementary interval of area 2^-k. Any sample is a pure function
-// of (seed, pixel, sample, dimension) (DESIGN.md rule 3).
+// of (seed, pixel, sample, dimension) (docs/determinism.md rule 3).
 #pragma once
 #include "kernel/base/philox.h"
 

@@ -2,7 +2,7 @@
 // tile loop and the CUDA grid) call. render_sample computes one sample of one pixel;
 // render_pixel adds a range of them into the pixel's fixed-point film sum (film.h), so a
 // pixel cannot depend on the thread, block, device or sample range that computes it
-// (DESIGN.md rule 5).
+// (docs/determinism.md rule 5).
 #pragma once
 #include "kernel/base/film.h"
 #include "kernel/integrator/debug_views.h"

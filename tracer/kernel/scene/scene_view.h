@@ -1,7 +1,7 @@
 // The scene as kernel code sees it: plain pointers to flat arrays, filled on the host or
 // copied to the device, and the primitive test every acceleration structure calls
 // (kernel/accel/trace.h dispatches the queries). The closest hit is the minimum of
-// (t, primitive id) compared lexicographically (DESIGN.md rule 4).
+// (t, primitive id) compared lexicographically (docs/determinism.md rule 4).
 #pragma once
 #include "kernel/accel/bvh_node.h"
 #include "kernel/accel/grid.h"
