@@ -82,7 +82,10 @@ TEST(GltfViewerDefaults, AnEmissiveTextureGlowsWhereItIsBrightAndReflectsEverywh
   // The emissive texture is white on its left half and black on its right: the left half of
   // the quad shows emission + albedo, the right half the albedo alone.
   const auto dir = test::temp_dir("emissive-texture");
-  write_image(test::image_from(8, 8, [](uint32_t x, uint32_t) { return x < 4 ? Vec3{1, 1, 1} : Vec3{0, 0, 0}; }),
+  write_image(test::image_from(8, 8,
+                               [](uint32_t x, uint32_t) {
+                                 return x < 4 ? Vec3{1, 1, 1} : Vec3{0, 0, 0};
+                               }),
               (dir / "glow.png").string());
   json doc = quad_gltf();
   doc["images"] = {{{"uri", "glow.png"}}};
@@ -117,10 +120,12 @@ json box_gltf(float sx, float sy, float sz) {
   test::GltfDoc g;
   std::vector<float> p;
   for (int k = 0; k < 8; ++k)
-    p.insert(p.end(), {3 + sx * ((k & 1) ? 0.5f : -0.5f), -2 + sy * ((k & 2) ? 0.5f : -0.5f), 5 + sz * ((k & 4) ? 0.5f : -0.5f)});
+    p.insert(p.end(), {3 + sx * ((k & 1) ? 0.5f : -0.5f), -2 + sy * ((k & 2) ? 0.5f : -0.5f),
+                       5 + sz * ((k & 4) ? 0.5f : -0.5f)});
   const std::vector<uint32_t> faces = {0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5, 0, 4, 5, 0, 5, 1,
                                        2, 3, 7, 2, 7, 6, 0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
-  g.push("meshes", {{"primitives", {{{"attributes", {{"POSITION", g.floats(p, "VEC3", 3, true)}}}, {"indices", g.indices(faces)}}}}});
+  g.push("meshes", {{"primitives",
+                     {{{"attributes", {{"POSITION", g.floats(p, "VEC3", 3, true)}}}, {"indices", g.indices(faces)}}}}});
   g.push("nodes", {{"mesh", 0}});
   g.doc["scenes"][0]["nodes"] = {0};
   return g.finish();
@@ -131,7 +136,8 @@ TEST(GltfViewerDefaults, TheDefaultCameraFillsTheFrameWithTheModel) {
   // frame along the side that binds (the camera fits 90 % of it) and never touch its border,
   // whether the model is long, tall, deep or flat.
   const auto dir = test::temp_dir("framing");
-  const std::vector<std::array<float, 3>> sizes = {{10, 0.5, 0.5}, {0.5, 10, 0.5}, {0.5, 0.5, 10}, {4, 0.05, 4}, {1, 1, 1}};
+  const std::vector<std::array<float, 3>> sizes = {
+      {10, 0.5, 0.5}, {0.5, 10, 0.5}, {0.5, 0.5, 10}, {4, 0.05, 4}, {1, 1, 1}};
   for (const auto& [sx, sy, sz] : sizes) {
     RenderOverrides ov;
     ov.width = 64;
@@ -144,7 +150,8 @@ TEST(GltfViewerDefaults, TheDefaultCameraFillsTheFrameWithTheModel) {
     uint32_t x0 = img.width, x1 = 0, y0 = img.height, y1 = 0;
     for (uint32_t y = 0; y < img.height; ++y)
       for (uint32_t x = 0; x < img.width; ++x)
-        if (pixel(img, x, y).x > 0.0f) x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+        if (pixel(img, x, y).x > 0.0f)
+          x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
     const std::string size = std::to_string(sx) + " x " + std::to_string(sy) + " x " + std::to_string(sz);
     ASSERT_LE(x0, x1) << size << ": the model is not in the frame";
     EXPECT_GT(x0, 0u) << size;

@@ -67,7 +67,8 @@ struct Affine {
   Affine after(const Affine& first) const {
     Affine r;
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) r.m[i][j] = m[i][0] * first.m[0][j] + m[i][1] * first.m[1][j] + m[i][2] * first.m[2][j];
+      for (int j = 0; j < 3; ++j)
+        r.m[i][j] = m[i][0] * first.m[0][j] + m[i][1] * first.m[1][j] + m[i][2] * first.m[2][j];
     r.t = point(first.t);
     return r;
   }
@@ -80,7 +81,8 @@ struct Affine {
   }
   // glTF's column-major matrix
   nlohmann::json gltf() const {
-    return {m[0][0], m[1][0], m[2][0], 0, m[0][1], m[1][1], m[2][1], 0, m[0][2], m[1][2], m[2][2], 0, t[0], t[1], t[2], 1};
+    return {m[0][0], m[1][0], m[2][0], 0, m[0][1], m[1][1], m[2][1], 0,
+            m[0][2], m[1][2], m[2][2], 0, t[0],    t[1],    t[2],    1};
   }
 };
 
@@ -204,7 +206,8 @@ nlohmann::json scene_document(const SceneSpec& spec) {
   for (const Mesh& m : spec.meshes) {
     std::vector<float> p, n, t, uv;
     for (size_t v = 0; v < m.p.size(); ++v) {
-      for (int c = 0; c < 3; ++c) p.push_back(float(m.p[v][c])), n.push_back(float(m.n[v][c])), t.push_back(float(m.t[v][c]));
+      for (int c = 0; c < 3; ++c)
+        p.push_back(float(m.p[v][c])), n.push_back(float(m.n[v][c])), t.push_back(float(m.t[v][c]));
       t.push_back(float(m.w[v]));
       uv.push_back(float(m.uv[v][0])), uv.push_back(float(m.uv[v][1]));
     }
@@ -212,15 +215,18 @@ nlohmann::json scene_document(const SceneSpec& spec) {
                                  {"NORMAL", g.floats(n, "VEC3", 3)},
                                  {"TEXCOORD_0", g.floats(uv, "VEC2", 2)}};
     if (spec.tangents) attributes["TANGENT"] = g.floats(t, "VEC4", 4);
-    g.push("meshes", {{"primitives", {{{"attributes", attributes}, {"indices", g.indices(m.indices)}, {"material", 0}}}}});
+    g.push("meshes",
+           {{"primitives", {{{"attributes", attributes}, {"indices", g.indices(m.indices)}, {"material", 0}}}}});
   }
   std::vector<int> children;
   for (const Instance& in : spec.instances) {
     int child = -1;
     for (size_t k = in.chain.size(); k-- > 0;) {
       nlohmann::json node = {{"matrix", in.chain[k].gltf()}};
-      if (child < 0) node["mesh"] = in.mesh;
-      else node["children"] = {child};
+      if (child < 0)
+        node["mesh"] = in.mesh;
+      else
+        node["children"] = {child};
       child = g.push("nodes", node);
     }
     if (child < 0) child = g.push("nodes", {{"mesh", in.mesh}});
@@ -233,9 +239,8 @@ nlohmann::json scene_document(const SceneSpec& spec) {
   g.push("cameras", {{"type", "perspective"}, {"perspective", {{"yfov", 0.7}, {"aspectRatio", 1.0}, {"znear", 0.01}}}});
   children.push_back(g.push("nodes", {{"camera", 0}, {"matrix", view.rounded().gltf()}}));
   g.doc["extensions"]["KHR_lights_punctual"]["lights"] = {{{"type", "point"}, {"intensity", 40.0}}};
-  children.push_back(g.push(
-      "nodes", {{"translation", {spec.light[0], spec.light[1], spec.light[2]}},
-                {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}));
+  children.push_back(g.push("nodes", {{"translation", {spec.light[0], spec.light[1], spec.light[2]}},
+                                      {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}));
   const int root = g.push("nodes", {{"matrix", spec.root.gltf()}, {"children", children}});
   g.doc["scenes"][0]["nodes"] = {root};
   return g.finish();
@@ -251,7 +256,8 @@ void write_bumps(const std::filesystem::path& dir) {
   write_image(img, (dir / "bumps.png").string());
 }
 
-Image render(const std::filesystem::path& dir, const std::string& name, const SceneSpec& spec, IntegratorKind integrator) {
+Image render(const std::filesystem::path& dir, const std::string& name, const SceneSpec& spec,
+             IntegratorKind integrator) {
   const std::string file = test::write_gltf(dir / name, scene_document(spec));
   RenderOverrides ov;
   ov.width = 48;
@@ -293,7 +299,8 @@ SceneSpec framed(std::vector<Mesh> meshes, std::vector<Instance> instances, cons
     for (const D3& p : m.p)
       for (int c = 0; c < 3; ++c) lo[c] = std::min(lo[c], p[c]), hi[c] = std::max(hi[c], p[c]);
   const D3 centre = {(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2};
-  const double r = std::sqrt(dot3({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}, {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]})) / 2;
+  const double r =
+      std::sqrt(dot3({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}, {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]})) / 2;
   SceneSpec s;
   s.meshes = std::move(meshes);
   s.instances = std::move(instances);
@@ -352,22 +359,23 @@ TEST(TransformInvariance, APlacedMeshShadesAsItsTwinTransformedInDouble) {
   write_bumps(dir);
   for (const bool mirror_v : {false, true})
     for (const bool tangents : {true, false}) {
-    const Mesh mesh = saddle(12, mirror_v);
-    for (const auto& [name, a] : placements()) {
-      const Mesh twin = baked(tangents ? mesh : with_computed_tangents(mesh), a);
-      SceneSpec placed = framed({mesh}, {{0, {a}}}, {twin});
-      placed.tangents = tangents;
-      SceneSpec baked_spec = placed;
-      baked_spec.tangents = true;
-      baked_spec.meshes = {twin};
-      baked_spec.instances = {{0, {}}};
-      for (const IntegratorKind integrator : {IntegratorKind::Normals, IntegratorKind::Whitted}) {
-        const Image x = render(dir, "placed.gltf", placed, integrator), y = render(dir, "twin.gltf", baked_spec, integrator);
-        EXPECT_LE(fraction_apart(x, y), kMostPixels) << name << (mirror_v ? ", mirrored uvs" : "")
-                                                     << (tangents ? "" : ", tangents from the uvs") << ", integrator "
-                                                     << int(integrator);
+      const Mesh mesh = saddle(12, mirror_v);
+      for (const auto& [name, a] : placements()) {
+        const Mesh twin = baked(tangents ? mesh : with_computed_tangents(mesh), a);
+        SceneSpec placed = framed({mesh}, {{0, {a}}}, {twin});
+        placed.tangents = tangents;
+        SceneSpec baked_spec = placed;
+        baked_spec.tangents = true;
+        baked_spec.meshes = {twin};
+        baked_spec.instances = {{0, {}}};
+        for (const IntegratorKind integrator : {IntegratorKind::Normals, IntegratorKind::Whitted}) {
+          const Image x = render(dir, "placed.gltf", placed, integrator),
+                      y = render(dir, "twin.gltf", baked_spec, integrator);
+          EXPECT_LE(fraction_apart(x, y), kMostPixels)
+              << name << (mirror_v ? ", mirrored uvs" : "") << (tangents ? "" : ", tangents from the uvs")
+              << ", integrator " << int(integrator);
+        }
       }
-    }
     }
   std::filesystem::remove_all(dir);
 }
@@ -381,8 +389,10 @@ TEST(TransformInvariance, ANodeHierarchyRendersAsItsTransformsBakedIntoCopies) {
   const Affine outer = rotation({0.2, 1, 0.3}, 50).after(scaling(1.2, 0.8, 1.0)).rounded();
   Affine outer_moved = outer;
   outer_moved.t = {0.3, -0.2, 0.5};
-  const Affine inner = linear({1, 0.3, 0, 0, 1, 0, 0.2, 0, 0.9}, {1.5, 0, -0.5}).after(rotation({1, 0, 0}, -60)).rounded();
-  const Affine second = linear({0.7, 0, 0, 0, 0.7, 0, 0, 0, 0.7}, {-1.8, 0.4, 0.2}).after(rotation({0, 1, 0}, 120)).rounded();
+  const Affine inner =
+      linear({1, 0.3, 0, 0, 1, 0, 0.2, 0, 0.9}, {1.5, 0, -0.5}).after(rotation({1, 0, 0}, -60)).rounded();
+  const Affine second =
+      linear({0.7, 0, 0, 0, 0.7, 0, 0, 0, 0.7}, {-1.8, 0.4, 0.2}).after(rotation({0, 1, 0}, 120)).rounded();
   const std::vector<Mesh> world = {baked(mesh, outer_moved.after(inner)), baked(mesh, second)};
   const SceneSpec tree = framed({mesh}, {{0, {outer_moved, inner}}, {0, {second}}}, world);
   SceneSpec copies = tree;
@@ -408,9 +418,9 @@ TEST(TransformInvariance, ASceneMovedRigidlyRendersTheSameAndMirroredTheMirrorIm
   moved.root = rotation({0.3, 1, 0.2}, 57).rounded();
   moved.root.t = {5, -3, 2};
   const D3 h = unit({1, 0.2, 0.1});
-  const Affine householder = linear({1 - 2 * h[0] * h[0], -2 * h[0] * h[1], -2 * h[0] * h[2], -2 * h[1] * h[0],
-                                     1 - 2 * h[1] * h[1], -2 * h[1] * h[2], -2 * h[2] * h[0], -2 * h[2] * h[1],
-                                     1 - 2 * h[2] * h[2]});
+  const Affine householder =
+      linear({1 - 2 * h[0] * h[0], -2 * h[0] * h[1], -2 * h[0] * h[2], -2 * h[1] * h[0], 1 - 2 * h[1] * h[1],
+              -2 * h[1] * h[2], -2 * h[2] * h[0], -2 * h[2] * h[1], 1 - 2 * h[2] * h[2]});
   mirrored.root = rotation({0, 0, 1}, 20).after(householder).rounded();
   mirrored.root.t = {-1, 2, 0.5};
   for (const IntegratorKind integrator : {IntegratorKind::Whitted, IntegratorKind::Albedo}) {
@@ -441,7 +451,10 @@ TEST(TransformInvariance, AJsonMeshRotatedShadesAsItsRotatedTwin) {
       "render": {"integrator": "whitted", "sampler": "center", "max_depth": 1},
       "materials": {"m": {"type": "phong", "diffuse": [0.6, 0.6, 0.6], "specular": [0.4, 0.4, 0.4], "shininess": 30}},
       "lights": [{"type": "point", "position": [0.8, 0.5, 1.5], "intensity": [3, 3, 3]}]})");
-    nlohmann::json mesh = {{"type", "mesh"}, {"material", "m"}, {"positions", list(ps)}, {"normals", list(ns)},
+    nlohmann::json mesh = {{"type", "mesh"},
+                           {"material", "m"},
+                           {"positions", list(ps)},
+                           {"normals", list(ns)},
                            {"indices", {{0, 1, 2}, {0, 2, 3}}}};
     if (transformed) mesh["transform"] = {{{"rotate", {{"axis", {0, 0, 1}}, {"degrees", 40}}}}};
     doc["shapes"] = nlohmann::json::array({mesh});  // {mesh} alone is a copy under clang

@@ -62,7 +62,8 @@ inline nlohmann::json triangle_gltf() {
 // data URI by finish().
 class GltfDoc {
  public:
-  nlohmann::json doc = {{"asset", {{"version", "2.0"}}}, {"scene", 0}, {"scenes", {{{"nodes", nlohmann::json::array()}}}}};
+  nlohmann::json doc = {
+      {"asset", {{"version", "2.0"}}}, {"scene", 0}, {"scenes", {{{"nodes", nlohmann::json::array()}}}}};
 
   // A float accessor of `type` ("VEC2", "VEC3", "VEC4"); with bounds, its min and max per component.
   int floats(const std::vector<float>& values, const char* type, int components, bool bounds = false) {
@@ -74,7 +75,7 @@ class GltfDoc {
       std::vector<float> lo(values.begin(), values.begin() + components), hi = lo;
       for (size_t i = 0; i < values.size(); ++i)
         lo[i % components] = std::min(lo[i % components], values[i]),
-                        hi[i % components] = std::max(hi[i % components], values[i]);
+               hi[i % components] = std::max(hi[i % components], values[i]);
       a["min"] = lo;
       a["max"] = hi;
     }

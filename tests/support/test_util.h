@@ -138,8 +138,8 @@ inline std::string source_path(const std::string& rel) { return std::string(TRAC
 inline std::vector<std::filesystem::path> shipped_scenes() {
   std::vector<std::filesystem::path> out;
   const std::filesystem::path root(source_path("scenes")), large = root / "large", generated = root / "generated";
-  for (auto e = std::filesystem::recursive_directory_iterator(root); e != std::filesystem::recursive_directory_iterator();
-       ++e) {
+  for (auto e = std::filesystem::recursive_directory_iterator(root);
+       e != std::filesystem::recursive_directory_iterator(); ++e) {
     if (e->path() == generated) e.disable_recursion_pending();
     if (e->path().extension() == ".json" && e->path().parent_path() != large && e->path().parent_path() != generated)
       out.push_back(e->path());

@@ -16,19 +16,21 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-const std::string kTriangleBytes = test::bytes_of(std::vector<float>{-1, -1, 0, 1, -1, 0, 0, 1, 0}) +
-                                   test::bytes_of(std::vector<uint16_t>{0, 1, 2});
+const std::string kTriangleBytes =
+    test::bytes_of(std::vector<float>{-1, -1, 0, 1, -1, 0, 0, 1, 0}) + test::bytes_of(std::vector<uint16_t>{0, 1, 2});
 
 std::string percent_encoded(const std::string& bytes) {
   static const char* hex = "0123456789ABCDEF";
   std::string out;
-  for (unsigned char c : bytes) out += std::isalnum(c) ? std::string(1, char(c)) : std::string{'%', hex[c >> 4], hex[c & 15]};
+  for (unsigned char c : bytes)
+    out += std::isalnum(c) ? std::string(1, char(c)) : std::string{'%', hex[c >> 4], hex[c & 15]};
   return out;
 }
 
 // The triangle's buffer with three normals (0, 0, 1) after it, accessor 2 reading them.
 json with_normals(json doc) {
-  const std::string bytes = kTriangleBytes + std::string(2, '\0') + test::bytes_of(std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1});
+  const std::string bytes =
+      kTriangleBytes + std::string(2, '\0') + test::bytes_of(std::vector<float>{0, 0, 1, 0, 0, 1, 0, 0, 1});
   doc["buffers"][0] = {{"byteLength", bytes.size()}, {"uri", test::data_uri(bytes)}};
   doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 44}, {"byteLength", 36}});
   doc["accessors"].push_back({{"bufferView", 2}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}});
@@ -55,11 +57,17 @@ std::vector<ValidFile> valid_files() {
              d["accessors"][0]["count"] = 3.0;
              d["scene"] = 0.0;
            }),
-      gltf("unused-buffer-without-uri.gltf", [](json& d) { d["buffers"].push_back({{"byteLength", 12}}); }),
-      gltf("percent-encoded-data-uri.gltf",
-           [](json& d) { d["buffers"][0]["uri"] = "data:application/octet-stream," + percent_encoded(kTriangleBytes); }),
+      gltf("unused-buffer-without-uri.gltf",
+           [](json& d) {
+             d["buffers"].push_back({{"byteLength", 12}});
+           }),
+      gltf(
+          "percent-encoded-data-uri.gltf",
+          [](json& d) { d["buffers"][0]["uri"] = "data:application/octet-stream," + percent_encoded(kTriangleBytes); }),
       gltf("unused-accessor-of-unknown-type.gltf",
-           [](json& d) { d["accessors"].push_back({{"componentType", 5126}, {"count", 1}, {"type", "MAT5"}}); }),
+           [](json& d) {
+             d["accessors"].push_back({{"componentType", 5126}, {"count", 1}, {"type", "MAT5"}});
+           }),
       gltf("index-accessor-without-buffer-view.gltf",
            [](json& d) {  // zeros: one triangle without area, left out
              d["accessors"].push_back({{"componentType", 5123}, {"count", 3}, {"type", "SCALAR"}});
@@ -78,15 +86,16 @@ std::vector<ValidFile> valid_files() {
        }},
       gltf("quantized-mesh.gltf",
            [](json& d) {  // KHR_mesh_quantization: short positions under a scale, byte normals
-             const std::string bytes = test::bytes_of(std::vector<int16_t>{-100, -100, 0, 0, 100, -100, 0, 0, 0, 100, 0, 0}) +
-                                       test::bytes_of(std::vector<uint16_t>{0, 1, 2, 0}) +
-                                       test::bytes_of(std::vector<int8_t>{0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0});
+             const std::string bytes =
+                 test::bytes_of(std::vector<int16_t>{-100, -100, 0, 0, 100, -100, 0, 0, 0, 100, 0, 0}) +
+                 test::bytes_of(std::vector<uint16_t>{0, 1, 2, 0}) +
+                 test::bytes_of(std::vector<int8_t>{0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0});
              d["buffers"][0] = {{"byteLength", bytes.size()}, {"uri", test::data_uri(bytes)}};
              d["bufferViews"] = {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 24}, {"byteStride", 8}},
                                  {{"buffer", 0}, {"byteOffset", 24}, {"byteLength", 6}},
                                  {{"buffer", 0}, {"byteOffset", 32}, {"byteLength", 12}, {"byteStride", 4}}};
-             d["accessors"][0] = {{"bufferView", 0}, {"componentType", 5122}, {"count", 3}, {"type", "VEC3"},
-                                  {"min", {-100, -100, 0}}, {"max", {100, 100, 0}}};
+             d["accessors"][0] = {{"bufferView", 0}, {"componentType", 5122},  {"count", 3},
+                                  {"type", "VEC3"},  {"min", {-100, -100, 0}}, {"max", {100, 100, 0}}};
              d["accessors"].push_back(
                  {{"bufferView", 2}, {"componentType", 5120}, {"normalized", true}, {"count", 3}, {"type", "VEC3"}});
              d["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 2;
@@ -114,14 +123,16 @@ TEST(GltfValidFiles, EveryConstructTheSpecificationAllowsLoads) {
 
 TEST(GltfValidFiles, TheKhronosValidatorFindsNoErrorInThem) {
   const std::string package = test::source_path("scenes/generated/gltf-validator");
-  if (test::run_command("command -v node") != 0) GTEST_SKIP() << "node is not installed (ci/install-deps.sh installs it)";
+  if (test::run_command("command -v node") != 0)
+    GTEST_SKIP() << "node is not installed (ci/install-deps.sh installs it)";
   if (!fs::exists(package + "/index.js"))
     GTEST_SKIP() << package << " is absent: bash ci/fetch-gltf-validator.sh fetches it from the npm registry";
   const auto dir = test::temp_dir("gltf-validator");
   std::string files;
   for (const ValidFile& f : valid_files()) files.append(" ").append(f.write(dir));
   std::string out;
-  ASSERT_EQ(test::run_command("node " + test::source_path("tests/support/gltf_validate.js") + " " + package + files, &out), 0)
+  ASSERT_EQ(
+      test::run_command("node " + test::source_path("tests/support/gltf_validate.js") + " " + package + files, &out), 0)
       << out;
   for (const ValidFile& f : valid_files()) EXPECT_NE(out.find(f.name + ": 0 errors"), std::string::npos) << out;
   fs::remove_all(dir);
@@ -152,10 +163,12 @@ TEST(GltfValidFiles, RefusalsNameTheJsonPathInTheReadersWords) {
   expect_refused(test::write_gltf(dir / "d.gltf", doc), "buffers[0].uri: a data URI with a '%'");
   doc = test::triangle_gltf();
   doc["extensionsRequired"] = {"KHR_mesh_quantization", "EXT_meshopt_compression"};
-  expect_refused(test::write_gltf(dir / "e.gltf", doc), "extensionsRequired[1]: the file requires EXT_meshopt_compression");
+  expect_refused(test::write_gltf(dir / "e.gltf", doc),
+                 "extensionsRequired[1]: the file requires EXT_meshopt_compression");
   doc = test::triangle_gltf();
   doc["buffers"][0]["uri"] = "missing.bin";
-  expect_refused(test::write_gltf(dir / "g.gltf", doc), "buffers[0].uri: " + (dir / "missing.bin").string() + ": no such file");
+  expect_refused(test::write_gltf(dir / "g.gltf", doc),
+                 "buffers[0].uri: " + (dir / "missing.bin").string() + ": no such file");
   doc = test::triangle_gltf();
   doc["accessors"][0]["count"] = 2.5;
   expect_refused(test::write_gltf(dir / "f.gltf", doc), "accessors[0].count: expected a whole number >= 0, got 2.5");

@@ -143,8 +143,8 @@ void check_external_uris(const Json& root, const std::string& path) {
   if (!absolute.empty())
     fail_at(path, absolute,
             "an absolute path; buffers and images must be in the glTF file's folder, named relative to it");
-  const std::string scheme = first_uri(
-      root, [&](const std::string& text) { return external(text) && text.find(':') != std::string::npos; });
+  const std::string scheme =
+      first_uri(root, [&](const std::string& text) { return external(text) && text.find(':') != std::string::npos; });
   if (!scheme.empty())
     fail_at(path, scheme, "names a URI scheme; the reader reads data URIs and files in the glTF file's folder");
 }
@@ -174,7 +174,8 @@ std::string json_text(const std::string& bytes, bool binary, const std::string& 
     throw InputError(path + ": a binary glTF file whose header gives its length as " + std::to_string(header[2]) +
                      " bytes; it has " + std::to_string(bytes.size()));
   if (header[1] != 2)
-    throw InputError(path + ": a binary glTF file of version " + std::to_string(header[1]) + "; the reader reads version 2");
+    throw InputError(path + ": a binary glTF file of version " + std::to_string(header[1]) +
+                     "; the reader reads version 2");
   if (header[3] > bytes.size() - 20 || header[4] != 0x4E4F534Au)
     throw InputError(path + ": a binary glTF file whose first chunk is not JSON of at most the " +
                      std::to_string(bytes.size() - 20) + " bytes that follow the header");
@@ -221,8 +222,8 @@ GltfFile read_gltf_file(const std::string& bytes, const std::string& path) {
     throw InputError(path + ": " + uri_path_of(root, confinement.refused) + confinement.refusal);
   if (!ok) {  // past every check above: what the library itself says, marked as its words
     const std::string why = trimmed(err.empty() ? warn : err);
-    throw InputError(path + ": not a glTF 2.0 file the reader accepts (tinygltf: " +
-                     (why.empty() ? "no reason given" : why) + ")");
+    throw InputError(
+        path + ": not a glTF 2.0 file the reader accepts (tinygltf: " + (why.empty() ? "no reason given" : why) + ")");
   }
   for (const int a : viewless) file.model.accessors[static_cast<size_t>(a)].bufferView = -1;
   if (!warn.empty()) file.notes.push_back(trimmed(warn));

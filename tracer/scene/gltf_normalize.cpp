@@ -39,7 +39,9 @@ std::string base64_data_uri(const std::string& uri, const std::string& file, con
       continue;
     }
     const int hi = i + 2 < uri.size() ? hex_digit(uri[i + 1]) : -1, lo = hi >= 0 ? hex_digit(uri[i + 2]) : -1;
-    if (lo < 0) fail_at(file, path, "a data URI with a '%' at character " + std::to_string(i) + " not followed by two hex digits");
+    if (lo < 0)
+      fail_at(file, path,
+              "a data URI with a '%' at character " + std::to_string(i) + " not followed by two hex digits");
     bytes += static_cast<char>(hi * 16 + lo);
     i += 2;
   }

@@ -55,7 +55,7 @@ CameraSpec framing_camera(const Scene& scene, double aspect) {
   const double tan_y = det_tan(kFramingVfov * 0.5f * (kPi / 180.0f)) * kFramingFill, tan_x = tan_y * aspect;
   struct Extent {
     double tan, plus = -1e300, minus = -1e300;  // max(x / T - z), max(-x / T - z)
-    double low = -1e300, high = 1e300;           // the offsets a that fit, for the distance found
+    double low = -1e300, high = 1e300;          // the offsets a that fit, for the distance found
   } across{tan_x}, upward{tan_y};
   double nearest = -1e300;  // max(-z): D must exceed it
   std::vector<Vec3> corners;
@@ -68,15 +68,16 @@ CameraSpec framing_camera(const Scene& scene, double aspect) {
     nearest = std::max(nearest, -z);
   }
   const double extent = std::max<double>(length(b.hi - b.lo), 1e-3);
-  const double distance = std::max({(across.plus + across.minus) / 2, (upward.plus + upward.minus) / 2,
-                                    nearest + 1e-3 * extent});
+  const double distance =
+      std::max({(across.plus + across.minus) / 2, (upward.plus + upward.minus) / 2, nearest + 1e-3 * extent});
   for (const Vec3& c : corners) {
     const Vec3 d = c - centre;
     const double z = distance + dot(d, forward);
     for (auto [e, v] : {std::pair{&across, double(dot(d, right))}, std::pair{&upward, double(dot(d, up))}})
       e->low = std::max(e->low, v - e->tan * z), e->high = std::min(e->high, v + e->tan * z);
   }
-  const float a = static_cast<float>((across.low + across.high) / 2), h = static_cast<float>((upward.low + upward.high) / 2);
+  const float a = static_cast<float>((across.low + across.high) / 2),
+              h = static_cast<float>((upward.low + upward.high) / 2);
   CameraSpec spec{};
   spec.from = centre + right * a + up * h - forward * static_cast<float>(distance);
   spec.to = spec.from + forward;
@@ -116,8 +117,8 @@ Scene load_gltf_scene(const std::string& bytes, const std::string& path, const R
   const Json render = {{"integrator", "path"}, {"spp", 64}, {"sampler", "sobol"}, {"max_depth", 8}};
   scene.settings = read_settings(&render, film, path, overrides, scene.report.used_types);
 
-  CameraSpec spec = camera ? camera->spec
-                           : framing_camera(scene, double(scene.settings.width) / double(scene.settings.height));
+  CameraSpec spec =
+      camera ? camera->spec : framing_camera(scene, double(scene.settings.width) / double(scene.settings.height));
   spec.focus_distance = length(spec.to - spec.from);
   scene.camera = make_camera(spec, scene.settings.width, scene.settings.height);
 
@@ -141,10 +142,10 @@ Scene load_gltf_scene(const std::string& bytes, const std::string& path, const R
     std::snprintf(text, sizeof text, "%.9g,%.9g,%.9g", v.x, v.y, v.z);
     return std::string(text);
   };
-  info.push_back(camera ? "camera " + std::to_string(camera->index) +
-                              (camera->name.empty() ? "" : " \"" + camera->name + "\"")
-                        : "camera (none in the file: one framing the model) from " + triple(spec.from) + " to " +
-                              triple(spec.to) + " up " + triple(spec.up) + " vfov " + std::to_string(int(kFramingVfov)));
+  info.push_back(
+      camera ? "camera " + std::to_string(camera->index) + (camera->name.empty() ? "" : " \"" + camera->name + "\"")
+             : "camera (none in the file: one framing the model) from " + triple(spec.from) + " to " + triple(spec.to) +
+                   " up " + triple(spec.up) + " vfov " + std::to_string(int(kFramingVfov)));
   for (const std::string& s : contents.ignored) info.push_back("ignored " + s);
   finish_scene(scene, overrides);
   return scene;

@@ -113,10 +113,10 @@ const std::map<std::string, std::vector<Rule>>& rules() {
 }
 
 // The extensions the reader understands (docs/gltf.md); a file that requires another is refused.
-const std::vector<std::string> kReadExtensions = {
-    "KHR_lights_punctual",        "KHR_materials_emissive_strength", "KHR_materials_ior",
-    "KHR_materials_transmission", "KHR_materials_specular",          "KHR_texture_transform",
-    "KHR_mesh_quantization"};  // integer attributes: the accessors read every component type
+const std::vector<std::string>
+    kReadExtensions = {"KHR_lights_punctual",        "KHR_materials_emissive_strength", "KHR_materials_ior",
+                       "KHR_materials_transmission", "KHR_materials_specular",          "KHR_texture_transform",
+                       "KHR_mesh_quantization"};  // integer attributes: the accessors read every component type
 
 // The properties an object must have (glTF 2.0's schema, "required").
 const std::map<std::string, std::vector<const char*>>& required() {

@@ -17,7 +17,7 @@ struct MeshTriangle {
   bool has_tangents = false;  // per-vertex tangents (mesh_tangents.h)
   Vec3 tangent[3];
   float bitangent_sign = 1.0f;  // glTF's TANGENT w: the bitangent is bitangent_sign * (n x t)
-  int32_t mtl = -1;  // the face's material in the OBJ's MTL file, or -1
+  int32_t mtl = -1;             // the face's material in the OBJ's MTL file, or -1
 };
 
 // A material of an OBJ's MTL file, as written there (tracer/mtl_materials.cpp maps it).

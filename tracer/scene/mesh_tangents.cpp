@@ -27,8 +27,8 @@ void compute_vertex_tangents(std::vector<MeshTriangle>& tris) {
     // dp/du x dp/dv = (e1 x e2) / det: n x dp/du turns to dp/dv where the normals face the
     // side of e1 x e2 and det > 0, or neither.
     const Vec3 e1 = t.p[1] - t.p[0], e2 = t.p[2] - t.p[0];
-    const float det = (t.uv[1][0] - t.uv[0][0]) * (t.uv[2][1] - t.uv[0][1]) -
-                      (t.uv[2][0] - t.uv[0][0]) * (t.uv[1][1] - t.uv[0][1]);
+    const float det =
+        (t.uv[1][0] - t.uv[0][0]) * (t.uv[2][1] - t.uv[0][1]) - (t.uv[2][0] - t.uv[0][0]) * (t.uv[1][1] - t.uv[0][1]);
     const Vec3 facing = t.has_normals ? t.n[0] + t.n[1] + t.n[2] : cross(e1, e2);
     t.bitangent_sign = (det < 0.0f) != (dot(facing, cross(e1, e2)) < 0.0f) ? -1.0f : 1.0f;
     t.has_tangents = true;
