@@ -20,7 +20,7 @@ test_packages=(
   strace                                  # stops a command at its Nth rename with a signal (commit tests)
   python3                                 # ci/mutation.py, the mutation campaign
   assimp-testmodels                       # glTF files, broken ones included: the glTF reader's corpus test
-  nodejs npm                              # the Khronos glTF validator (ci/fetch-gltf-validator.sh), the bunny
+  nodejs npm                              # the Khronos glTF validator, the bunny; skipped where node and npm run already
   fonts-dejavu-core                       # the font of the bench converge plot
   libembree-dev                           # the Embree row of bench rays (benchmark only)
   clang libomp-dev libclang-rt-14-dev     # the second compiler, its OpenMP runtime, libFuzzer and sanitizers (ci/extra.sh sanitize)
@@ -32,6 +32,9 @@ case "${1:-all}" in
 esac
 missing=()
 for p in "${packages[@]}"; do
+  # A machine whose Node.js comes from elsewhere (NodeSource's nodejs bundles npm, and Debian's npm
+  # package conflicts with it) already has what the validator needs.
+  case "$p" in nodejs | npm) command -v node >/dev/null && command -v npm >/dev/null && continue ;; esac
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -eq 0 ]; then
