@@ -33,7 +33,7 @@ void check_plane(const std::string& light, bool attenuated, bool path = false) {
   const Scene scene = test::scene_from(text);
   RenderStats stats;
   const Image img = render_cpu(scene, 2, stats);
-  const PointLight& l = scene.lights[0];
+  const Light& l = scene.lights[0];
   const double kd[3] = {0.5, 0.6, 0.7}, I[3] = {l.intensity.x, l.intensity.y, l.intensity.z};
   int lit = 0;
   double worst = 0.0;

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "chi2.h"
-#include "light_fixture.h"
 #include "kernel/camera/sampler.h"
+#include "kernel/light/light.h"
 #include "kernel/shading/bsdf.h"
-#include "kernel/shading/light_sampling.h"
+#include "light_fixture.h"
 #include "test_util.h"
 
 namespace tracer {

@@ -1,5 +1,5 @@
 // Chi-square goodness-of-fit tests of the cube-map sky's sampling (the path integrator's
-// environment light): directions binned by cells of the faces against sky_direction_pdf
+// environment light): directions binned by cells of the faces against environment_direction_pdf
 // integrated over each bin, E[1 / pdf] against the whole sphere, and a lone bright texel
 // that must still give its cell a probability. Significance and sample count as in
 // test_sampling_chi2.cpp.
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "chi2.h"
-#include "kernel/shading/light_sampling.h"
+#include "kernel/light/light.h"
 #include "test_util.h"
 
 namespace tracer {
@@ -30,7 +30,7 @@ Scene sky_only_scene(const std::filesystem::path& dir, const std::string& faces)
 
 // A cube-map sky with a different level on each face and one bright texel: directions are
 // binned by quarter cells of the faces (2 x 2 per cell), each bin expecting the integral of
-// sky_direction_pdf over it (midpoint rule in face coordinates, dw = dA / r^3); E[1 / pdf]
+// environment_direction_pdf over it (midpoint rule in face coordinates, dw = dA / r^3); E[1 / pdf]
 // is the whole sphere, 4 pi.
 TEST(SamplingChi2, CubeMapSkyCellsByTheirDensity) {
   const auto dir = test::temp_dir("sky-chi2");
@@ -42,14 +42,14 @@ TEST(SamplingChi2, CubeMapSkyCellsByTheirDensity) {
   const Scene scene = sky_only_scene(dir, faces);
   std::filesystem::remove_all(dir);
   const SceneView view = scene.view();
-  ASSERT_EQ(view.sky_light, 0u);
+  ASSERT_EQ(view.environment_light, 0u);
   ASSERT_EQ(view.sky_cells_per_side, uint32_t(kSize));
   std::vector<double> observed(6 * kBinsPerSide * kBinsPerSide, 0.0), expected(observed.size(), 0.0);
   test::InputStream s{17};
   double inverse_pdf = 0, inverse_pdf2 = 0;
   for (int i = 0; i < kSamples; ++i) {
     const float u1 = s.next(), u2 = s.next(), cell_u = s.next();
-    const LightSample ls = sample_light(view, view.sky_light, {0, 0, 0}, u1, u2, cell_u);
+    const LightSample ls = sample_light(view, view.environment_light, {0, 0, 0}, u1, u2, cell_u);
     ASSERT_TRUE(ls.valid);
     ASSERT_NEAR(length(ls.wi), 1.0f, 1e-6f);
     float u, v;
@@ -69,7 +69,7 @@ TEST(SamplingChi2, CubeMapSkyCellsByTheirDensity) {
             const double a = -1 + 2 * (bx + (i + 0.5) / kQuad) / kBinsPerSide,
                          b = -1 + 2 * (by + (j + 0.5) / kQuad) / kBinsPerSide;
             const double r2 = 1 + a * a + b * b, area = 4.0 / (kBinsPerSide * kBinsPerSide * kQuad * kQuad);
-            p += sky_direction_pdf(view, normalize(cube_direction(face, float(a), float(b)))) * area /
+            p += environment_direction_pdf(view, normalize(cube_direction(face, float(a), float(b)))) * area /
                  (r2 * std::sqrt(r2));
           }
         expected[(face * kBinsPerSide + by) * kBinsPerSide + bx] = kSamples * p;
@@ -91,10 +91,10 @@ TEST(SamplingChi2, CubeMapSkyCellSeesALoneTexelOffItsCentre) {
   const Scene scene = sky_only_scene(dir, faces);
   std::filesystem::remove_all(dir);
   const SceneView view = scene.view();
-  ASSERT_EQ(view.sky_light, 0u) << "the sky has a sampling distribution";
+  ASSERT_EQ(view.environment_light, 0u) << "the sky has a sampling distribution";
   ASSERT_EQ(view.sky_cells_per_side, 128u);
   const float u = 0.5f / kSize, v = 1.0f - 1.5f / kSize;  // texel (0, 1)'s centre
-  EXPECT_GT(sky_direction_pdf(view, normalize(cube_direction(0, 2 * u - 1, 2 * v - 1))), 0.0f);
+  EXPECT_GT(environment_direction_pdf(view, normalize(cube_direction(0, 2 * u - 1, 2 * v - 1))), 0.0f);
 }
 
 }  // namespace

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "chi2.h"
-#include "kernel/shading/light_sampling.h"
+#include "kernel/light/light.h"
 #include "light_fixture.h"
 
 namespace tracer {

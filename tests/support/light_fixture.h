@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "kernel/shading/light_sampling.h"
+#include "kernel/light/light.h"
 #include "scene/scene.h"
 #include "test_util.h"
 
@@ -60,7 +60,7 @@ inline void expect_consistent_light_samples(const LightFixture& fx, Vec3 from, V
     if (!ls.valid) continue;
     inverse_pdf.add(1.0 / ls.pdf);
     ASSERT_TRUE(std::isfinite(ls.pdf) && ls.pdf > 0.0f && is_finite(ls.wi) && std::isfinite(ls.distance));
-    ASSERT_EQ(light_pdf(fx.view, 0, from, ls.wi, ls.distance, ng), ls.pdf) << u1 << " " << u2;
+    ASSERT_EQ(shape_light_pdf(fx.view, 0, from, ls.wi, ls.distance, ng), ls.pdf) << u1 << " " << u2;
     if (omega > 0.0f) {
       ASSERT_EQ(ls.pdf, 1.0f / omega);
     }

@@ -11,7 +11,7 @@
 
 #include "image/image_io.h"
 #include "io/input_error.h"
-#include "kernel/shading/light_sources.h"
+#include "kernel/light/light.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
 

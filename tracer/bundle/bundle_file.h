@@ -14,7 +14,7 @@
 
 namespace tracer {
 
-constexpr uint32_t kBundleVersion = 2;  // 2: TriangleShading gained bitangent_sign
+constexpr uint32_t kBundleVersion = 3;            // 2: TriangleShading gained bitangent_sign; 3: Light gained its kind
 constexpr uint64_t kBundleMaxBytes = 1ull << 30;  // what a reader accepts
 
 struct BundleSection {

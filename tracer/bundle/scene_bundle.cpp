@@ -1,5 +1,6 @@
 #include "scene_bundle.h"
 
+#include "kernel/light/environment_light.h"
 #include "options/settings_check.h"
 
 namespace tracer {
@@ -13,7 +14,8 @@ SceneView without_pointers(SceneView view) {
 }
 
 // What the kernels divide by or index with, beside the arrays' own sizes: the grid's cells
-// (traverse_grid.h) and the sky's table (sky_sampling.h). "" when the view agrees with its arrays.
+// (traverse_grid.h), the environment's cells (environment_light.h) and the declared lights' kinds. "" when the view
+// agrees with its arrays.
 std::string view_violation(const SceneBundle& b) {
   const SceneView& v = b.scalars;
   if (v.settings.accel == AccelKind::Grid) {  // no grid: n = 0 and no cells; else 1 to 1024 cells an axis
@@ -35,10 +37,15 @@ std::string view_violation(const SceneBundle& b) {
   for (const uint32_t id : b.arrays.mirror_prims)
     if (id >= b.arrays.primitives.size())
       return "mirror_prims: primitive " + std::to_string(id) + " of " + std::to_string(b.arrays.primitives.size());
-  const uint64_t side = v.sky_cells_per_side;
-  if (!b.arrays.sky_cells.empty() && (side < 1 || side > 4096 || 6 * side * side != b.arrays.sky_cells.size()))
+  const uint32_t side = v.sky_cells_per_side;
+  if (!b.arrays.sky_cells.empty() &&
+      (side < 1 || side > 4096 || environment_cell_count(side) != b.arrays.sky_cells.size()))
     return "sky: " + std::to_string(side) + " cells per side, but " + std::to_string(b.arrays.sky_cells.size()) +
            " cells";
+  for (size_t i = 0; i < b.arrays.lights.size(); ++i)
+    if (!is_declared_kind(b.arrays.lights[i].kind))
+      return "lights[" + std::to_string(i) + "]: kind " +
+             std::to_string(static_cast<uint32_t>(b.arrays.lights[i].kind)) + " is not a declared light's";
   return "";
 }
 

@@ -1,9 +1,8 @@
 // `tracer bench trade SCENE`: for each knob of the path integrator (NEE, sampler, Fresnel
-// model, Russian roulette depth, max_depth, sky sampling under a cube-map sky, mirror images where the scene has a flat
-// mirror, triangle test), the time and the error
-// of a render at a fixed sample budget, and the error of a render given the baseline's time (its spp scaled by the
-// measured speed). Error is against one reference made with the scene's own settings, so a knob that changes the
-// expected image (max_depth, Fresnel) shows its bias too.
+// model, Russian roulette depth, max_depth, sky sampling under an environment light, mirror images where the scene has
+// a flat mirror, triangle test), the time and the error of a render at a fixed sample budget, and the error of a render
+// given the baseline's time (its spp scaled by the measured speed). Error is against one reference made with the
+// scene's own settings, so a knob that changes the expected image (max_depth, Fresnel) shows its bias too.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -39,7 +38,7 @@ uint32_t nearest_square(double spp) {
   return n * n;
 }
 
-std::vector<Knob> knobs(bool cubemap_sky, bool flat_mirrors) {
+std::vector<Knob> knobs(bool environment_light, bool flat_mirrors) {
   std::vector<Knob> k;
   const auto with = [](auto set) {
     RenderOverrides o;
@@ -49,7 +48,7 @@ std::vector<Knob> knobs(bool cubemap_sky, bool flat_mirrors) {
   k.push_back({"baseline", "scene settings", {}, false});
   k.push_back({"nee", "on", with([](RenderOverrides& o) { o.nee = Switch::On; }), false});
   k.push_back({"nee", "off", with([](RenderOverrides& o) { o.nee = Switch::Off; }), false});
-  if (cubemap_sky) {
+  if (environment_light) {
     k.push_back({"sky_sampling", "on", with([](RenderOverrides& o) { o.sky_sampling = Switch::On; }), false});
     k.push_back({"sky_sampling", "off", with([](RenderOverrides& o) { o.sky_sampling = Switch::Off; }), false});
   }
@@ -109,7 +108,7 @@ static int run_bench_trade(const BenchTradeCommand& cmd) {
   const SceneView probe_view = probe.view();
   const bool flat_mirrors = std::any_of(probe.primitives.begin(), probe.primitives.end(),
                                         [&](const Primitive& p) { return is_planar_mirror(probe_view, p); });
-  for (const Knob& knob : knobs(probe.background.kind == BackgroundKind::Cubemap, flat_mirrors)) {
+  for (const Knob& knob : knobs(samples_environment(probe.background.kind), flat_mirrors)) {
     RenderOverrides ov = combine(base, knob.overrides);
     // the stratified sampler, the knob's or the scene's own, needs n x n samples
     const bool square =

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <type_traits>
 
+#include "kernel/light/environment_light.h"
 #include "options/effects.h"
 #include "options/enum_names.h"
 #include "options/number_text.h"
@@ -167,7 +168,7 @@ RenderOptions recorded_options(const RenderSettings& settings, BackgroundKind ba
     switch (rule) {
       case Record::Always: return true;
       case Record::PathTracer: return path;
-      case Record::PathTracerUnderCubemap: return path && background == BackgroundKind::Cubemap;
+      case Record::PathTracerUnderEnvironmentLight: return path && samples_environment(background);
       case Record::UnlessDefault: return !at_default;
       case Record::Never: return false;
     }

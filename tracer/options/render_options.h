@@ -17,7 +17,7 @@ namespace tracer {
 
 // When an identity (manifest entry, partial file) records an option: it decides the pixels.
 // Never: it decides only how they are computed (the schedule), so partials merge across it.
-enum class Record { Always, PathTracer, PathTracerUnderCubemap, UnlessDefault, Never };
+enum class Record { Always, PathTracer, PathTracerUnderEnvironmentLight, UnlessDefault, Never };
 
 // One row of the table, for loops that need no value: the CLI's flags, docs, messages.
 struct OptionInfo {

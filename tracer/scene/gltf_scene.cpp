@@ -277,7 +277,8 @@ class GltfSceneReader {
         !is_finite(colour))
       fail_at(file_.path, path, "color and intensity must be finite and >= 0");
     if (l.range > 0.0) ignore(path + ".range (light falls off as 1/d^2 everywhere)");
-    PointLight p{};
+    Light p{};
+    p.kind = LightKind::Point;
     p.position = world.point({0, 0, 0});
     p.intensity = colour * intensity;  // candela: the tracer's radiance unit is the nit (docs/gltf.md)
     scene_.lights.push_back(p);

@@ -4,15 +4,16 @@
 
 namespace tracer {
 
-PointLight read_light(const Json& value, const std::string& path, const std::string& file,
-                      std::set<std::string>& used_types) {
+Light read_light(const Json& value, const std::string& path, const std::string& file,
+                 std::set<std::string>& used_types) {
   JsonObject obj(value, path, file);
   const std::string type = obj.string("type");
   if (!is_accepted_type("light", type))
     obj.fail("type", "unknown light type \"" + type + "\" (expected " + expected_types("light") +
                          "; emissive shapes are area lights)");
   used_types.insert("light:" + type);
-  PointLight l{};
+  Light l{};
+  l.kind = LightKind::Point;
   l.position = obj.vec3("position");
   l.intensity = obj.color("intensity");
   if (obj.find("attenuation")) {

@@ -11,8 +11,8 @@
 namespace tracer {
 
 // Records the light's type in `used_types` ("light:point").
-PointLight read_light(const Json& value, const std::string& path, const std::string& file,
-                      std::set<std::string>& used_types);
+Light read_light(const Json& value, const std::string& path, const std::string& file,
+                 std::set<std::string>& used_types);
 
 // A missing background is constant black; `type` receives its type name.
 Background read_background(const Json* value, const std::string& file, std::string& type, TextureLoader& textures);

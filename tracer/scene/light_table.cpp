@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "accel/bounds.h"
+#include "kernel/light/light.h"
 #include "kernel/shading/bsdf.h"
-#include "kernel/shading/light_sampling.h"
 #include "kernel/shading/mirror_images.h"
 
 namespace tracer {
@@ -13,9 +13,9 @@ namespace {
 
 constexpr uint32_t kMaxSkyCellsPerSide = 128;
 
-// The cube-map sky's cells (kernel/shading/sky_sampling.h); returns the integral of luminance over
-// the sphere the cells' weights estimate, for the sky's power.
-double build_sky_cells(Scene& scene) {
+// The environment's cells (kernel/light/environment_light.h); returns the integral of luminance
+// over the sphere the cells' weights estimate, for the environment's power.
+double build_environment_cells(Scene& scene) {
   const SceneView view = scene.view();
   const uint32_t face_size = scene.textures[scene.background.faces[0]].width;
   const uint32_t n = std::min(face_size, kMaxSkyCellsPerSide);
@@ -58,7 +58,7 @@ double build_sky_cells(Scene& scene) {
   return luminance_integral;
 }
 
-// Radius of a sphere around every bounded primitive: the sky's light reaches the scene
+// Radius of a sphere around every bounded primitive: the environment's light reaches the scene
 // through its cross-section.
 double scene_radius(const Scene& scene) {
   Bounds all;
@@ -75,11 +75,11 @@ void build_light_table(Scene& scene) {
   scene.light_of_prim.assign(scene.primitives.size(), kNoHit);
   scene.sky_cells.clear();
   scene.sky_cells_per_side = 0;
-  scene.sky_light = kNoHit;
+  scene.environment_light = kNoHit;
   std::vector<double> power;
   for (uint32_t i = 0; i < scene.lights.size(); ++i) {
-    scene.light_table.push_back({LightKind::Point, i, 0.0f, 0.0f});
-    power.push_back(4.0 * kPi * luminance(scene.lights[i].intensity));
+    scene.light_table.push_back({scene.lights[i].kind, i, 0.0f, 0.0f});
+    power.push_back(light_power(scene.lights[i]));
   }
   for (uint32_t id = 0; id < scene.primitives.size(); ++id) {
     const Primitive& p = scene.primitives[id];
@@ -87,14 +87,14 @@ void build_light_table(Scene& scene) {
     if (!emits(m) || p.kind == ShapeKind::Plane || !(luminance(m.radiance) > 0.0f)) continue;
     scene.light_of_prim[id] = static_cast<uint32_t>(scene.light_table.size());
     scene.light_table.push_back({LightKind::Shape, id, 0.0f, 0.0f});
-    power.push_back(kPi * luminance(m.radiance) * primitive_area(p) * (m.two_sided ? 2.0 : 1.0));
+    power.push_back(shape_light_power(p, m));
   }
-  if (scene.background.kind == BackgroundKind::Cubemap && scene.settings.sky_sampling == Switch::On &&
+  if (samples_environment(scene.background.kind) && scene.settings.sky_sampling == Switch::On &&
       scene.settings.integrator == IntegratorKind::Path) {
-    const double luminance_integral = build_sky_cells(scene);
+    const double luminance_integral = build_environment_cells(scene);
     if (luminance_integral > 0.0) {
-      scene.sky_light = static_cast<uint32_t>(scene.light_table.size());
-      scene.light_table.push_back({LightKind::Sky, 0, 0.0f, 0.0f});
+      scene.environment_light = static_cast<uint32_t>(scene.light_table.size());
+      scene.light_table.push_back({LightKind::Environment, 0, 0.0f, 0.0f});
       const double r = scene_radius(scene);
       power.push_back(kPi * r * r * luminance_integral);  // flux through the scene's cross-section
     } else {

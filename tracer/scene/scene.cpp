@@ -16,7 +16,7 @@ SceneView Scene::view() const {
   v.kd_pad = kd_pad;
   v.grid = grid;
   v.sky_cells_per_side = sky_cells_per_side;
-  v.sky_light = sky_light;
+  v.environment_light = environment_light;
   v.offset_scale = offset_scale;
   v.background = background;
   v.ambient = ambient;

@@ -33,8 +33,8 @@ struct Scene : SceneArrays {
   GridInfo grid{};
   std::vector<std::string> material_names;
   uint32_t sky_cells_per_side = 0;
-  uint32_t sky_light = kNoHit;  // the sky's light_table entry
-  float offset_scale = 1.0f;    // kernel/geom/ray_offset.h
+  uint32_t environment_light = kNoHit;  // the environment's light_table entry
+  float offset_scale = 1.0f;            // kernel/geom/ray_offset.h
   Background background{};
   Vec3 ambient{0.0f, 0.0f, 0.0f};
   Camera camera{};

@@ -42,7 +42,7 @@ float ray_offset_scale(const Scene& scene) {
       b.grow(primitive_bounds(p));
   }
   b.grow(scene.camera.origin);
-  for (const PointLight& l : scene.lights) b.grow(l.position);
+  for (const Light& l : scene.lights) b.grow(l.position);
   const Vec3 d = b.hi - b.lo;
   const float size = std::max(d.x, std::max(d.y, d.z));
   float scale = 1.0f;
@@ -147,8 +147,8 @@ Scene load_scene(const std::string& path, const RenderOverrides& overrides) {
 }
 
 std::vector<std::string> feature_names(uint32_t features) {
-  static const char* names[] = {"sphere",    "plane",           "triangle", "quad",     "lambert",
-                                "metal",     "dielectric",      "phong",    "emissive", "point-light",
+  static const char* names[] = {"sphere",    "plane",           "triangle", "quad",      "lambert",
+                                "metal",     "dielectric",      "phong",    "emissive",  "point-light",
                                 "thin-lens", "shading-normals", "textures", "microfacet"};
   std::vector<std::string> out;
   for (uint32_t i = 0; i < sizeof names / sizeof names[0]; ++i)

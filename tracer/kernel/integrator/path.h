@@ -6,7 +6,7 @@
 // survives with q = min(max throughput / first_throughput, 1) and divides by q, so it stays
 // unbiased: the throughput relative to the first vertex's (the pixel's own albedo), so a dark
 // surface the camera sees keeps its indirect light as long as a white one (docs/path.md).
-// A cube-map sky sampled as a light (render.sky_sampling) is MIS-weighted like the shapes.
+// The environment sampled as a light (render.sky_sampling) is MIS-weighted like the shapes.
 // With render.mirror_images a non-specular vertex also samples one light through one flat
 // mirror (kernel/shading/mirror_images.h), weighted against the BSDF sample that reaches the
 // light off that mirror; it draws two more pairs, at dimensions past every bounce's four.
@@ -17,8 +17,8 @@
 #include "kernel/camera/sampler.h"
 #include "kernel/geom/ray_offset.h"
 #include "kernel/integrator/whitted.h"
+#include "kernel/light/light.h"
 #include "kernel/shading/bsdf.h"
-#include "kernel/shading/light_sampling.h"
 #include "kernel/shading/mirror_images.h"
 #include "kernel/shading/surface.h"
 
@@ -73,13 +73,14 @@ TRACER_HD PathState path_start(const Ray& camera_ray) {
   return {camera_ray, {0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, camera_ray.origin, 0.0f, 0u, true, 1.0f, kNoHit};
 }
 
-// The shadow ray from the shading point at s to the sampled light: a point light within its
-// distance, the sky past everything, an emitter as the closest hit along wi.
+// The shadow ray from the shading point at s to the sampled light: an emitting surface as the
+// closest hit along wi; any other light unoccluded up to its distance (the environment: past
+// everything).
 TRACER_HD ShadowQuery shadow_query(const SceneView& scene, const Surface& s, const LightSample& ls) {
   const Ray ray = {offset_ray_origin(s.p, s.ng, ls.wi, scene.offset_scale), ls.wi};
-  if (ls.prim == kSkyLight) return {ray, kInfinity, kNoHit, {0.0f, 0.0f, 0.0f}};
-  if (ls.prim == kNoHit) return {ray, length(s.p + ls.wi * ls.distance - ray.origin), kNoHit, {0.0f, 0.0f, 0.0f}};
-  return {ray, kInfinity, ls.prim, {0.0f, 0.0f, 0.0f}};
+  if (ls.emitter != kNoHit) return {ray, kInfinity, ls.emitter, {0.0f, 0.0f, 0.0f}};
+  if (ls.distance == kInfinity) return {ray, kInfinity, kNoHit, {0.0f, 0.0f, 0.0f}};
+  return {ray, length(s.p + ls.wi * ls.distance - ray.origin), kNoHit, {0.0f, 0.0f, 0.0f}};
 }
 
 // The second way of an image query, from to_mirror's hit at t on the mirror to the light.
@@ -137,8 +138,8 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
   const bool nee = rs.nee == Switch::On && scene.light_entry_count > 0;
   PathStep step = {false, false, false};
   if (hit.prim == kNoHit) {
-    const float w = nee && !st.specular && scene.sky_light != kNoHit
-                        ? power_heuristic(st.bsdf_pdf, sky_light_pdf(scene, st.ray.dir))
+    const float w = nee && !st.specular && scene.environment_light != kNoHit
+                        ? power_heuristic(st.bsdf_pdf, environment_light_pdf(scene, st.ray.dir))
                         : 1.0f;
     st.radiance += st.throughput * background_radiance(scene, st.ray.dir) * w;
     return step;
@@ -149,7 +150,8 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
   if (emits(m) && (front || m.two_sided)) {
     float w = 1.0f;
     if (nee && !st.specular)
-      w = power_heuristic(st.bsdf_pdf, light_pdf(scene, hit.prim, st.from, st.ray.dir, length(s.p - st.from), s.ng));
+      w = power_heuristic(st.bsdf_pdf,
+                          shape_light_pdf(scene, hit.prim, st.from, st.ray.dir, length(s.p - st.from), s.ng));
     else if (nee && st.mirror != kNoHit)
       w = power_heuristic(st.bsdf_pdf, mirror_image_pdf(scene, st.mirror, hit.prim, st.from, st.ray.dir, s.p, s.ng));
     st.radiance += st.throughput * m.radiance * w;
@@ -171,7 +173,7 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
   if ((sample_lights && scene.light_entry_count > 1) || bsdf_uses_choice(m))
     draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 1u, pick_u, choice_u);
   if (!is_specular(m)) draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 2u, dir_u1, dir_u2);
-  if (roulette || (sample_lights && scene.sky_light != kNoHit))
+  if (roulette || (sample_lights && scene.environment_light != kNoHit))
     draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 3u, rr_u, sky_cell_u);
   if (sample_images) {
     draw_uniform2(rs.sampler, rs.seed, pixel, sample, kDimMirrorImages + 2u * st.depth, image_pick_u, mirror_u);
@@ -183,7 +185,7 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
     const BsdfValue f = ls.valid ? eval_bsdf(m, wo, ls.wi, n, front) : BsdfValue{{0.0f, 0.0f, 0.0f}, 0.0f};
     if (max_component(f.f_cos) > 0.0f) {
       ++counts.shadow;
-      const float w = ls.prim == kNoHit ? 1.0f : power_heuristic(ls.pdf, f.pdf);
+      const float w = ls.delta ? 1.0f : power_heuristic(ls.pdf, f.pdf);
       shadow = shadow_query(scene, s, ls);
       shadow.contribution = st.throughput * f.f_cos * ls.radiance * (w / ls.pdf);
       step.shadow = true;

@@ -4,8 +4,8 @@
 #pragma once
 #include "kernel/geom/ray_offset.h"
 #include "kernel/integrator/ray_counts.h"
+#include "kernel/light/light.h"
 #include "kernel/shading/bsdf.h"
-#include "kernel/shading/light_sources.h"
 #include "kernel/shading/optics.h"
 #include "kernel/shading/surface.h"
 
@@ -84,10 +84,10 @@ struct WhittedVertex {
   WhittedResponse w;
   Vec3 n;          // the shading normal facing the incoming ray
   Vec3 local;      // ambient plus the lights lit so far
-  uint32_t light;  // the next point light to consider
+  uint32_t light;  // the next declared light to consider
   bool front;
-  Vec3 to_light;  // the light before `light`, facing the surface: unit direction and distances
-  float cos_l, d, d2;
+  LightArrival arrival;  // from the light before `light`, which faces the surface
+  float cos_l;           // between the facing shading normal and arrival.wi
 };
 
 // The vertex `hit` of task.ray: adds its emission, or the background on a miss (false).
@@ -114,38 +114,35 @@ TRACER_HD_STEP bool whitted_begin(const SceneView& scene, const WhittedTask& tas
 // kinds, f(wo, l) cos I times the falloff (the material looked up again at the point, its
 // shading normal already bent).
 TRACER_HD_STEP void whitted_add_light(const SceneView& scene, WhittedVertex& v) {
-  const PointLight& light = scene.lights[v.light - 1u];
+  const LightArrival& a = v.arrival;
   if (uses_feature(scene.features, kFeatureMicrofacet) && v.w.brdf) {
     const Material m = material_colours_at(scene, v.s);
-    const Vec3 f_cos = eval_bsdf(m, -v.task.ray.dir, v.to_light, v.n, v.front).f_cos;
-    v.local += light.intensity * f_cos * light_falloff(light, v.d, v.d2);
+    const Vec3 f_cos = eval_bsdf(m, -v.task.ray.dir, a.wi, v.n, v.front).f_cos;
+    v.local += a.intensity * f_cos * a.falloff;
     return;
   }
-  const Vec3 h = normalize(v.to_light - v.task.ray.dir);
+  const Vec3 h = normalize(a.wi - v.task.ray.dir);
   const float cos_h = max_of(dot(v.n, h), 0.0f);
   const Vec3 reflected = v.w.kd * v.cos_l + v.w.ks * det_pow(cos_h, v.w.shininess);
-  v.local += light.intensity * reflected * light_falloff(light, v.d, v.d2);
+  v.local += a.intensity * reflected * a.falloff;
 }
 
-// Local shading, one point light at a time: ambient plus whitted_add_light for each light the
-// surface faces that is not in shadow. Adds the lights that need no shadow ray; true with
-// `shadow` set at the first that does (the caller calls whitted_add_light if it is unoccluded,
-// then calls again).
+// Local shading, one declared light at a time (kernel/light/light.h): ambient plus
+// whitted_add_light for each light the surface faces that is not in shadow. Adds the lights that need no shadow ray;
+// true with `shadow` set at the first that does (the caller calls whitted_add_light if it is unoccluded, then calls
+// again).
 TRACER_HD_STEP bool whitted_next_light(const SceneView& scene, WhittedVertex& v, Ray& shadow, float& tmax,
                                        RayCounts& counts) {
   while (v.light < scene.light_count) {
-    const PointLight& light = scene.lights[v.light++];
-    const Vec3 to_light = light.position - v.s.p;
-    v.d2 = dot(to_light, to_light);
-    v.d = det_sqrt(v.d2);
-    v.to_light = to_light / v.d;
-    v.cos_l = dot(v.n, v.to_light);
+    const Light& light = scene.lights[v.light++];
+    v.arrival = light_arrival(light, v.s.p);
+    v.cos_l = dot(v.n, v.arrival.wi);
     if (!(v.cos_l > 0.0f)) continue;
     if (scene.settings.effects & kEffectShadows) {
-      const Vec3 origin = offset_ray_origin(v.s.p, v.s.ng, v.to_light, scene.offset_scale);
+      const Vec3 origin = offset_ray_origin(v.s.p, v.s.ng, v.arrival.wi, scene.offset_scale);
       ++counts.shadow;
-      shadow = {origin, v.to_light};
-      tmax = length(light.position - origin);
+      shadow = {origin, v.arrival.wi};
+      tmax = light_shadow_distance(light, origin);
       return true;
     }
     whitted_add_light(scene, v);

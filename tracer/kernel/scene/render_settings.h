@@ -5,7 +5,7 @@
 // golden's manifest entry, a partial file's identity and --stats, and the help text. A
 // setting added here reaches all of them; only its use in the kernel is left to write.
 // `recorded` says when an identity records the option: Always, PathTracer (the path
-// integrator only), PathTracerUnderCubemap, or UnlessDefault.
+// integrator only), PathTracerUnderEnvironmentLight, or UnlessDefault.
 #pragma once
 #include "kernel/camera/sampler.h"
 
@@ -47,11 +47,11 @@ enum Effects : uint32_t {
   X(nee, Switch, Switch::On, render, PathTracer,                                                                    \
     "path: next-event estimation with MIS, on (default) or off (the plain estimator)")                              \
   X(rr_depth, uint32_t, 3u, render, PathTracer, "path: Russian roulette from this many bounces on (default 3)")     \
-  X(sky_sampling, Switch, Switch::On, render, PathTracerUnderCubemap,                                               \
+  X(sky_sampling, Switch, Switch::On, render, PathTracerUnderEnvironmentLight,                                      \
     "path: sample a cube-map sky as a light, on (default) or off (only BSDF rays find it)")                         \
   X(light_sampling, LightSampling, LightSampling::Area, render, UnlessDefault,                                      \
     "path: rectangle and triangle lights sampled by area (default) or solid-angle (uniform in their solid angle)")  \
-  X(mirror_images, Switch, Switch::On, render, UnlessDefault,                                                      \
+  X(mirror_images, Switch, Switch::On, render, UnlessDefault,                                                       \
     "path: also sample the lights seen in flat mirrors, as their mirror images, on (default) or off (only BSDF "    \
     "rays find them)")                                                                                              \
   X(triangle_test, TriangleTest, TriangleTest::Watertight, render, UnlessDefault,                                   \

@@ -18,10 +18,10 @@
   X(uint32_t, grid_cell_start) /* grid: first entry of each cell in grid_prims */                    \
   X(uint32_t, grid_prims)                                                                            \
   X(Material, materials)                                                                             \
-  X(Texture, textures) /* kernel/shading/texture.h */                                                \
-  X(float, texels)     /* image textures' linear RGB */                                              \
-  X(PointLight, lights)                                                                              \
+  X(Texture, textures)       /* kernel/shading/texture.h */                                          \
+  X(float, texels)           /* image textures' linear RGB */                                        \
+  X(Light, lights)           /* the declared lights (kernel/light/light_records.h) */                \
   X(LightEntry, light_table) /* path: every light with its selection probability */                  \
   X(uint32_t, light_of_prim) /* per primitive: its light_table entry, or kNoHit */                   \
-  X(SkyCell, sky_cells)      /* 6 faces x n x n, face-major then row-major */                      \
+  X(SkyCell, sky_cells)      /* environment: 6 faces x n x n, face-major then row-major */           \
   X(uint32_t, mirror_prims)  /* path with mirror_images: the planar mirrors' primitive ids */

@@ -12,8 +12,8 @@
 #pragma once
 #include "kernel/accel/primitive_hit.h"
 #include "kernel/base/float_to_int.h"
+#include "kernel/light/light.h"
 #include "kernel/shading/bsdf.h"
-#include "kernel/shading/light_sampling.h"
 
 namespace tracer {
 
@@ -61,7 +61,7 @@ TRACER_HD float mirror_image_pdf(const SceneView& scene, uint32_t mirror, uint32
                                  Vec3 ng) {
   const Primitive& p = scene.primitives[mirror];
   const Vec3 image_of_x = reflect_point(x, p.a, mirror_normal(p));
-  return light_pdf(scene, light, image_of_x, wi_light, length(y - image_of_x), ng) /
+  return shape_light_pdf(scene, light, image_of_x, wi_light, length(y - image_of_x), ng) /
          static_cast<float>(scene.mirror_count);
 }
 
@@ -94,7 +94,7 @@ TRACER_HD MirrorImageSample sample_mirror_image(const SceneView& scene, Vec3 x, 
   s.wi_light = ls.wi;
   s.radiance = ls.radiance * mirror_reflectance(scene.materials[p.material], abs_of(along));
   s.pdf = ls.pdf / static_cast<float>(count);
-  s.light = ls.prim;
+  s.light = ls.emitter;
   s.valid = s.pdf > 0.0f && s.pdf < kInfinity;
   return s;
 }

@@ -1,35 +1,17 @@
-// Next-event estimation's light choice and light sampling for the path integrator. The
-// host builds a table of every light (point lights and emissive spheres, quads and
-// triangles; emissive planes are infinite and only found by chance; a cube-map sky when
-// render.sky_sampling is on) with a selection probability proportional to its power
-// (tracer/light_table.cpp). Spheres seen from outside are sampled uniformly in the cone they
-// subtend; with render.light_sampling "solid-angle", rectangles and triangles uniformly in their
-// solid angle (kernel/shading/spherical_rectangle.h, spherical_triangle.h); other shapes, and
-// rectangles and triangles by default or where float cannot sample their solid angle,
-// uniformly by area; the sky by its cells (kernel/shading/sky_sampling.h).
+// An emissive sphere, quad or triangle as a light (emissive planes are infinite and only found by
+// chance). Spheres seen from outside are sampled uniformly in the cone they subtend; with
+// render.light_sampling "solid-angle", quads and triangles uniformly in their solid angle
+// (kernel/shading/spherical_rectangle.h, spherical_triangle.h); other shapes, and quads and
+// triangles by default or where float cannot sample their solid angle, uniformly by area. The
+// sample's point is where its radiance texture, if any, is read.
 #pragma once
-#include "kernel/shading/light_sources.h"
+#include "kernel/light/light_records.h"
 #include "kernel/shading/sampling.h"
-#include "kernel/shading/sky_sampling.h"
 #include "kernel/shading/spherical_rectangle.h"
 #include "kernel/shading/spherical_triangle.h"
 #include "kernel/shading/surface.h"
 
 namespace tracer {
-
-struct LightSample {
-  Vec3 wi;         // unit direction from the shading point to the light
-  float distance;  // to the sampled point (point lights: to the light)
-  Vec3 radiance;   // arriving at the shading point if unoccluded (point lights: I x falloff)
-  float pdf;       // solid-angle density including the selection probability; the
-                   // selection probability alone for a point light (delta)
-  uint32_t prim;   // the emitting primitive, kNoHit for a point light, kSkyLight for the sky
-  bool valid;
-};
-
-TRACER_HD uint32_t pick_light(const SceneView& scene, float u) {
-  return find_cdf_interval(scene.light_table, scene.light_entry_count, u);
-}
 
 TRACER_HD float primitive_area(const Primitive& p) {
   switch (p.kind) {
@@ -50,8 +32,9 @@ TRACER_HD float sphere_cone_width(const Primitive& p, float dist2) {
 }
 
 // Solid-angle density of sampling the point at distance t along unit wi on emitter `prim`
-// with geometric normal ng, seen from `from` (selection probability included).
-TRACER_HD float light_pdf(const SceneView& scene, uint32_t prim, Vec3 from, Vec3 wi, float t, Vec3 ng) {
+// with geometric normal ng, seen from `from` (selection probability included); 0 for a
+// primitive that is not in the light table.
+TRACER_HD float shape_light_pdf(const SceneView& scene, uint32_t prim, Vec3 from, Vec3 wi, float t, Vec3 ng) {
   const uint32_t entry = scene.light_of_prim[prim];
   if (entry == kNoHit) return 0.0f;
   const Primitive& p = scene.primitives[prim];
@@ -76,43 +59,14 @@ TRACER_HD float light_pdf(const SceneView& scene, uint32_t prim, Vec3 from, Vec3
   return cos_l > 0.0f ? pmf * t * t / (cos_l * primitive_area(p)) : 0.0f;
 }
 
-// Solid-angle density with which NEE draws sky direction dir (selection probability included).
-TRACER_HD float sky_light_pdf(const SceneView& scene, Vec3 dir) {
-  if (scene.sky_light == kNoHit) return 0.0f;
-  return scene.light_table[scene.sky_light].pmf * sky_direction_pdf(scene, dir);
-}
-
-// A sample of light entry_index seen from `from`, by (u1, u2) and, for the sky's cell, cell_u.
-TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index, Vec3 from, float u1, float u2,
-                                   float cell_u) {
-  const LightEntry& entry = scene.light_table[entry_index];
-  LightSample s = {{0.0f, 0.0f, 0.0f}, 0.0f, {0.0f, 0.0f, 0.0f}, 0.0f, kNoHit, false};
-  if (entry.kind == LightKind::Sky) {
-    s.wi = sample_sky_direction(scene, cell_u, u1, u2);
-    s.distance = kInfinity;
-    s.radiance = background_radiance(scene, s.wi);
-    s.prim = kSkyLight;
-    s.pdf = sky_light_pdf(scene, s.wi);
-    s.valid = s.pdf > 0.0f && s.pdf < kInfinity;
-    return s;
-  }
-  if (entry.kind == LightKind::Point) {
-    const PointLight& light = scene.lights[entry.index];
-    const Vec3 to_light = light.position - from;
-    const float d2 = dot(to_light, to_light);
-    s.distance = det_sqrt(d2);
-    if (!(s.distance > 0.0f)) return s;
-    s.wi = to_light / s.distance;
-    s.radiance = light.intensity * light_falloff(light, s.distance, d2);
-    s.pdf = entry.pmf;
-    s.valid = true;
-    return s;
-  }
+// A sample of the shape light `entry` seen from `from`, by (u1, u2).
+TRACER_HD LightSample sample_shape_light(const SceneView& scene, const LightEntry& entry, Vec3 from, float u1,
+                                         float u2) {
+  LightSample s = {{0.0f, 0.0f, 0.0f}, 0.0f, {0.0f, 0.0f, 0.0f}, 0.0f, LightKind::Shape, false, entry.index, false};
   const Primitive& p = scene.primitives[entry.index];
-  s.prim = entry.index;
   Vec3 point = {0.0f, 0.0f, 0.0f}, ng = {0.0f, 0.0f, 0.0f};  // every shape case sets both
   float b1 = 0.0f, b2 = 0.0f;  // the sampled point's quad or triangle parameters, for its texture lookup
-  float solid_angle = 0.0f;    // > 0 where sampled uniformly in solid angle: light_pdf's pmf / solid_angle
+  float solid_angle = 0.0f;    // > 0 where sampled uniformly in solid angle: shape_light_pdf's pmf / solid_angle
   switch (p.kind) {
     case ShapeKind::Sphere: {
       const Vec3 to_center = p.a - from;
@@ -172,9 +126,15 @@ TRACER_HD LightSample sample_light(const SceneView& scene, uint32_t entry_index,
     Surface at = surface_at(scene, {from, s.wi}, {s.distance, entry.index, b1, b2});
     s.radiance = material_at(scene, at).radiance;
   }
-  s.pdf = solid_angle > 0.0f ? entry.pmf / solid_angle : light_pdf(scene, entry.index, from, s.wi, s.distance, ng);
+  s.pdf =
+      solid_angle > 0.0f ? entry.pmf / solid_angle : shape_light_pdf(scene, entry.index, from, s.wi, s.distance, ng);
   s.valid = s.pdf > 0.0f && s.pdf < kInfinity;
   return s;
+}
+
+// The power that chooses it in the light table: pi L A, twice for a two-sided emitter.
+inline double shape_light_power(const Primitive& p, const Material& m) {
+  return kPi * luminance(m.radiance) * primitive_area(p) * (m.two_sided ? 2.0 : 1.0);
 }
 
 }  // namespace tracer

@@ -1,0 +1,70 @@
+// The lights as plain data, every kind's record in one place. A light is one of LightKind:
+// lights the scene file declares (points) are `Light` records in SceneView::lights; emissive
+// shapes are their primitives; the environment is the scene's Background. The path tracer's
+// light table lists every light it samples as a LightEntry; each kind's sample, density and
+// power live in its own header (point_light.h, shape_light.h, environment_light.h) and
+// kernel/light/light.h dispatches on the kind.
+#pragma once
+#include "kernel/base/platform.h"
+#include "kernel/base/vec3.h"
+
+namespace tracer {
+
+enum class LightKind : uint32_t {
+  Point,       // a declared point light: intensity and falloff, a delta light (point_light.h)
+  Shape,       // an emissive sphere, quad or triangle (shape_light.h)
+  Environment  // the background, sampled by its cells (environment_light.h)
+};
+
+// Whether lights of this kind are declared by the scene (SceneView::lights) rather than made of
+// its shapes or its background.
+TRACER_HD constexpr bool is_declared_kind(LightKind kind) { return kind == LightKind::Point; }
+
+// A light the scene declares (a kind for which is_declared_kind holds).
+struct Light {
+  LightKind kind;
+  Vec3 position;
+  Vec3 intensity;
+  float kc, kl, kq;          // attenuation, used when has_attenuation
+  uint32_t has_attenuation;  // 0: physical 1/d^2 falloff
+};
+
+// An entry of the path integrator's light table.
+struct LightEntry {
+  LightKind kind;
+  uint32_t index;  // Point: into SceneView::lights; Shape: the emitting primitive's id; Environment: 0
+  float pmf;       // probability of choosing this light
+  float cdf;       // sum of the pmfs up to and including this entry; 1 for the last
+};
+
+// One sample of a light seen from a shading point.
+struct LightSample {
+  Vec3 wi;           // unit direction from the shading point to the light
+  float distance;    // to the sampled point (a point light: to the light; the environment: infinity)
+  Vec3 radiance;     // arriving at the shading point if unoccluded (a point light: I x falloff)
+  float pdf;         // solid-angle density including the selection probability; the
+                     // selection probability alone for a delta light
+  LightKind kind;    // the light's kind
+  bool delta;        // a delta light: no BSDF sample can reach it, so no MIS weight
+  uint32_t emitter;  // the emitting primitive, which the shadow ray's closest hit must be; kNoHit
+                     // for lights that are not surfaces (any hit before `distance` occludes)
+  bool valid;
+};
+
+enum class BackgroundKind : uint32_t { Constant, Gradient, Cubemap };
+
+// What a ray that leaves the scene sees, and the environment light when it is sampled.
+struct Background {
+  BackgroundKind kind;
+  Vec3 radiance;      // constant; the zenith colour for gradient
+  Vec3 horizon;       // gradient only
+  uint32_t faces[6];  // cubemap: textures of the faces +x, -x, +y, -y, +z, -z
+};
+
+// A cell of the environment's sampling distribution (environment_light.h).
+struct SkyCell {
+  float pmf;  // probability of drawing the cell, a multiple of 2^-24
+  float cdf;  // sum of the pmfs up to and including this cell; 1 for the last
+};
+
+}  // namespace tracer
