@@ -6,7 +6,7 @@
 #include "kernel/base/philox.h"
 #include "kernel/integrator/adaptive.h"
 #include "kernel/integrator/render_pixel.h"
-#include "kernel/shading/bsdf.h"
+#include "kernel/material/bsdf.h"
 
 namespace tracer::parity {
 

@@ -199,7 +199,7 @@ inline LbvhInput lbvh_inputs(uint64_t seed, uint32_t count) {
 // from either side of glass, every tenth from below its normal, with uniforms at 0 and 1-.
 inline std::vector<BsdfQuery> bsdf_inputs(uint64_t seed, uint32_t count) {
   Inputs in{seed};
-  const MaterialKind kinds[] = {MaterialKind::Conductor, MaterialKind::RoughDielectric, MaterialKind::MetalRough};
+  const MaterialKind kinds[] = {MaterialKind::GgxConductor, MaterialKind::GgxDielectric, MaterialKind::GltfMetalRough};
   const float roughness_edges[] = {0.0f, 0.0099f, kSmoothRoughness, 1.0f};
   const float u_edges[] = {0.0f, 0x1.fffffep-1f};
   const auto u = [&](uint32_t i) { return i % 32 == 5 ? u_edges[in.next() % 2] : in.uniform(0.0f, 1.0f); };

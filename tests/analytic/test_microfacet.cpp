@@ -11,7 +11,7 @@
 #include <complex>
 #include <functional>
 
-#include "kernel/shading/bsdf.h"
+#include "kernel/material/bsdf.h"
 #include "microfacet_material.h"
 
 namespace tracer {
@@ -42,7 +42,8 @@ double sphere_integral(Vec3 axis, const std::function<double(Vec3)>& g, int n_s 
 
 TEST(Microfacet, DistributionIntegratesToOneOverProjectedArea) {
   for (double alpha : kAlphas) {
-    const double integral = sphere_integral({0, 0, 1}, [&](Vec3 m) { return ggx_d(m, float(alpha)) * std::max(0.0f, m.z); });
+    const double integral =
+        sphere_integral({0, 0, 1}, [&](Vec3 m) { return ggx_d(m, float(alpha)) * std::max(0.0f, m.z); });
     EXPECT_NEAR(integral, 1.0, 1e-4) << "alpha " << alpha;
   }
 }
@@ -58,7 +59,8 @@ TEST(Microfacet, WeakWhiteFurnaceHoldsForEveryAlphaAndAngle) {
         return double(ggx_g1(wo, float(alpha))) * ggx_d(m, float(alpha)) * std::max(0.0f, dot(wo, m));
       });
       EXPECT_NEAR(integral / wo.z, 1.0, 2e-3) << "alpha " << alpha << ", theta " << degrees;
-      const double visible = sphere_integral({0, 0, 1}, [&](Vec3 m) { return ggx_visible_normal_pdf(wo, m, float(alpha)); });
+      const double visible =
+          sphere_integral({0, 0, 1}, [&](Vec3 m) { return ggx_visible_normal_pdf(wo, m, float(alpha)); });
       EXPECT_NEAR(visible, 1.0, 2e-3) << "D_wo, alpha " << alpha << ", theta " << degrees;
       worst = std::max(worst, std::abs(integral / wo.z - 1.0));
       worst_visible = std::max(worst_visible, std::abs(visible - 1.0));
@@ -113,7 +115,7 @@ TEST(Microfacet, ConductorFresnelMatchesComplexArithmetic) {
 // unscaled form). Seen from wi, the frame is turned to wi's side.
 TEST(Microfacet, Reciprocity) {
   const Vec3 n = {0, 0, 1};
-  for (MaterialKind kind : {MaterialKind::Conductor, MaterialKind::RoughDielectric, MaterialKind::MetalRough})
+  for (MaterialKind kind : {MaterialKind::GgxConductor, MaterialKind::GgxDielectric, MaterialKind::GltfMetalRough})
     for (float roughness : {0.2f, 0.5f, 1.0f})
       for (double to : {10.0, 45.0, 75.0})
         for (double ti : {5.0, 40.0, 70.0, 110.0, 150.0, 175.0}) {
@@ -126,7 +128,7 @@ TEST(Microfacet, Reciprocity) {
             const Vec3 a = eval_bsdf(m, wo, wi, n, front).f_cos / std::abs(wi.z);
             const Vec3 b = eval_bsdf(m, wi, wo, n_wi, front_wi).f_cos / std::abs(wo.z);
             float scale = 1;
-            if (kind == MaterialKind::RoughDielectric && transmitted) scale = front ? 1.5f * 1.5f : 1 / (1.5f * 1.5f);
+            if (kind == MaterialKind::GgxDielectric && transmitted) scale = front ? 1.5f * 1.5f : 1 / (1.5f * 1.5f);
             for (int c = 0; c < 3; ++c)
               EXPECT_NEAR(a[c], b[c] * scale, 1e-4 * (1 + std::abs(a[c])))
                   << int(kind) << " r " << roughness << " " << to << " -> " << ti << " front " << front;
@@ -142,12 +144,11 @@ TEST(Microfacet, RoughDielectricConservesEnergyBetweenReflectionAndTransmission)
   const Vec3 n = {0, 0, 1};
   for (bool front : {true, false})
     for (double degrees : {0.0, 20.0, 40.0, 45.0, 60.0, 75.0}) {
-      const Material m = test::microfacet_material(MaterialKind::RoughDielectric, 0.2f);
+      const Material m = test::microfacet_material(MaterialKind::GgxDielectric, 0.2f);
       const Vec3 wo = direction(degrees * M_PI / 180, 0.0);
       auto lobe = [&](Vec3 axis, bool upper) {
-        return sphere_integral(axis, [&](Vec3 wi) {
-          return (wi.z > 0) == upper ? double(eval_bsdf(m, wo, wi, n, front).f_cos.x) : 0.0;
-        });
+        return sphere_integral(
+            axis, [&](Vec3 wi) { return (wi.z > 0) == upper ? double(eval_bsdf(m, wo, wi, n, front).f_cos.x) : 0.0; });
       };
       Vec3 refracted;
       float cos_t;
@@ -164,7 +165,7 @@ TEST(Microfacet, RoughDielectricConservesEnergyBetweenReflectionAndTransmission)
 // what it transmits goes straight on as a delta (pdf 0, weight the tint), from either side,
 // and every sample and value is a number, with Schlick's and the exact Fresnel.
 TEST(Microfacet, IndexMatchedRoughGlassTransmitsStraightOn) {
-  Material m = test::microfacet_material(MaterialKind::RoughDielectric, 0.5f);
+  Material m = test::microfacet_material(MaterialKind::GgxDielectric, 0.5f);
   m.ior = 1.0f;
   m.tint = {0.8f, 0.7f, 0.6f};
   const Vec3 n = {0, 0, 1};

@@ -17,7 +17,7 @@
 #include "chi2.h"
 #include "kernel/camera/camera.h"
 #include "kernel/camera/sampler.h"
-#include "kernel/shading/bsdf.h"
+#include "kernel/material/bsdf.h"
 #include "microfacet_material.h"
 #include "render/render_cpu.h"
 #include "test_util.h"
@@ -102,10 +102,10 @@ std::vector<Case> mitsuba_grid() {
   std::vector<Case> cases;
   for (double alpha : {0.05, 0.2, 0.5, 1.0})
     for (double theta : {15.0, 30.0, 80.0}) {
-      cases.push_back({material(MaterialKind::Conductor, alpha), true, theta});
-      cases.push_back({material(MaterialKind::RoughDielectric, alpha), true, theta});
-      cases.push_back({material(MaterialKind::RoughDielectric, alpha), false, theta});  // 80: past the critical angle
-      cases.push_back({material(MaterialKind::MetalRough, alpha), true, theta});
+      cases.push_back({material(MaterialKind::GgxConductor, alpha), true, theta});
+      cases.push_back({material(MaterialKind::GgxDielectric, alpha), true, theta});
+      cases.push_back({material(MaterialKind::GgxDielectric, alpha), false, theta});  // 80: past the critical angle
+      cases.push_back({material(MaterialKind::GltfMetalRough, alpha), true, theta});
     }
   return cases;
 }
@@ -126,7 +126,7 @@ TEST(MicrofacetSampling, ChiSquareOnMitsubasGridWithBothSamplers) {
 }
 
 TEST(MicrofacetSampling, ChiSquareRejectsADensityWithoutG1) {
-  Case c = {material(MaterialKind::Conductor, 0.5), true, 80.0};
+  Case c = {material(MaterialKind::GgxConductor, 0.5), true, 80.0};
   const Vec3 wo = direction(std::cos(80 * M_PI / 180), 0.4);
   std::vector<double> observed(kCosBins * kPhiBins, 0.0), expected = expected_counts(c, wo);
   test::InputStream stream{11};
@@ -163,7 +163,7 @@ TEST(MicrofacetSampling, SampledDensityAndWeightMatchEval) {
 double ggx_albedo(double mu, double alpha) {
   const double a2 = alpha * alpha, so = std::sqrt(1 - mu * mu);
   auto lambda = [&](double z, double s2) { return (std::sqrt(1 + a2 * s2 / (z * z)) - 1) / 2; };
-  const double o[3] = {so, 0, mu}, axis[3] = {-so, 0, mu};  // the mirror direction
+  const double o[3] = {so, 0, mu}, axis[3] = {-so, 0, mu};       // the mirror direction
   const double t[3] = {axis[2], 0, -axis[0]}, b[3] = {0, 1, 0};  // a frame around it
   double sum = 0;
   const int n_s = 2000, n_p = 720;
@@ -188,7 +188,7 @@ double ggx_albedo(double mu, double alpha) {
 
 Material white_conductor(float roughness) {
   Material m{};
-  m.kind = MaterialKind::Conductor;
+  m.kind = MaterialKind::GgxConductor;
   m.fresnel = FresnelKind::Schlick;
   m.albedo = {1, 1, 1};  // F0 = 1: F = 1 at every angle
   m.roughness = roughness;
@@ -233,7 +233,7 @@ TEST(MicrofacetSampling, WhiteMetalRoughNeverReturnsMoreThanItReceives) {
     for (float transmission : {0.0f, 0.7f})
       for (double mu : {1.0, 0.5, 0.1}) {
         if (mu < 1 && metallic < 1) continue;
-        Material m = material(MaterialKind::MetalRough, 0.3);
+        Material m = material(MaterialKind::GltfMetalRough, 0.3);
         m.albedo = {1, 1, 1}, m.metallic = metallic, m.transmission = transmission;
         const Vec3 wo = direction(mu, 0.0);
         test::InputStream stream{9};
@@ -255,7 +255,8 @@ TEST(MicrofacetSampling, WhiteMetalRoughNeverReturnsMoreThanItReceives) {
 // error over the pixels is 0 within noise, and no pixel is far above 1.
 TEST(MicrofacetSampling, WhiteFurnaceImageOfAConductorSphereIsItsAlbedo) {
   const int size = 40, spp = 256;
-  const Scene scene = test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 4], "to": [0, 0, 0], "vfov": 32},
+  const Scene scene =
+      test::scene_from(R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 4], "to": [0, 0, 0], "vfov": 32},
     "film": {"width": 40, "height": 40},
     "render": {"integrator": "path", "spp": 256, "sampler": "stochastic", "max_depth": 4, "rr_depth": 16},
     "background": {"type": "constant", "radiance": [1, 1, 1]},

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "kernel/shading/bsdf.h"
+#include "kernel/material/bsdf.h"
 #include "kernel/shading/optics.h"
 #include "test_util.h"
 
@@ -108,7 +108,7 @@ TEST(Optics, ExactFresnelLimits) {
   for (float c = 0.05f; c <= 1.0f; c += 0.05f) EXPECT_EQ(fresnel_exact(c, c, 1.0f, 1.0f), 0.0f);
 }
 
-// The path tracer's dielectric as sample_bsdf draws it (kernel/shading/bsdf.h), from outside
+// The path tracer's dielectric as sample_bsdf draws it (kernel/material/bsdf.h), from outside
 // (front) and from inside the glass: a refraction obeys Snell's law n_in sin(theta_i) =
 // n_out sin(theta_t) and leaves on the far side; beyond the critical angle arcsin(1 / ior),
 // reached only from inside, every choice reflects about the normal (total internal reflection).

@@ -13,7 +13,7 @@
 #include "chi2.h"
 #include "kernel/camera/sampler.h"
 #include "kernel/light/light.h"
-#include "kernel/shading/bsdf.h"
+#include "kernel/material/bsdf.h"
 #include "light_fixture.h"
 #include "test_util.h"
 
@@ -91,7 +91,7 @@ double cosine_hemisphere_p(Inputs inputs) {
 TEST(SamplingChi2, CosineHemisphere) { EXPECT_GT(cosine_hemisphere_p(Inputs::Stream), kSignificance); }
 
 double metal_lobe_p(Inputs inputs) {
-  Material m = material(MaterialKind::Metal);
+  Material m = material(MaterialKind::PhongMetal);
   m.roughness = 0.4f;
   const float e = metal_exponent(m.roughness);
   const Vec3 n = {0, 1, 0};
@@ -114,7 +114,7 @@ double phong_lobes_p(Inputs inputs) {
   m.specular = {0.5f, 0.5f, 0.5f};
   m.shininess = 20.0f;
   const Vec3 n = {0, 0, 1};
-  const double pd = phong_diffuse_probability(m);
+  const double pd = PhongMaterial::diffuse_probability(m);
   return direction_test(
       n,
       [&](float a, float b, float c) {

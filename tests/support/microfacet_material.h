@@ -1,7 +1,7 @@
 // The microfacet material the kernel-level tests evaluate and sample: a coloured albedo, glass
 // of ior 1.5 with a white tint, and metal_rough with all three of its lobes in use.
 #pragma once
-#include "kernel/shading/material.h"
+#include "kernel/material/material.h"
 
 namespace tracer::test {
 

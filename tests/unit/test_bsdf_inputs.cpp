@@ -1,4 +1,4 @@
-// Which random numbers sample_bsdf reads (kernel/shading/bsdf.h): the path tracer draws the lobe
+// Which random numbers sample_bsdf reads (kernel/material/bsdf.h): the path tracer draws the lobe
 // choice only where bsdf_uses_choice says so and the direction pair only where the material is
 // not specular (kernel/integrator/path.h), so a material that read a number it was not given
 // would see 0 instead. Every material kind, smooth and rough, at many outgoing directions on
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/shading/bsdf.h"
+#include "kernel/material/bsdf.h"
 #include "microfacet_material.h"
 
 namespace tracer {
@@ -42,9 +42,9 @@ Outcome sample(const Material& m, Vec3 wo, bool front, float u_choice, float u1,
 }
 
 TEST(BsdfInputs, UnreadNumbersChangeNoSampleAndReadOnesDo) {
-  const MaterialKind kinds[] = {MaterialKind::Lambert,         MaterialKind::Metal,     MaterialKind::Dielectric,
-                                MaterialKind::Phong,           MaterialKind::Emissive,  MaterialKind::Conductor,
-                                MaterialKind::RoughDielectric, MaterialKind::MetalRough};
+  const MaterialKind kinds[] = {MaterialKind::Lambert,       MaterialKind::PhongMetal,    MaterialKind::Dielectric,
+                                MaterialKind::Phong,         MaterialKind::Emissive,      MaterialKind::GgxConductor,
+                                MaterialKind::GgxDielectric, MaterialKind::GltfMetalRough};
   for (const MaterialKind kind : kinds) {
     for (const float roughness : {0.0f, 0.3f}) {
       const Material m = material(kind, roughness);

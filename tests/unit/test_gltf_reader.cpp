@@ -46,7 +46,7 @@ TEST_F(GltfReader, ATriangleWithItsCameraAndFilm) {
   EXPECT_EQ(s.settings.width, 16u);
   EXPECT_EQ(s.settings.height, 8u);  // the camera's aspect ratio 2
   EXPECT_EQ(s.camera.origin, (Vec3{0, 0, 3}));
-  EXPECT_EQ(s.materials[0].kind, MaterialKind::MetalRough);
+  EXPECT_EQ(s.materials[0].kind, MaterialKind::GltfMetalRough);
   EXPECT_EQ(s.materials[0].roughness, 0.5f);
   EXPECT_EQ(s.background.radiance, (Vec3{1, 1, 1}));  // no lights of its own: a white sky
 }

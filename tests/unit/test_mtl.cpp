@@ -82,7 +82,7 @@ TEST(Mtl, EveryMappingRowAndFacesWithoutUsemtl) {
   EXPECT_EQ(glass.ior, 1.45f);
   EXPECT_EQ(glass.tint.y, 1.0f);
   const Material chrome = material_of(3);
-  EXPECT_EQ(chrome.kind, MaterialKind::Metal);
+  EXPECT_EQ(chrome.kind, MaterialKind::PhongMetal);
   EXPECT_EQ(chrome.albedo.x, 0.9f);
   EXPECT_NEAR(chrome.roughness, std::sqrt(2.0f / 100.0f), 1e-6f);
   const Material plastic = material_of(4);

@@ -15,6 +15,7 @@ struct KernelBudget {
   int block;  // threads per block at launch
 };
 
+// clang-format off: a table, aligned by hand
 inline constexpr KernelBudget kKernelBudgets[] = {
     // kernel                            registers stack spill shared block
     // the megakernel, one per integrator (cuda/gpu_film.cu), 16x16 blocks
@@ -24,69 +25,72 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // the light's shadow ray), 12.5 % occupancy throughout. Every kernel holding a SceneView copy
     // has 16 bytes more stack for its mirror_prims and mirror_count. Lowered (2026-11-27) when
     // the texture filter's edge texels stopped taking an integer remainder, and again when lights
-    // went through one dispatch (kernel/light/light.h).
-    {"path_render_kernel", 180, 800, 0, 0, 256},
-    {"whitted_render_kernel", 183, 3440, 0, 0, 256},
-    {"view_render_kernel", 86, 288, 0, 0, 256},
+    // went through one dispatch (kernel/light/light.h); 3 more when materials did
+    // (kernel/material/bsdf.h: a struct per kind), in the same occupancy step.
+    {"path_render_kernel",               183,  800, 0, 0, 256},
+    {"whitted_render_kernel",            182, 3440, 0, 0, 256},
+    {"view_render_kernel",                86,  288, 0, 0, 256},
     // adaptive sampling (cuda/gpu_adaptive.cu)
     // path: mirror images, as the megakernel (18.75 % occupancy -> 12.5 %)
-    {"path_adaptive_pass_kernel", 169, 800, 0, 0, 128},
-    {"whitted_adaptive_pass_kernel", 172, 3440, 0, 0, 128},
-    {"view_adaptive_pass_kernel", 78, 288, 0, 0, 128},
-    {"mark_unconverged_kernel", 40, 0, 0, 0, 128},
-    {"keep_kernel", 16, 0, 0, 0, 128},
+    {"path_adaptive_pass_kernel",        171,  800, 0, 0, 128},
+    {"whitted_adaptive_pass_kernel",     174, 3440, 0, 0, 128},
+    {"view_adaptive_pass_kernel",         78,  288, 0, 0, 128},
+    {"mark_unconverged_kernel",           40,    0, 0, 0, 128},
+    {"keep_kernel",                       16,    0, 0, 0, 128},
     // the stream schedule (cuda/gpu_stream.cu)
-    {"begin_batch_kernel", 20, 0, 0, 0, 128},
-    {"generate_stage_kernel", 24, 0, 0, 0, 128},
-    {"closest_hit_stage_kernel", 72, 288, 0, 0, 128},
+    {"begin_batch_kernel",                20,    0, 0, 0, 128},
+    {"generate_stage_kernel",             24,    0, 0, 0, 128},
+    {"closest_hit_stage_kernel",          72,  288, 0, 0, 128},
     // one register more for render.light_sampling's solid-angle branch, one for Russian
     // roulette's first-vertex throughput and five for spherical triangles (Arvo's sample), in
     // the same occupancy step (25 %); 43 more and a stack frame for mirror images (25 % -> 18.75 %);
     // three more when lights went through one dispatch (kernel/light/light.h: a light sample
-    // carries its delta flag and emitter), in the same occupancy step
-    {"path_shade_stage_kernel", 148, 728, 0, 0, 128},
+    // carries its delta flag and emitter), one more for the materials' dispatch, in the same
+    // occupancy step
+    {"path_shade_stage_kernel",          149,  728, 0, 0, 128},
     // Whitted and views: seven and one more for emission from any material (glTF's), the
     // normal map's bitangent sign and per-axis texture wrap; both within the 8-register
     // allocation step they were in (96 and 48), so occupancy is unchanged
-    {"whitted_shade_stage_kernel", 96, 0, 0, 0, 128},
-    {"view_shade_stage_kernel", 46, 0, 0, 0, 128},
-    {"shadow_any_hit_stage_kernel", 70, 288, 0, 0, 128},
+    {"whitted_shade_stage_kernel",        96,    0, 0, 0, 128},
+    {"view_shade_stage_kernel",           46,    0, 0, 0, 128},
+    {"shadow_any_hit_stage_kernel",       70,  288, 0, 0, 128},
     // the trace variants' stages (kernel/accel/trace_variants.h), held to 64 registers; each shadow
     // stage traces a mirror image's two ways too (trace_shadows: one traversal call site), two to
     // four registers more for the sphere variants, 80 bytes of spills for the 8-wide tree's
-    {"closest_hit_bvh_triangles_kernel", 64, 272, 0, 0, 128},
+    {"closest_hit_bvh_triangles_kernel",  64,  272, 0, 0, 128},
     {"shadow_any_hit_bvh_triangles_kernel", 64, 272, 0, 0, 128},
     // the 8-wide tree: its 64-entry stack, the binary walk's for a deeper tree; 16 bytes of spill stores
     {"closest_hit_wide_bvh_triangles_kernel", 64, 1104, 76, 0, 128},
     {"shadow_any_hit_wide_bvh_triangles_kernel", 64, 1136, 80, 0, 128},
-    {"closest_hit_bvh_spheres_kernel", 50, 272, 0, 0, 128},
-    {"shadow_any_hit_bvh_spheres_kernel", 60, 272, 0, 0, 128},
-    {"closest_hit_kdtree_triangles_kernel", 64, 0, 0, 0, 128},
+    {"closest_hit_bvh_spheres_kernel",    50,  272, 0, 0, 128},
+    {"shadow_any_hit_bvh_spheres_kernel", 60,  272, 0, 0, 128},
+    {"closest_hit_kdtree_triangles_kernel", 64,  0, 0, 0, 128},
     {"shadow_any_hit_kdtree_triangles_kernel", 62, 0, 0, 0, 128},
-    {"closest_hit_kdtree_spheres_kernel", 47, 0, 0, 0, 128},
-    {"shadow_any_hit_kdtree_spheres_kernel", 57, 0, 0, 0, 128},
-    {"closest_hit_grid_triangles_kernel", 64, 32, 4, 0, 128},
+    {"closest_hit_kdtree_spheres_kernel", 47,    0, 0, 0, 128},
+    {"shadow_any_hit_kdtree_spheres_kernel", 57,  0, 0, 0, 128},
+    {"closest_hit_grid_triangles_kernel", 64,   32, 4, 0, 128},
     {"shadow_any_hit_grid_triangles_kernel", 62, 24, 0, 0, 128},  // +1: per-axis texture wrap (a mirror image's
-                                                                  // textured light), in the same step of 8
-    {"closest_hit_grid_spheres_kernel", 53, 24, 0, 0, 128},
-    {"shadow_any_hit_grid_spheres_kernel", 59, 24, 0, 0, 128},
-    {"split_kernel", 17, 0, 0, 0, 128},
-    {"end_batch_kernel", 28, 0, 0, 0, 128},
+                                                                   // textured light), in the same step of 8
+    {"closest_hit_grid_spheres_kernel",   53,   24, 0, 0, 128},
+    {"shadow_any_hit_grid_spheres_kernel", 58,  24, 0, 0, 128},
+    {"split_kernel",                      17,    0, 0, 0, 128},
+    {"end_batch_kernel",                  28,    0, 0, 0, 128},
     // the LBVH build (cuda/lbvh_gpu.cu)
-    {"key_kernel", 13, 0, 0, 0, 256},
-    {"radix_kernel", 20, 0, 0, 0, 256},
-    {"gather_kernel", 24, 0, 0, 0, 256},
-    {"climb_kernel", 30, 0, 0, 0, 256},
+    {"key_kernel",                        13,    0, 0, 0, 256},
+    {"radix_kernel",                      20,    0, 0, 0, 256},
+    {"gather_kernel",                     24,    0, 0, 0, 256},
+    {"climb_kernel",                      30,    0, 0, 0, 256},
     // parity cases (cuda/parity/parity_gpu.cu)
-    {"math_kernel", 29, 0, 0, 0, 256},
-    {"philox_kernel", 18, 0, 0, 0, 256},
-    {"shape_kernel", 42, 0, 0, 0, 256},
-    {"bsdf_kernel", 56, 0, 0, 0, 256},
-    {"adaptive_kernel", 46, 0, 0, 0, 256},
-    {"trace_kernel", 88, 272, 0, 0, 256},
+    {"math_kernel",                       29,    0, 0, 0, 256},
+    {"philox_kernel",                     18,    0, 0, 0, 256},
+    {"shape_kernel",                      42,    0, 0, 0, 256},
+    {"bsdf_kernel",                       56,    0, 0, 0, 256},
+    {"adaptive_kernel",                   46,    0, 0, 0, 256},
+    {"trace_kernel",                      88,  272, 0, 0, 256},
     // the path tracer's sample, with mirror images; one more for per-axis texture wrap
-    {"sample_kernel", 200, 2912, 0, 0, 256},
+    {"sample_kernel",                    203, 2912, 0, 0, 256},
 };
+// clang-format on
 
 inline const KernelBudget* find_kernel_budget(const std::string& name) {
   for (const KernelBudget& b : kKernelBudgets)

@@ -57,8 +57,9 @@ struct EnumNames<BackgroundKind> {
 template <>
 struct EnumNames<MaterialKind> {
   static constexpr const char* kind = "material";
-  static constexpr const char* names[] = {"lambert",  "metal",     "dielectric",       "phong",
-                                          "emissive", "conductor", "rough_dielectric", "metal_rough"};
+#define TRACER_MATERIAL_NAME(Kind, Type, name, feature) name,
+  static constexpr const char* names[] = {TRACER_MATERIAL_KINDS(TRACER_MATERIAL_NAME)};
+#undef TRACER_MATERIAL_NAME
 };
 template <>
 struct EnumNames<FresnelKind> {

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "io/json_reader.h"
+#include "kernel/material/material.h"
 #include "kernel/scene/render_settings.h"
 #include "kernel/scene/scene_view.h"
-#include "kernel/shading/material.h"
 
 namespace tracer {
 

@@ -149,7 +149,7 @@ GltfMaterials::Baked GltfMaterials::texture(int index, int tex_coord, Bake bake,
 
 Material GltfMaterials::convert(const tinygltf::Material& g, const std::string& path, GltfUvTransform& uv) {
   Material m{};
-  m.kind = MaterialKind::MetalRough;
+  m.kind = MaterialKind::GltfMetalRough;
   m.fresnel = FresnelKind::Schlick;
   for (uint32_t& t : m.texture) t = kNoTexture;
   m.factor_map = m.normal_map = m.bump_map = kNoTexture;

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/shading/material.h"
+#include "kernel/material/material.h"
 #include "scene/gltf_file.h"
 #include "scene/scene.h"
 

@@ -5,7 +5,7 @@
 
 #include "accel/bounds.h"
 #include "kernel/light/light.h"
-#include "kernel/shading/bsdf.h"
+#include "kernel/material/bsdf.h"
 #include "kernel/shading/mirror_images.h"
 
 namespace tracer {

@@ -32,7 +32,8 @@ void read_conductor_fresnel(JsonObject& obj, TextureLoader& textures, Material& 
   if (!has_eta) {
     m.fresnel = FresnelKind::Schlick;
     m.albedo = textures.colour(obj, "albedo", m.texture[kSlotAlbedo]);
-    if (!(max_component(m.albedo) <= 1.0f)) obj.fail("albedo", "must be in [0, 1] (the reflectance at normal incidence)");
+    if (!(max_component(m.albedo) <= 1.0f))
+      obj.fail("albedo", "must be in [0, 1] (the reflectance at normal incidence)");
     return;
   }
   if (obj.find("albedo")) obj.fail("albedo", "give albedo (Schlick's F0) or eta and k, not both");
@@ -59,7 +60,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.kind = MaterialKind::Lambert;
     m.albedo = textures.colour(obj, "albedo", m.texture[kSlotAlbedo]);
   } else if (type == "metal") {
-    m.kind = MaterialKind::Metal;
+    m.kind = MaterialKind::PhongMetal;
     m.albedo = textures.colour(obj, "albedo", m.texture[kSlotAlbedo]);
     m.roughness = unit_interval(obj, "roughness", 0.0f);
   } else if (type == "dielectric") {
@@ -80,17 +81,17 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.ior = positive_ior(obj, 1.0f);
     m.factor_map = textures.data_map(obj, "specular_map");
   } else if (type == "conductor") {
-    m.kind = MaterialKind::Conductor;
+    m.kind = MaterialKind::GgxConductor;
     read_conductor_fresnel(obj, textures, m);
     m.roughness = unit_interval(obj, "roughness", 0.0f);
   } else if (type == "rough_dielectric") {
-    m.kind = MaterialKind::RoughDielectric;
+    m.kind = MaterialKind::GgxDielectric;
     m.ior = positive_ior(obj, std::nullopt);
     m.roughness = unit_interval(obj, "roughness", 0.0f);
     m.tint = textures.colour_or(obj, "tint", {1.0f, 1.0f, 1.0f}, m.texture[kSlotTint]);
     m.fresnel = parse_enum<FresnelKind>(obj.string_or("fresnel", "schlick"), file + ": " + obj.child("fresnel"));
   } else if (type == "metal_rough") {
-    m.kind = MaterialKind::MetalRough;
+    m.kind = MaterialKind::GltfMetalRough;
     m.albedo = textures.colour(obj, "base_color", m.texture[kSlotAlbedo]);
     if (!(max_component(m.albedo) <= 1.0f)) obj.fail("base_color", "must be in [0, 1]");
     m.metallic = unit_interval(obj, "metallic", 0.0f);
@@ -104,7 +105,8 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.albedo =
         textures.colour_or(obj, "albedo", {0.0f, 0.0f, 0.0f}, m.texture[kSlotAlbedo]);  // an emitter that also reflects
   }
-  if (type != "dielectric" && type != "rough_dielectric" && type != "emissive") {  // surfaces with a diffuse or glossy response
+  if (type != "dielectric" && type != "rough_dielectric" &&
+      type != "emissive") {  // surfaces with a diffuse or glossy response
     m.normal_map = textures.data_map(obj, "normal_map");
     m.bump_map = textures.data_map(obj, "bump_map");
     if (m.normal_map != kNoTexture && m.bump_map != kNoTexture)
@@ -116,14 +118,10 @@ Material read_material(const Json& value, const std::string& path, const std::st
 
 uint32_t material_feature(MaterialKind kind) {
   switch (kind) {
-    case MaterialKind::Lambert: return kFeatureLambert;
-    case MaterialKind::Metal: return kFeatureMetal;
-    case MaterialKind::Dielectric: return kFeatureDielectric;
-    case MaterialKind::Phong: return kFeaturePhong;
-    case MaterialKind::Emissive: return kFeatureEmissive;
-    case MaterialKind::Conductor:
-    case MaterialKind::RoughDielectric:
-    case MaterialKind::MetalRough: return kFeatureMicrofacet;
+#define TRACER_MATERIAL_FEATURE(Kind, Type, name, feature) \
+  case MaterialKind::Kind: return feature;
+    TRACER_MATERIAL_KINDS(TRACER_MATERIAL_FEATURE)
+#undef TRACER_MATERIAL_FEATURE
   }
   return 0;
 }

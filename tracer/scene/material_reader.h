@@ -4,7 +4,7 @@
 #include <string>
 
 #include "io/json_reader.h"
-#include "kernel/shading/material.h"
+#include "kernel/material/material.h"
 #include "scene/texture_loader.h"
 
 namespace tracer {

@@ -41,7 +41,7 @@ Material material_from_mtl(const MtlMaterial& mtl, TextureLoader& textures, cons
     m.tint = mtl.kd;
   } else if (mtl.illum == 3 && max_component(mtl.kd) == 0.0f && max_component(mtl.ks) > 0.0f) {
     type = "metal";
-    m.kind = MaterialKind::Metal;
+    m.kind = MaterialKind::PhongMetal;
     m.albedo = mtl.ks;
     m.roughness = std::min(1.0f, std::sqrt(2.0f / (std::max(mtl.ns, 0.0f) + 2.0f)));
   } else if (max_component(mtl.ks) > 0.0f) {

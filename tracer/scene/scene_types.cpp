@@ -20,7 +20,9 @@ const std::map<std::string, std::vector<std::string>>& accepted_scene_types() {
   static const std::map<std::string, std::vector<std::string>> types = {
       {"shape", {"sphere", "plane", "triangle", "quad", "box", "mesh", "gltf"}},
       {"material", names_of<MaterialKind>()},
-      {"light", {"point"}},
+#define TRACER_DECLARED_LIGHT_TYPE(Kind, type) type,
+      {"light", {TRACER_DECLARED_LIGHT_KINDS(TRACER_DECLARED_LIGHT_TYPE)}},
+#undef TRACER_DECLARED_LIGHT_TYPE
       {"background", names_of<BackgroundKind>()},
       {"integrator", names_of<IntegratorKind>()},
       {"sampler", names_of<SamplerKind>()},

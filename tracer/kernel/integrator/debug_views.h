@@ -6,15 +6,6 @@
 
 namespace tracer {
 
-TRACER_HD Vec3 material_albedo(const Material& m) {
-  switch (m.kind) {
-    case MaterialKind::Dielectric:
-    case MaterialKind::RoughDielectric: return m.tint;
-    case MaterialKind::Emissive: return m.radiance;
-    default: return m.albedo;
-  }
-}
-
 // The view of `hit`, the closest hit of `ray`.
 TRACER_HD Vec3 debug_view(const SceneView& scene, const Ray& ray, const Hit& hit) {
   if (hit.prim == kNoHit) return {0.0f, 0.0f, 0.0f};

@@ -18,7 +18,7 @@
 #include "kernel/geom/ray_offset.h"
 #include "kernel/integrator/whitted.h"
 #include "kernel/light/light.h"
-#include "kernel/shading/bsdf.h"
+#include "kernel/material/bsdf.h"
 #include "kernel/shading/mirror_images.h"
 #include "kernel/shading/surface.h"
 

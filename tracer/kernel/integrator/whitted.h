@@ -1,74 +1,16 @@
 // Whitted ray tracing (Whitted 1980) with Blinn-Phong local shading, made iterative: an
 // explicit fixed-size stack of weighted rays replaces recursion. How each material kind
-// maps onto the model is documented in docs/materials.md and coded in whitted_response().
+// maps onto the model is documented in docs/materials.md and coded in its kind's whitted()
+// (kernel/material/, through whitted_response() in bsdf.h).
 #pragma once
 #include "kernel/geom/ray_offset.h"
 #include "kernel/integrator/ray_counts.h"
 #include "kernel/light/light.h"
-#include "kernel/shading/bsdf.h"
+#include "kernel/material/bsdf.h"
 #include "kernel/shading/optics.h"
 #include "kernel/shading/surface.h"
 
 namespace tracer {
-
-// The classic model's coefficients for one material.
-struct WhittedResponse {
-  Vec3 ka, kd, ks;  // ambient, diffuse, specular reflectance
-  float shininess;
-  Vec3 kr;  // mirror reflection weight
-  Vec3 kt;  // transmission weight, split by Fresnel into reflection and refraction
-  float ior;
-  FresnelKind fresnel;
-  Vec3 emission;
-  bool two_sided;
-  bool brdf;  // point lights reflect by the material's BSDF f cos (the microfacet kinds), not kd and ks
-};
-
-// cos_o: the cosine between the view direction and the facing shading normal (the smooth
-// conductor's Fresnel reflectance).
-TRACER_HD WhittedResponse whitted_response(const Material& m, float cos_o) {
-  const Vec3 zero = {0.0f, 0.0f, 0.0f};
-  WhittedResponse w = {zero, zero, zero, 1.0f, zero, zero, 1.0f, m.fresnel, m.radiance, m.two_sided != 0, false};
-  switch (m.kind) {
-    case MaterialKind::Lambert:
-      w.ka = m.albedo;
-      w.kd = m.albedo;
-      break;
-    case MaterialKind::Metal:  // a mirror tinted by albedo; roughness has no meaning here
-      w.kr = m.albedo;
-      break;
-    case MaterialKind::Dielectric:
-      w.kt = m.tint;
-      w.ior = m.ior;
-      break;
-    case MaterialKind::Phong:
-      w.ka = m.ambient;
-      w.kd = m.albedo;
-      w.ks = m.specular;
-      w.shininess = m.shininess;
-      w.kr = Vec3{1.0f, 1.0f, 1.0f} * m.reflectivity;
-      w.kt = Vec3{1.0f, 1.0f, 1.0f} * m.transparency;
-      w.ior = m.ior;
-      break;
-    case MaterialKind::Emissive:  // an emitter, Lambertian with its albedo (0 unless given)
-      w.ka = m.albedo;
-      w.kd = m.albedo;
-      break;
-    case MaterialKind::Conductor:  // a mirror tinted by its Fresnel reflectance, or lit by its BRDF
-      if (is_smooth(m.roughness)) w.kr = conductor_fresnel(m, cos_o);
-      w.brdf = !is_smooth(m.roughness);
-      break;
-    case MaterialKind::RoughDielectric:  // the smooth dielectric, or lit by its BRDF (no refraction)
-      if (is_smooth(m.roughness)) w.kt = m.tint, w.ior = m.ior;
-      w.brdf = !is_smooth(m.roughness);
-      break;
-    case MaterialKind::MetalRough:  // lit by its BRDF; ambient lights the diffuse part
-      w.ka = m.albedo * ((1.0f - m.metallic) * (1.0f - m.transmission));
-      w.brdf = true;
-      break;
-  }
-  return w;
-}
 
 struct WhittedTask {
   Ray ray;

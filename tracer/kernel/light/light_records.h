@@ -16,9 +16,19 @@ enum class LightKind : uint32_t {
   Environment  // the background, sampled by its cells (environment_light.h)
 };
 
-// Whether lights of this kind are declared by the scene (SceneView::lights) rather than made of
-// its shapes or its background.
-TRACER_HD constexpr bool is_declared_kind(LightKind kind) { return kind == LightKind::Point; }
+// The kinds a scene file declares (SceneView::lights; the others are made of its shapes or its
+// background), as X(Kind, its scene-file type), listed once.
+#define TRACER_DECLARED_LIGHT_KINDS(X) X(Point, "point")
+
+TRACER_HD constexpr bool is_declared_kind(LightKind kind) {
+  switch (kind) {
+#define TRACER_DECLARED_LIGHT_CASE(Kind, type) \
+  case LightKind::Kind: return true;
+    TRACER_DECLARED_LIGHT_KINDS(TRACER_DECLARED_LIGHT_CASE)
+#undef TRACER_DECLARED_LIGHT_CASE
+    default: return false;
+  }
+}
 
 // A light the scene declares (a kind for which is_declared_kind holds).
 struct Light {

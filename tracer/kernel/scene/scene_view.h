@@ -12,9 +12,9 @@
 #include "kernel/camera/sampler.h"
 #include "kernel/geom/primitive.h"
 #include "kernel/light/light_records.h"
+#include "kernel/material/material.h"
 #include "kernel/scene/render_settings.h"
 #include "kernel/scene/scene_arrays.h"
-#include "kernel/shading/material.h"
 
 namespace tracer {
 

@@ -1,5 +1,5 @@
 // What a BSDF returns: a sampled direction with its weight, or an evaluated value with its
-// density (kernel/shading/bsdf.h).
+// density (kernel/material/bsdf.h).
 #pragma once
 #include "kernel/base/vec3.h"
 

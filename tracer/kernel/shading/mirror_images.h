@@ -7,13 +7,14 @@
 // are weighted against each other by the power heuristic (Veach 1997); with one image chosen
 // per vertex its density is the light's selection probability over the mirror count times
 // 1 / the solid angle from x'. A planar mirror is a plane, quad or flat triangle (no shading
-// normals, normal or bump map) of a perfect mirror: metal of roughness 0 or a smooth conductor,
-// with no texture on its colour. Point lights and the sky have no image: only shapes are sampled.
+// normals, normal or bump map) of a perfect mirror (its kind's is_perfect_mirror: metal of roughness
+// 0 or a smooth conductor), with no texture on its colour. Point lights and the sky have no image: only shapes are
+// sampled.
 #pragma once
 #include "kernel/accel/primitive_hit.h"
 #include "kernel/base/float_to_int.h"
 #include "kernel/light/light.h"
-#include "kernel/shading/bsdf.h"
+#include "kernel/material/bsdf.h"
 
 namespace tracer {
 
@@ -22,9 +23,8 @@ TRACER_HD bool is_planar_mirror(const SceneView& scene, const Primitive& p) {
   if (p.kind == ShapeKind::Triangle && p.shading >= 0 && scene.triangle_shading[p.shading].has_normals != 0u)
     return false;
   const Material& m = scene.materials[p.material];
-  const bool mirror = (m.kind == MaterialKind::Metal && m.roughness == 0.0f) ||
-                      (m.kind == MaterialKind::Conductor && is_smooth(m.roughness));
-  return mirror && m.texture[kSlotAlbedo] == kNoTexture && m.normal_map == kNoTexture && m.bump_map == kNoTexture;
+  return is_perfect_mirror(m) && m.texture[kSlotAlbedo] == kNoTexture && m.normal_map == kNoTexture &&
+         m.bump_map == kNoTexture;
 }
 
 // The unit normal of a planar mirror's plane (its geometric normal).
@@ -34,12 +34,6 @@ TRACER_HD Vec3 mirror_normal(const Primitive& p) {
     case ShapeKind::Quad: return normalize(cross(p.b, p.c));
     default: return normalize(cross(p.b - p.a, p.c - p.a));
   }
-}
-
-// What a planar mirror reflects of light arriving at cos_theta to its normal: what
-// sample_bsdf's specular reflection weighs.
-TRACER_HD Vec3 mirror_reflectance(const Material& m, float cos_theta) {
-  return m.kind == MaterialKind::Conductor ? conductor_fresnel(m, cos_theta) : m.albedo;
 }
 
 // x reflected across the plane through a with unit normal n.

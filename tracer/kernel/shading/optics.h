@@ -2,7 +2,7 @@
 #pragma once
 #include "kernel/base/detmath.h"
 #include "kernel/base/vec3.h"
-#include "kernel/shading/material.h"
+#include "kernel/material/material.h"
 
 namespace tracer {
 

@@ -2,6 +2,7 @@
 #pragma once
 #include "kernel/accel/trace.h"
 #include "kernel/base/detmath.h"
+#include "kernel/material/bsdf.h"
 #include "kernel/shading/sampling.h"
 
 namespace tracer {
@@ -131,12 +132,7 @@ TRACER_HD Material material_colours_at(const SceneView& scene, const Surface& s)
     if (m.texture[k] != kNoTexture) *colour[k] = sample_texture(scene.textures, scene.texels, m.texture[k], s.u, s.v);
   if (m.factor_map != kNoTexture) {
     const Vec3 f = sample_texture(scene.textures, scene.texels, m.factor_map, s.u, s.v);
-    if (m.kind == MaterialKind::MetalRough) {
-      m.roughness = m.roughness * f.y;
-      m.metallic = m.metallic * f.z;
-    } else {
-      m.specular = m.specular * f;
-    }
+    apply_factor_map(m, f);  // the kind's (kernel/material/bsdf.h)
   }
   return m;
 }

@@ -1,19 +1,30 @@
-// Materials as plain data: one struct for every kind, the fields a kind does not use are 0.
+// Materials as plain data: one record for every kind (the fields a kind does not use are 0),
+// and the list of kinds, written once. Each kind's scattering, Whitted response and views live
+// in its own header under kernel/material/ (material_kind_base.h says what each answers);
+// bsdf.h dispatches on the kind.
 #pragma once
+#include "kernel/base/features.h"
 #include "kernel/base/vec3.h"
 #include "kernel/shading/texture.h"
+
+// X(Kind, the kind's struct, its scene-file name, its feature bit), in the order of the enum's
+// values (bundles store them).
+#define TRACER_MATERIAL_KINDS(X)                                                  \
+  X(Lambert, LambertMaterial, "lambert", kFeatureLambert)                         \
+  X(PhongMetal, PhongMetalMaterial, "metal", kFeatureMetal)                       \
+  X(Dielectric, DielectricMaterial, "dielectric", kFeatureDielectric)             \
+  X(Phong, PhongMaterial, "phong", kFeaturePhong)                                 \
+  X(Emissive, EmissiveMaterial, "emissive", kFeatureEmissive)                     \
+  X(GgxConductor, GgxConductorMaterial, "conductor", kFeatureMicrofacet)          \
+  X(GgxDielectric, GgxDielectricMaterial, "rough_dielectric", kFeatureMicrofacet) \
+  X(GltfMetalRough, GltfMetalRoughMaterial, "metal_rough", kFeatureMicrofacet)
 
 namespace tracer {
 
 enum class MaterialKind : uint32_t {
-  Lambert,
-  Metal,
-  Dielectric,
-  Phong,
-  Emissive,
-  Conductor,
-  RoughDielectric,
-  MetalRough
+#define TRACER_MATERIAL_ENUM(Kind, ...) Kind,
+  TRACER_MATERIAL_KINDS(TRACER_MATERIAL_ENUM)
+#undef TRACER_MATERIAL_ENUM
 };
 enum class FresnelKind : uint32_t { Schlick, Exact };
 
