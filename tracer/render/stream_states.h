@@ -30,13 +30,9 @@ StreamStates allocate_stream_states(const RenderSettings& rs, size_t width, Allo
   st.hit = array(static_cast<Hit*>(nullptr), true);
   st.radiance = array(static_cast<Vec3*>(nullptr), true);
   st.next = array(static_cast<uint8_t*>(nullptr), true);
-  st.throughput = array(static_cast<Vec3*>(nullptr), path);
-  st.from = array(static_cast<Vec3*>(nullptr), path);
-  st.bsdf_pdf = array(static_cast<float*>(nullptr), path);
-  st.depth = array(static_cast<uint32_t*>(nullptr), path);
-  st.specular = array(static_cast<uint8_t*>(nullptr), path);
-  st.first_throughput = array(static_cast<float*>(nullptr), path);
-  st.mirror = array(static_cast<uint32_t*>(nullptr), path);
+#define TRACER_PATH_ALLOCATE(Type, Stored, name, initial) st.name = array(static_cast<Stored*>(nullptr), path);
+  TRACER_PATH_STATE(TRACER_PATH_ALLOCATE)
+#undef TRACER_PATH_ALLOCATE
   st.shadow_origin = array(static_cast<Vec3*>(nullptr), path || whitted);
   st.shadow_dir = array(static_cast<Vec3*>(nullptr), path || whitted);
   st.shadow_tmax = array(static_cast<float*>(nullptr), path || whitted);

@@ -10,9 +10,9 @@
 // With render.mirror_images a non-specular vertex also samples one light through one flat
 // mirror (kernel/shading/mirror_images.h), weighted against the BSDF sample that reaches the
 // light off that mirror; it draws two more pairs, at dimensions past every bounce's four.
-// Random numbers per bounce b: four pairs at dimensions kDimFirstFree + 4b + {0..3} (light
-// position; light choice and BSDF lobe; BSDF direction; roulette and sky cell), drawn by the
-// scene's sampler (sampler.h: Philox pairs, or scrambled Sobol pairs for `sobol`).
+// Random numbers per bounce b: the pairs of PathPair at dimensions kDimFirstFree + kPathPairs b
+// + pair, and with mirror images those of MirrorPair past every bounce's, drawn by the scene's
+// sampler (sampler.h: Philox pairs, or scrambled Sobol pairs for `sobol`).
 #pragma once
 #include "kernel/camera/sampler.h"
 #include "kernel/geom/ray_offset.h"
@@ -24,19 +24,49 @@
 
 namespace tracer {
 
-// A path between two vertices: what the loop carries from one bounce to the next. The
-// megakernel keeps it in registers; the stream schedule stores it in arrays between stages.
+// The pairs of random numbers one path vertex draws, each at kDimFirstFree + kPathPairs *
+// depth + its index; a pair is drawn only where it is read.
+enum PathPair : uint32_t {
+  kPairLightPoint,          // the point on the light
+  kPairLightChoiceAndLobe,  // the light table's choice; the BSDF's lobe or Fresnel choice
+  kPairBsdfDirection,       // the BSDF sample's direction
+  kPairRouletteAndSkyCell,  // Russian roulette; the environment's cell
+  kPathPairs
+};
+
+// With mirror images, at kDimMirrorImages + kMirrorPairs * depth + its index.
+enum MirrorPair : uint32_t {
+  kPairImageChoice,  // the light and the mirror
+  kPairImagePoint,   // the point on the light
+  kMirrorPairs
+};
+
+// A path between two vertices: what the loop carries from one bounce to the next, beside the
+// ray and the radiance every integrator's state has. The megakernel keeps it in registers
+// (PathState); the stream schedule in one array per field between stages (StreamStates,
+// kernel/integrator/stream.h), loaded and stored by load_path and store_path. Listed once:
+// X(type in PathState, type in the stream's array, name, its value at the camera ray).
+#define TRACER_PATH_STATE(X)                                                                 \
+  X(Vec3, Vec3, throughput, (Vec3{1.0f, 1.0f, 1.0f}))                                        \
+  /* the previous shading point, where shape_light_pdf must be evaluated exactly as          \
+     sample_light saw it for the MIS weights to sum to 1 */                                  \
+  X(Vec3, Vec3, from, camera_ray.origin)                                                     \
+  X(float, float, bsdf_pdf, 0.0f) /* the density of the BSDF sample that chose ray */        \
+  X(uint32_t, uint32_t, depth, 0u)                                                           \
+  /* the camera ray or a specular bounce: emission it sees counts fully */                   \
+  X(bool, uint8_t, specular, true)                                                           \
+  /* max throughput after the first vertex's BSDF sample: roulette's unit */                 \
+  X(float, float, first_throughput, 1.0f)                                                    \
+  /* the planar mirror the ray just left, reached from a non-specular vertex (whose from and \
+     bsdf_pdf the state keeps) when mirror images are sampled; else kNoHit */                \
+  X(uint32_t, uint32_t, mirror, kNoHit)
+
 struct PathState {
   Ray ray;
-  Vec3 radiance, throughput;
-  Vec3 from;       // the previous shading point, where light_pdf must be evaluated exactly
-                   // as sample_light saw it for the MIS weights to sum to 1
-  float bsdf_pdf;  // the density of the BSDF sample that chose ray
-  uint32_t depth;
-  bool specular;           // the camera ray or a specular bounce: emission it sees counts fully
-  float first_throughput;  // max throughput after the first vertex's BSDF sample: roulette's unit
-  uint32_t mirror;         // the planar mirror the ray just left, reached from a non-specular vertex (whose
-                           // from and bsdf_pdf the state keeps) when mirror images are sampled; else kNoHit
+  Vec3 radiance;
+#define TRACER_PATH_FIELD(Type, Stored, name, initial) Type name;
+  TRACER_PATH_STATE(TRACER_PATH_FIELD)
+#undef TRACER_PATH_FIELD
 };
 
 // Next-event estimation's shadow ray and the radiance it adds when the light is visible.
@@ -66,11 +96,17 @@ struct PathStep {
   bool alive;   // trace state.ray next
 };
 
-// The first dimension of the mirror-image pairs of bounce 0: past the four of every bounce.
-constexpr uint32_t kDimMirrorImages = kDimFirstFree + 4u * kMaxDepth;
+// The first dimension of the mirror-image pairs of bounce 0: past the pairs of every bounce.
+constexpr uint32_t kDimMirrorImages = kDimFirstFree + kPathPairs * kMaxDepth;
 
 TRACER_HD PathState path_start(const Ray& camera_ray) {
-  return {camera_ray, {0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, camera_ray.origin, 0.0f, 0u, true, 1.0f, kNoHit};
+  PathState st;
+  st.ray = camera_ray;
+  st.radiance = {0.0f, 0.0f, 0.0f};
+#define TRACER_PATH_START(Type, Stored, name, initial) st.name = initial;
+  TRACER_PATH_STATE(TRACER_PATH_START)
+#undef TRACER_PATH_START
+  return st;
 }
 
 // The shadow ray from the shading point at s to the sampled light: an emitting surface as the
@@ -159,7 +195,7 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
   if (st.depth >= rs.max_depth) return step;
   const Vec3 wo = -st.ray.dir;
   const Vec3 n = front ? s.ns : -s.ns;
-  const uint32_t dim = kDimFirstFree + 4u * st.depth;
+  const uint32_t dim = kDimFirstFree + kPathPairs * st.depth;
   const bool sample_lights = nee && !is_specular(m);
   const bool roulette = st.depth + 1 >= rs.rr_depth;
   // An image sample only where the mirror's vertex may still bounce, as a BSDF path could.
@@ -169,15 +205,16 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
   // changes no other.
   float light_u1 = 0.0f, light_u2 = 0.0f, pick_u = 0.0f, choice_u = 0.0f, dir_u1 = 0.0f, dir_u2 = 0.0f, rr_u = 0.0f,
         sky_cell_u = 0.0f, image_pick_u = 0.0f, mirror_u = 0.0f, image_u1 = 0.0f, image_u2 = 0.0f;
-  if (sample_lights) draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim, light_u1, light_u2);
+  if (sample_lights) draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + kPairLightPoint, light_u1, light_u2);
   if ((sample_lights && scene.light_entry_count > 1) || bsdf_uses_choice(m))
-    draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 1u, pick_u, choice_u);
-  if (!is_specular(m)) draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 2u, dir_u1, dir_u2);
+    draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + kPairLightChoiceAndLobe, pick_u, choice_u);
+  if (!is_specular(m)) draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + kPairBsdfDirection, dir_u1, dir_u2);
   if (roulette || (sample_lights && scene.environment_light != kNoHit))
-    draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + 3u, rr_u, sky_cell_u);
+    draw_uniform2(rs.sampler, rs.seed, pixel, sample, dim + kPairRouletteAndSkyCell, rr_u, sky_cell_u);
   if (sample_images) {
-    draw_uniform2(rs.sampler, rs.seed, pixel, sample, kDimMirrorImages + 2u * st.depth, image_pick_u, mirror_u);
-    draw_uniform2(rs.sampler, rs.seed, pixel, sample, kDimMirrorImages + 2u * st.depth + 1u, image_u1, image_u2);
+    const uint32_t image_dim = kDimMirrorImages + kMirrorPairs * st.depth;
+    draw_uniform2(rs.sampler, rs.seed, pixel, sample, image_dim + kPairImageChoice, image_pick_u, mirror_u);
+    draw_uniform2(rs.sampler, rs.seed, pixel, sample, image_dim + kPairImagePoint, image_u1, image_u2);
   }
 
   if (sample_lights) {

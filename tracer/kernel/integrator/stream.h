@@ -32,14 +32,10 @@ struct StreamStates {
   Hit* hit;  // its closest hit
   Vec3* radiance;
   uint8_t* next;
-  // the path tracer's state between bounces (PathState)
-  Vec3* throughput;
-  Vec3* from;
-  float* bsdf_pdf;
-  uint32_t* depth;
-  uint8_t* specular;
-  float* first_throughput;
-  uint32_t* mirror;
+  // the path tracer's state between bounces (PathState: TRACER_PATH_STATE in path.h)
+#define TRACER_PATH_ARRAY(Type, Stored, name, initial) Stored* name;
+  TRACER_PATH_STATE(TRACER_PATH_ARRAY)
+#undef TRACER_PATH_ARRAY
   // the shadow ray (ShadowQuery; Whitted's has emitter kNoHit and no contribution)
   Vec3* shadow_origin;
   Vec3* shadow_dir;
@@ -62,21 +58,22 @@ struct StreamStates {
 };
 
 TRACER_HD PathState load_path(const StreamStates& st, uint32_t i) {
-  return {{st.origin[i], st.dir[i]}, st.radiance[i],         st.throughput[i], st.from[i], st.bsdf_pdf[i], st.depth[i],
-          st.specular[i] != 0u,      st.first_throughput[i], st.mirror[i]};
+  PathState p;
+  p.ray = {st.origin[i], st.dir[i]};
+  p.radiance = st.radiance[i];
+#define TRACER_PATH_LOAD(Type, Stored, name, initial) p.name = static_cast<Type>(st.name[i]);
+  TRACER_PATH_STATE(TRACER_PATH_LOAD)
+#undef TRACER_PATH_LOAD
+  return p;
 }
 
 TRACER_HD void store_path(const StreamStates& st, uint32_t i, const PathState& p) {
   st.origin[i] = p.ray.origin;
   st.dir[i] = p.ray.dir;
   st.radiance[i] = p.radiance;
-  st.throughput[i] = p.throughput;
-  st.from[i] = p.from;
-  st.bsdf_pdf[i] = p.bsdf_pdf;
-  st.depth[i] = p.depth;
-  st.specular[i] = p.specular ? 1u : 0u;
-  st.first_throughput[i] = p.first_throughput;
-  st.mirror[i] = p.mirror;
+#define TRACER_PATH_STORE(Type, Stored, name, initial) st.name[i] = static_cast<Stored>(p.name);
+  TRACER_PATH_STATE(TRACER_PATH_STORE)
+#undef TRACER_PATH_STORE
 }
 
 TRACER_HD void store_shadow_ray(const StreamStates& st, uint32_t i, const Ray& ray, float tmax, uint32_t emitter) {

@@ -3,7 +3,9 @@
 // of RenderSettings here and, on the host (options/render_options.h), the scene file's key
 // `section.name`, the command-line flag --name (underscores as dashes), the key `name` of a
 // golden's manifest entry, a partial file's identity and --stats, and the help text. A
-// setting added here reaches all of them; only its use in the kernel is left to write.
+// setting added here reaches all of them; what is left to write is its use in the kernel, and
+// for a new enum its names (options/enum_names.h) and its bound in options/settings_check.h
+// (which a scene bundle's reader applies too).
 // `recorded` says when an identity records the option: Always, PathTracer (the path
 // integrator only), PathTracerUnderEnvironmentLight, or UnlessDefault.
 #pragma once
