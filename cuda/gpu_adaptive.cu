@@ -20,15 +20,15 @@ uint32_t blocks_for(size_t n) { return static_cast<uint32_t>((n + kBlock - 1) / 
 
 // One thread per running pixel: samples [begin, end) into its even and odd sums, with the code
 // of the integrator kKind alone (render_pixel_halves_as).
-template <IntegratorKind kKind>
+template <IntegratorKind kKind, uint32_t kFeatures = TRACER_KERNEL_FEATURES>
 __device__ void adaptive_pass(const SceneView& scene, const uint32_t* running, size_t count, uint32_t begin,
                               uint32_t end, FilmSum* even, FilmSum* odd, unsigned long long* counters) {
   const size_t i = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (i >= count) return;
   const uint32_t p = running[i];
   RayCounts counts = {0, 0, 0};
-  render_pixel_halves_as<kKind>(scene, p % scene.settings.width, p / scene.settings.width, begin, end, even[p], odd[p],
-                                counts);
+  render_pixel_halves_as<kKind, kFeatures>(scene, p % scene.settings.width, p / scene.settings.width, begin, end,
+                                           even[p], odd[p], counts);
   atomicAdd(&counters[kCamera], static_cast<unsigned long long>(counts.camera));
   atomicAdd(&counters[kSecondary], static_cast<unsigned long long>(counts.secondary));
   atomicAdd(&counters[kShadow], static_cast<unsigned long long>(counts.shadow));
@@ -41,8 +41,16 @@ __global__ void whitted_adaptive_pass_kernel(const SceneView scene, const uint32
   adaptive_pass<IntegratorKind::Whitted>(scene, running, count, begin, end, even, odd, counters);
 }
 
+// The path tracer without and with mirror images' code, as gpu_film.cu's.
 __global__ void path_adaptive_pass_kernel(const SceneView scene, const uint32_t* running, size_t count, uint32_t begin,
                                           uint32_t end, FilmSum* even, FilmSum* odd, unsigned long long* counters) {
+  adaptive_pass<IntegratorKind::Path, kKernelWithoutMirrorImages>(scene, running, count, begin, end, even, odd,
+                                                                  counters);
+}
+
+__global__ void path_mirror_images_adaptive_pass_kernel(const SceneView scene, const uint32_t* running, size_t count,
+                                                        uint32_t begin, uint32_t end, FilmSum* even, FilmSum* odd,
+                                                        unsigned long long* counters) {
   adaptive_pass<IntegratorKind::Path>(scene, running, count, begin, end, even, odd, counters);
 }
 
@@ -55,10 +63,11 @@ __global__ void view_adaptive_pass_kernel(const SceneView scene, const uint32_t*
 using AdaptivePassKernel = void (*)(const SceneView, const uint32_t*, size_t, uint32_t, uint32_t, FilmSum*, FilmSum*,
                                     unsigned long long*);
 
-AdaptivePassKernel adaptive_pass_kernel_for(IntegratorKind kind) {
-  switch (kind) {
+AdaptivePassKernel adaptive_pass_kernel_for(const SceneView& view) {
+  switch (view.settings.integrator) {
     case IntegratorKind::Whitted: return whitted_adaptive_pass_kernel;
-    case IntegratorKind::Path: return path_adaptive_pass_kernel;
+    case IntegratorKind::Path:
+      return view.mirror_count > 0 ? path_mirror_images_adaptive_pass_kernel : path_adaptive_pass_kernel;
     default: return view_adaptive_pass_kernel;
   }
 }
@@ -124,8 +133,8 @@ struct GpuBackend {
     }
     const CudaEvent start, stop;
     TRACER_CUDA_CHECK(cudaEventRecord(start.event));
-    adaptive_pass_kernel_for(scene.settings.integrator)<<<blocks_for(list.size()), kBlock>>>(
-        scene, running.get(), list.size(), begin, end, even.get(), odd.get(), counters.get());
+    adaptive_pass_kernel_for(scene)<<<blocks_for(list.size()), kBlock>>>(scene, running.get(), list.size(), begin, end,
+                                                                         even.get(), odd.get(), counters.get());
     TRACER_CUDA_CHECK(cudaGetLastError());
     TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
     kernel_seconds += seconds_between(start, stop);

@@ -15,12 +15,12 @@ enum Counter { kCamera, kSecondary, kShadow, kNonfinite, kOverflow, kCounterCoun
 
 // 16x16 blocks; each thread loops over its pixel's samples in index order, with the code of
 // the integrator kKind alone (render_pixel_as).
-template <IntegratorKind kKind>
+template <IntegratorKind kKind, uint32_t kFeatures = TRACER_KERNEL_FEATURES>
 __device__ void render_pixels(const SceneView& scene, SampleRange range, FilmSum* film, unsigned long long* counters) {
   const uint32_t x = blockIdx.x * blockDim.x + threadIdx.x, y = blockIdx.y * blockDim.y + threadIdx.y;
   if (x >= scene.settings.width || y >= scene.settings.height) return;
   RayCounts counts = {0, 0, 0};
-  const FilmSum sum = render_pixel_as<kKind>(scene, x, y, range.begin, range.end, counts);
+  const FilmSum sum = render_pixel_as<kKind, kFeatures>(scene, x, y, range.begin, range.end, counts);
   film[static_cast<size_t>(y) * scene.settings.width + x] = sum;
   // Integer sums: the totals do not depend on the order threads add them in.
   atomicAdd(&counters[kCamera], static_cast<unsigned long long>(counts.camera));
@@ -37,8 +37,15 @@ __global__ void whitted_render_kernel(const SceneView scene, SampleRange range, 
   render_pixels<IntegratorKind::Whitted>(scene, range, film, counters);
 }
 
+// The path tracer without mirror images' code (kernel/base/features.h), for scenes without a flat
+// mirror to sample through, and with it.
 __global__ void path_render_kernel(const SceneView scene, SampleRange range, FilmSum* film,
                                    unsigned long long* counters) {
+  render_pixels<IntegratorKind::Path, kKernelWithoutMirrorImages>(scene, range, film, counters);
+}
+
+__global__ void path_mirror_images_render_kernel(const SceneView scene, SampleRange range, FilmSum* film,
+                                                 unsigned long long* counters) {
   render_pixels<IntegratorKind::Path>(scene, range, film, counters);
 }
 
@@ -50,10 +57,10 @@ __global__ void view_render_kernel(const SceneView scene, SampleRange range, Fil
 
 using RenderKernel = void (*)(const SceneView, SampleRange, FilmSum*, unsigned long long*);
 
-RenderKernel render_kernel_for(IntegratorKind kind) {
-  switch (kind) {
+RenderKernel render_kernel_for(const SceneView& view) {
+  switch (view.settings.integrator) {
     case IntegratorKind::Whitted: return whitted_render_kernel;
-    case IntegratorKind::Path: return path_render_kernel;
+    case IntegratorKind::Path: return view.mirror_count > 0 ? path_mirror_images_render_kernel : path_render_kernel;
     default: return view_render_kernel;
   }
 }
@@ -90,6 +97,7 @@ std::string describe_render_kernel() {
   const cudaDeviceProp prop = select_cuda_device();
   return describe_render_kernel("whitted_render_kernel", whitted_render_kernel, prop) + "\n" +
          describe_render_kernel("path_render_kernel", path_render_kernel, prop) + "\n" +
+         describe_render_kernel("path_mirror_images_render_kernel", path_mirror_images_render_kernel, prop) + "\n" +
          describe_render_kernel("view_render_kernel", view_render_kernel, prop);
 }
 
@@ -126,7 +134,7 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
     const CudaEvent start, stop;
     const dim3 block(16, 16), grid((rs.width + 15) / 16, (rs.height + 15) / 16);
     TRACER_CUDA_CHECK(cudaEventRecord(start.event));
-    render_kernel_for(rs.integrator)<<<grid, block>>>(device_scene.view(), range, film.get(), counters.get());
+    render_kernel_for(view)<<<grid, block>>>(device_scene.view(), range, film.get(), counters.get());
     TRACER_CUDA_CHECK(cudaGetLastError());
     TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
     r.run.kernel_seconds = seconds_between(start, stop);

@@ -26,14 +26,14 @@ __global__ void begin_batch_kernel(StreamTarget target, uint64_t first, size_t c
 
 // Stage kStage over a queue, its ray counts added to the counters; the shade stage with the
 // code of the integrator kKind alone (stream_shade_as).
-template <StreamStage kStage, IntegratorKind kKind = IntegratorKind::Path>
+template <StreamStage kStage, IntegratorKind kKind = IntegratorKind::Path, uint32_t kFeatures = TRACER_KERNEL_FEATURES>
 __device__ void run_stage(const SceneView& scene, const StreamStates& st, const uint32_t* queue, size_t size,
                           unsigned long long* counters) {
   const size_t q = static_cast<size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (q >= size) return;
   RayCounts counts = {0, 0, 0};
   if constexpr (kStage == StreamStage::Shade)
-    stream_shade_as<kKind>(scene, st, queue[q], counts);
+    stream_shade_as<kKind, kFeatures>(scene, st, queue[q], counts);
   else
     stream_stage(scene, kStage, st, queue[q], counts);
   // Integer sums: the totals do not depend on the order threads add them in.
@@ -51,7 +51,9 @@ __device__ void run_stage(const SceneView& scene, const StreamStates& st, const 
     run_stage<__VA_ARGS__>(scene, st, queue, size, counters);                                      \
   }
 TRACER_STAGE_KERNEL(generate_stage_kernel, StreamStage::Generate)
-TRACER_STAGE_KERNEL(path_shade_stage_kernel, StreamStage::Shade, IntegratorKind::Path)
+// the path tracer without and with mirror images' code, as gpu_film.cu's
+TRACER_STAGE_KERNEL(path_shade_stage_kernel, StreamStage::Shade, IntegratorKind::Path, kKernelWithoutMirrorImages)
+TRACER_STAGE_KERNEL(path_mirror_images_shade_stage_kernel, StreamStage::Shade, IntegratorKind::Path)
 TRACER_STAGE_KERNEL(whitted_shade_stage_kernel, StreamStage::Shade, IntegratorKind::Whitted)
 TRACER_STAGE_KERNEL(view_shade_stage_kernel, StreamStage::Shade, IntegratorKind::Normals)  // normals, albedo, depth
 #undef TRACER_STAGE_KERNEL
@@ -105,7 +107,8 @@ StageKernel stage_kernel_for(StreamStage stage, const SceneView& scene) {
     case StreamStage::Shade: break;
   }
   switch (scene.settings.integrator) {
-    case IntegratorKind::Path: return path_shade_stage_kernel;
+    case IntegratorKind::Path:
+      return scene.mirror_count > 0 ? path_mirror_images_shade_stage_kernel : path_shade_stage_kernel;
     case IntegratorKind::Whitted: return whitted_shade_stage_kernel;
     default: return view_shade_stage_kernel;
   }
@@ -244,6 +247,7 @@ std::string describe_stream_kernels() {
   return describe_kernel("generate_stage_kernel", generate_stage_kernel, prop) + "\n" +
          describe_kernel("closest_hit_stage_kernel", closest_hit_stage_kernel, prop) + "\n" +
          describe_kernel("path_shade_stage_kernel", path_shade_stage_kernel, prop) + "\n" +
+         describe_kernel("path_mirror_images_shade_stage_kernel", path_mirror_images_shade_stage_kernel, prop) + "\n" +
          describe_kernel("whitted_shade_stage_kernel", whitted_shade_stage_kernel, prop) + "\n" +
          describe_kernel("view_shade_stage_kernel", view_shade_stage_kernel, prop) + "\n" +
          describe_kernel("shadow_any_hit_stage_kernel", shadow_any_hit_stage_kernel, prop) + variants;

@@ -62,6 +62,14 @@ TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
   SceneBundle mirrors = make_scene_bundle(scene, scene.view(), {0, 1}, scene_path);
   mirrors.scalars.settings.integrator = IntegratorKind::Path;
   mirrors.scalars.settings.mirror_images = Switch::On;
+  mirrors.arrays.mirror_prims = {0};
+  write_bundle(bundle, encode_scene_bundle(mirrors));
+  EXPECT_EQ(test::run_command(std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu", &output), 2);
+  EXPECT_NE(output.find("b.bundle: the bundle's view: mirror_prims: 1 planar mirrors, but the features lack "
+                        "mirror-images"),
+            std::string::npos)
+      << output;  // the GPU would run the path kernel compiled without them
+  mirrors.scalars.features |= kFeatureMirrorImages;
   const std::string count = std::to_string(mirrors.arrays.primitives.size());
   mirrors.arrays.mirror_prims = {static_cast<uint32_t>(mirrors.arrays.primitives.size())};
   write_bundle(bundle, encode_scene_bundle(mirrors));

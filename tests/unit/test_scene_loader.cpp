@@ -98,7 +98,7 @@ TEST(SceneLoader, FeatureMaskListsWhatTheSceneUses) {
 }
 
 TEST(SceneLoader, EveryFeatureBitHasOneName) {
-  for (uint32_t bit = 1; bit <= kFeatureMicrofacet; bit <<= 1) EXPECT_EQ(feature_names(bit).size(), 1u) << bit;
+  for (uint32_t bit = 1; bit <= kFeatureMirrorImages; bit <<= 1) EXPECT_EQ(feature_names(bit).size(), 1u) << bit;
   EXPECT_EQ(feature_names(kFeatureMicrofacet), std::vector<std::string>{"microfacet"});
 }
 

@@ -26,13 +26,18 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // has 16 bytes more stack for its mirror_prims and mirror_count. Lowered (2026-11-27) when
     // the texture filter's edge texels stopped taking an integer remainder, and again when lights
     // went through one dispatch (kernel/light/light.h); 3 more when materials did
-    // (kernel/material/bsdf.h: a struct per kind), in the same occupancy step.
-    {"path_render_kernel",               183,  800, 0, 0, 256},
+    // (kernel/material/bsdf.h: a struct per kind), in the same occupancy step. Mirror images are
+    // a kernel feature (kFeatureMirrorImages) since 2026-11-27: a scene without a flat mirror runs
+    // the path kernels compiled without them (183 -> 155 registers here, 12.5 % still).
+    {"path_render_kernel",               155,  800, 0, 0, 256},
+    {"path_mirror_images_render_kernel", 183,  800, 0, 0, 256},
     {"whitted_render_kernel",            182, 3440, 0, 0, 256},
     {"view_render_kernel",                86,  288, 0, 0, 256},
     // adaptive sampling (cuda/gpu_adaptive.cu)
     // path: mirror images, as the megakernel (18.75 % occupancy -> 12.5 %)
-    {"path_adaptive_pass_kernel",        171,  800, 0, 0, 128},
+    // without mirror images 145 (18.75 %), with them 171 (12.5 %)
+    {"path_adaptive_pass_kernel",        145,  800, 0, 0, 128},
+    {"path_mirror_images_adaptive_pass_kernel", 171, 800, 0, 0, 128},
     {"whitted_adaptive_pass_kernel",     174, 3440, 0, 0, 128},
     {"view_adaptive_pass_kernel",         78,  288, 0, 0, 128},
     {"mark_unconverged_kernel",           40,    0, 0, 0, 128},
@@ -46,8 +51,9 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // the same occupancy step (25 %); 43 more and a stack frame for mirror images (25 % -> 18.75 %);
     // three more when lights went through one dispatch (kernel/light/light.h: a light sample
     // carries its delta flag and emitter), one more for the materials' dispatch, in the same
-    // occupancy step
-    {"path_shade_stage_kernel",          149,  728, 0, 0, 128},
+    // occupancy step. Without mirror images' code 124 (25 %); with it 149 (18.75 %)
+    {"path_shade_stage_kernel",          124,  728, 0, 0, 128},
+    {"path_mirror_images_shade_stage_kernel", 149, 728, 0, 0, 128},
     // Whitted and views: seven and one more for emission from any material (glTF's), the
     // normal map's bitangent sign and per-axis texture wrap; both within the 8-register
     // allocation step they were in (96 and 48), so occupancy is unchanged

@@ -34,6 +34,9 @@ std::string view_violation(const SceneBundle& b) {
       (v.settings.integrator != IntegratorKind::Path || v.settings.mirror_images != Switch::On))
     return "mirror_prims: " + std::to_string(b.arrays.mirror_prims.size()) +
            " planar mirrors, but the render does not sample mirror images";
+  if (!b.arrays.mirror_prims.empty() && (v.features & kFeatureMirrorImages) == 0u)
+    return "mirror_prims: " + std::to_string(b.arrays.mirror_prims.size()) +
+           " planar mirrors, but the features lack mirror-images";
   for (const uint32_t id : b.arrays.mirror_prims)
     if (id >= b.arrays.primitives.size())
       return "mirror_prims: primitive " + std::to_string(id) + " of " + std::to_string(b.arrays.primitives.size());

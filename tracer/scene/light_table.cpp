@@ -111,8 +111,9 @@ void build_light_table(Scene& scene) {
     scene.light_table[i].pmf = static_cast<float>(pmf);
     scene.light_table[i].cdf = i + 1 == power.size() ? 1.0f : static_cast<float>(running);
   }
-  // The planar mirrors whose light images the path tracer samples (render.mirror_images). A
-  // render with none to sample runs with the setting off: no arrays for it in a stream's states.
+}
+
+void build_mirror_list(Scene& scene) {
   scene.mirror_prims.clear();
   const bool shapes_lit = std::any_of(scene.light_table.begin(), scene.light_table.end(),
                                       [](const LightEntry& e) { return e.kind == LightKind::Shape; });
@@ -122,7 +123,10 @@ void build_light_table(Scene& scene) {
     for (uint32_t id = 0; id < scene.primitives.size(); ++id)
       if (is_planar_mirror(view, scene.primitives[id])) scene.mirror_prims.push_back(id);
   }
-  if (scene.mirror_prims.empty()) scene.settings.mirror_images = Switch::Off;
+  if (scene.mirror_prims.empty())
+    scene.settings.mirror_images = Switch::Off;
+  else
+    scene.features |= kFeatureMirrorImages;
 }
 
 }  // namespace tracer

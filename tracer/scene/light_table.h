@@ -3,15 +3,19 @@
 // proportional to its power (each kind's header says how it is computed; for the environment,
 // its radiance's luminance integrated over the sphere times pi r^2, r the radius of the
 // scene's bounds).
-// Emissive planes have infinite area and are left out: only BSDF samples find them. With
-// render.mirror_images (path, nee on, a shape light) it also lists every planar mirror
-// (kernel/shading/mirror_images.h).
+// Emissive planes have infinite area and are left out: only BSDF samples find them.
 #pragma once
 #include "scene/scene.h"
 
 namespace tracer {
 
-// Fills light_table, light_of_prim, sky_cells, environment_light and mirror_prims.
+// Fills light_table, light_of_prim, sky_cells and environment_light.
 void build_light_table(Scene& scene);
+
+// The planar mirrors whose light images the path tracer samples (render.mirror_images: path, nee
+// on, a shape light in the table; kernel/shading/mirror_images.h) into mirror_prims, and the
+// scene's kFeatureMirrorImages with them, so that it runs the kernel with their code. A render
+// with none to sample runs with the setting off: no arrays for it in a stream's states.
+void build_mirror_list(Scene& scene);
 
 }  // namespace tracer

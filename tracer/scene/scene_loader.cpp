@@ -127,6 +127,7 @@ void finish_scene(Scene& scene, const RenderOverrides& overrides) {
       if (m.kind == MaterialKind::Dielectric) m.fresnel = *overrides.fresnel;
   scene.offset_scale = ray_offset_scale(scene);
   build_light_table(scene);
+  build_mirror_list(scene);
   const auto build_start = std::chrono::steady_clock::now();
   install_acceleration(build_acceleration(scene.settings.accel, scene.primitives, scene.settings.grid_resolution),
                        scene);
@@ -147,9 +148,9 @@ Scene load_scene(const std::string& path, const RenderOverrides& overrides) {
 }
 
 std::vector<std::string> feature_names(uint32_t features) {
-  static const char* names[] = {"sphere",    "plane",           "triangle", "quad",      "lambert",
-                                "metal",     "dielectric",      "phong",    "emissive",  "point-light",
-                                "thin-lens", "shading-normals", "textures", "microfacet"};
+  static const char* names[] = {"sphere",    "plane",           "triangle", "quad",       "lambert",
+                                "metal",     "dielectric",      "phong",    "emissive",   "point-light",
+                                "thin-lens", "shading-normals", "textures", "microfacet", "mirror-images"};
   std::vector<std::string> out;
   for (uint32_t i = 0; i < sizeof names / sizeof names[0]; ++i)
     if (features & (1u << i)) out.push_back(names[i]);

@@ -2,7 +2,9 @@
 // kind of shape, material, light and lens the scene uses, and kernel code skips the paths
 // whose bit is clear, so a scene pays only for what it uses. A CPU kernel variant compiled
 // for a feature set (tracer/render/cpu_kernel.h) defines TRACER_KERNEL_FEATURES to it, and
-// the code of every feature outside the set is compiled out.
+// the code of every feature outside the set is compiled out. Code that a GPU kernel may leave
+// out takes the mask as a template argument (kFeatures, default TRACER_KERNEL_FEATURES), so one
+// .cu file can hold a kernel with the feature and one without (cuda/gpu_film.cu).
 #pragma once
 #include "kernel/base/platform.h"
 
@@ -22,12 +24,16 @@ enum FeatureBit : uint32_t {
   kFeatureThinLens = 1u << 10,
   kFeatureShadingNormals = 1u << 11,
   kFeatureTextures = 1u << 12,
-  kFeatureMicrofacet = 1u << 13,  // conductor, rough_dielectric, metal_rough
+  kFeatureMicrofacet = 1u << 13,    // conductor, rough_dielectric, metal_rough
+  kFeatureMirrorImages = 1u << 14,  // the path tracer samples lights through flat mirrors (mirror_prims)
 };
 
 #ifndef TRACER_KERNEL_FEATURES
 #define TRACER_KERNEL_FEATURES 0xffffffffu
 #endif
+
+// This compilation's features less mirror images: the path kernels for scenes without a flat mirror.
+constexpr uint32_t kKernelWithoutMirrorImages = TRACER_KERNEL_FEATURES & ~uint32_t{kFeatureMirrorImages};
 
 // Whether this compilation of the kernel has code for `feature`.
 TRACER_HD constexpr bool compiled_in(uint32_t feature) { return (TRACER_KERNEL_FEATURES & feature) != 0; }

@@ -167,9 +167,13 @@ TRACER_HD MirrorQuery mirror_query(const SceneView& scene, const Surface& s, con
 }
 
 // One vertex of the path: `hit` is the closest hit of st.ray. Adds the emission it sees,
-// draws the light sample (into shadow) and the BSDF sample (the next st.ray).
+// draws the light sample (into shadow) and the BSDF sample (the next st.ray). Compiled without
+// kFeatureMirrorImages in kFeatures it draws no image sample and keeps no mirror for one: the
+// code a scene without flat mirrors runs.
+template <uint32_t kFeatures = TRACER_KERNEL_FEATURES>
 TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint32_t sample, const Hit& hit,
                                    PathState& st, ShadowQuery& shadow, MirrorQuery& image, RayCounts& counts) {
+  constexpr bool kImages = (kFeatures & kFeatureMirrorImages) != 0u;
   const RenderSettings& rs = scene.settings;
   const bool nee = rs.nee == Switch::On && scene.light_entry_count > 0;
   PathStep step = {false, false, false};
@@ -188,7 +192,7 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
     if (nee && !st.specular)
       w = power_heuristic(st.bsdf_pdf,
                           shape_light_pdf(scene, hit.prim, st.from, st.ray.dir, length(s.p - st.from), s.ng));
-    else if (nee && st.mirror != kNoHit)
+    else if (kImages && nee && st.mirror != kNoHit)
       w = power_heuristic(st.bsdf_pdf, mirror_image_pdf(scene, st.mirror, hit.prim, st.from, st.ray.dir, s.p, s.ng));
     st.radiance += st.throughput * m.radiance * w;
   }
@@ -199,7 +203,7 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
   const bool sample_lights = nee && !is_specular(m);
   const bool roulette = st.depth + 1 >= rs.rr_depth;
   // An image sample only where the mirror's vertex may still bounce, as a BSDF path could.
-  const bool sample_images = sample_lights && scene.mirror_count > 0 && st.depth + 1u < rs.max_depth;
+  const bool sample_images = kImages && sample_lights && scene.mirror_count > 0 && st.depth + 1u < rs.max_depth;
   // A pair is drawn only where it is read (a Lambert vertex lit by one light reads no light
   // choice and no lobe choice): each is a pure function of its dimension, so one left undrawn
   // changes no other.
@@ -244,8 +248,8 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
   st.throughput *= bs.weight;
   // A mirror reached from a non-specular vertex keeps that vertex's from and bsdf_pdf for the
   // image's MIS weight where the light is hit next.
-  const bool off_image_mirror =
-      scene.mirror_count > 0 && bs.specular && !st.specular && is_planar_mirror(scene, scene.primitives[hit.prim]);
+  const bool off_image_mirror = kImages && scene.mirror_count > 0 && bs.specular && !st.specular &&
+                                is_planar_mirror(scene, scene.primitives[hit.prim]);
   st.mirror = off_image_mirror ? hit.prim : kNoHit;
   if (!off_image_mirror) st.bsdf_pdf = bs.pdf;
   st.specular = bs.specular;
@@ -265,6 +269,7 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
 }
 
 // The megakernel: the whole path in one call, each shadow ray traced where it is drawn.
+template <uint32_t kFeatures = TRACER_KERNEL_FEATURES>
 TRACER_HD Vec3 path_radiance(const SceneView& scene, const Ray& camera_ray, uint32_t pixel, uint32_t sample,
                              RayCounts& counts) {
   PathState st = path_start(camera_ray);
@@ -272,7 +277,7 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, const Ray& camera_ray, uint
     const Hit hit = trace_closest(scene, st.ray, kInfinity);
     ShadowQuery shadow;
     MirrorQuery image;
-    const PathStep step = path_shade(scene, pixel, sample, hit, st, shadow, image, counts);
+    const PathStep step = path_shade<kFeatures>(scene, pixel, sample, hit, st, shadow, image, counts);
     const uint8_t kinds = static_cast<uint8_t>((step.shadow ? unsigned{kShadowLight} : 0u) |
                                                (step.mirror ? unsigned{kShadowMirror} : 0u));
     const uint8_t clear = trace_shadows(scene, kinds, shadow, &image);

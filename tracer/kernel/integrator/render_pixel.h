@@ -26,13 +26,13 @@ TRACER_HD Ray sample_camera_ray(const SceneView& scene, uint32_t px, uint32_t py
 // views (Normals, Albedo and Depth share debug_view, which reads the scene's). A GPU kernel
 // compiled for one integrator (cuda/gpu_film.cu) holds only its code: Whitted's stack of
 // kMaxDepth + 2 rays is not in the path tracer's, nor the path's BSDFs in the views'.
-template <IntegratorKind kKind>
+template <IntegratorKind kKind, uint32_t kFeatures = TRACER_KERNEL_FEATURES>
 TRACER_HD Vec3 render_sample_as(const SceneView& scene, uint32_t px, uint32_t py, uint32_t s, RayCounts& counts) {
   const Ray ray = sample_camera_ray(scene, px, py, s, counts);
   if constexpr (kKind == IntegratorKind::Whitted)
     return whitted_radiance(scene, ray, counts);
   else if constexpr (kKind == IntegratorKind::Path)
-    return path_radiance(scene, ray, py * scene.settings.width + px, s, counts);
+    return path_radiance<kFeatures>(scene, ray, py * scene.settings.width + px, s, counts);
   else
     return debug_view(scene, ray, trace_closest(scene, ray, kInfinity));
 }
@@ -48,11 +48,12 @@ TRACER_HD Vec3 render_sample(const SceneView& scene, uint32_t px, uint32_t py, u
 
 // Samples [sample_begin, sample_end) of pixel (px, py) by the integrator kKind
 // (render_sample_as), added into a fresh film sum.
-template <IntegratorKind kKind>
+template <IntegratorKind kKind, uint32_t kFeatures = TRACER_KERNEL_FEATURES>
 TRACER_HD FilmSum render_pixel_as(const SceneView& scene, uint32_t px, uint32_t py, uint32_t sample_begin,
                                   uint32_t sample_end, RayCounts& counts) {
   FilmSum sum = {{0, 0, 0}, 0u, 0u};
-  for (uint32_t s = sample_begin; s < sample_end; ++s) film_add(sum, render_sample_as<kKind>(scene, px, py, s, counts));
+  for (uint32_t s = sample_begin; s < sample_end; ++s)
+    film_add(sum, render_sample_as<kKind, kFeatures>(scene, px, py, s, counts));
   return sum;
 }
 
@@ -68,11 +69,11 @@ TRACER_HD FilmSum render_pixel(const SceneView& scene, uint32_t px, uint32_t py,
 // added into `even` and odd ones into `odd` (adaptive sampling's half sums). Their sum is
 // render_pixel's unless a half stays inside the film's range where the whole would leave it
 // (sums near 2^62 units).
-template <IntegratorKind kKind>
+template <IntegratorKind kKind, uint32_t kFeatures = TRACER_KERNEL_FEATURES>
 TRACER_HD void render_pixel_halves_as(const SceneView& scene, uint32_t px, uint32_t py, uint32_t sample_begin,
                                       uint32_t sample_end, FilmSum& even, FilmSum& odd, RayCounts& counts) {
   for (uint32_t s = sample_begin; s < sample_end; ++s)
-    film_add(s % 2u == 0u ? even : odd, render_sample_as<kKind>(scene, px, py, s, counts));
+    film_add(s % 2u == 0u ? even : odd, render_sample_as<kKind, kFeatures>(scene, px, py, s, counts));
 }
 
 // render_pixel_halves_as by the scene's integrator.

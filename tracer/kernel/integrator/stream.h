@@ -132,13 +132,13 @@ TRACER_HD void stream_generate(const SceneView& scene, const StreamStates& st, u
 
 // The shade stage by the integrator kKind (Normals: any debug view), as render_sample_as: a GPU
 // kernel compiled for one integrator holds only its code (cuda/gpu_stream.cu).
-template <IntegratorKind kKind>
+template <IntegratorKind kKind, uint32_t kFeatures = TRACER_KERNEL_FEATURES>
 TRACER_HD void stream_shade_as(const SceneView& scene, const StreamStates& st, uint32_t i, RayCounts& counts) {
   if constexpr (kKind == IntegratorKind::Path) {
     PathState p = load_path(st, i);
     ShadowQuery shadow;
     MirrorQuery image;
-    const PathStep step = path_shade(scene, st.pixel[i], st.sample[i], st.hit[i], p, shadow, image, counts);
+    const PathStep step = path_shade<kFeatures>(scene, st.pixel[i], st.sample[i], st.hit[i], p, shadow, image, counts);
     store_path(st, i, p);
     if (step.shadow) {
       store_shadow_ray(st, i, shadow.ray, shadow.tmax, shadow.emitter);
