@@ -129,6 +129,22 @@ std::string write_cube_faces(const std::filesystem::path& dir, int size, TexelCo
   return list;
 }
 
+// The goldens that stand for all of them on an axis where rendering every golden would repeat
+// what another test proves ray by ray (the structures: AccelIdentity's hits on every shipped
+// scene): one of each integrator (Whitted, path, a view, adaptive), mirror images, a triangle
+// mesh, a textured glTF file, and the scene that holds most features.
+inline const std::vector<std::string>& representative_goldens() {
+  static const std::vector<std::string> names = {
+      "cornell-box", "cornell-box-path", "cornell-box-normals",    "cornell-box-adaptive",
+      "mesh",        "gltf-textured",    "cornell-box-mirror-box", "showcase"};
+  return names;
+}
+
+inline bool is_representative_golden(const std::string& name) {
+  const auto& names = representative_goldens();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
 inline std::string source_path(const std::string& rel) { return std::string(TRACER_SOURCE_DIR) + "/" + rel; }
 
 // The scene files every test may use: each .json under scenes/ except scenes/large/, whose
