@@ -16,10 +16,10 @@
 #pragma once
 #include "kernel/camera/sampler.h"
 #include "kernel/geom/ray_offset.h"
+#include "kernel/integrator/mirror_image_query.h"
 #include "kernel/integrator/whitted.h"
 #include "kernel/light/light.h"
 #include "kernel/material/bsdf.h"
-#include "kernel/shading/mirror_images.h"
 #include "kernel/shading/surface.h"
 
 namespace tracer {
@@ -69,26 +69,6 @@ struct PathState {
 #undef TRACER_PATH_FIELD
 };
 
-// Next-event estimation's shadow ray and the radiance it adds when the light is visible.
-struct ShadowQuery {
-  Ray ray;
-  float tmax;        // any-hit test within (0, tmax] (kInfinity for the sky)
-  uint32_t emitter;  // kNoHit: the any-hit test; else the emitter the closest hit must be
-  Vec3 contribution;
-};
-
-// A light sampled through a planar mirror: the way to the mirror (its closest hit must be the
-// mirror, its emitter) and, from where it meets the mirror along its direction reflected, the
-// way to the light (whose closest hit must be `light`); to_mirror's contribution is what the
-// light adds when both are clear.
-struct MirrorQuery {
-  ShadowQuery to_mirror;
-  uint32_t light;
-};
-
-// Which of a vertex's shadow queries to trace, and which were clear (bits).
-enum ShadowKind : uint8_t { kShadowLight = 1u, kShadowMirror = 2u };
-
 // What one shading step leaves to do.
 struct PathStep {
   bool shadow;  // trace `shadow` and add its contribution if the light is visible
@@ -107,63 +87,6 @@ TRACER_HD PathState path_start(const Ray& camera_ray) {
   TRACER_PATH_STATE(TRACER_PATH_START)
 #undef TRACER_PATH_START
   return st;
-}
-
-// The shadow ray from the shading point at s to the sampled light: an emitting surface as the
-// closest hit along wi; any other light unoccluded up to its distance (the environment: past
-// everything).
-TRACER_HD ShadowQuery shadow_query(const SceneView& scene, const Surface& s, const LightSample& ls) {
-  const Ray ray = {offset_ray_origin(s.p, s.ng, ls.wi, scene.offset_scale), ls.wi};
-  if (ls.emitter != kNoHit) return {ray, kInfinity, ls.emitter, {0.0f, 0.0f, 0.0f}};
-  if (ls.distance == kInfinity) return {ray, kInfinity, kNoHit, {0.0f, 0.0f, 0.0f}};
-  return {ray, length(s.p + ls.wi * ls.distance - ray.origin), kNoHit, {0.0f, 0.0f, 0.0f}};
-}
-
-// The second way of an image query, from to_mirror's hit at t on the mirror to the light.
-TRACER_HD ShadowQuery mirror_to_light(const SceneView& scene, const MirrorQuery& q, float t) {
-  const Vec3 n = mirror_normal(scene.primitives[q.to_mirror.emitter]);
-  const Vec3 dir = reflect(q.to_mirror.ray.dir, n);
-  return {{offset_ray_origin(ray_at(q.to_mirror.ray, t), n, dir, scene.offset_scale), dir},
-          kInfinity,
-          q.light,
-          {0.0f, 0.0f, 0.0f}};
-}
-
-// Traces the shadow queries `kinds` names, from one traversal call site (a GPU kernel then holds
-// one copy of it): the light sample's, then the image's way to the mirror and, where it gets
-// there, on to the light. Returns the bits of those that are clear; `image` may be null when
-// kinds has no kShadowMirror.
-template <uint32_t kCode = kTraceAll>
-TRACER_HD uint8_t trace_shadows(const SceneView& scene, uint8_t kinds, const ShadowQuery& light,
-                                const MirrorQuery* image) {
-  enum Leg : uint8_t { kLegLight, kLegToMirror, kLegToLight, kLegDone };
-  uint8_t clear = 0u;
-  Leg leg = (kinds & kShadowLight) ? kLegLight : (kinds & kShadowMirror) ? kLegToMirror : kLegDone;
-  ShadowQuery q;
-  if (leg == kLegLight) q = light;
-  if (leg == kLegToMirror) q = image->to_mirror;
-  while (leg != kLegDone) {  // any hit, or the closest where an emitter must be it
-    const Hit h = trace_query<kCode>(scene, q.ray, q.tmax, q.emitter == kNoHit);
-    const bool reached = h.prim == q.emitter;
-    if (leg == kLegLight) {
-      if (reached) clear |= kShadowLight;
-      leg = (kinds & kShadowMirror) ? kLegToMirror : kLegDone;
-      if (leg == kLegToMirror) q = image->to_mirror;
-    } else if (leg == kLegToMirror) {
-      leg = reached ? kLegToLight : kLegDone;
-      if (reached) q = mirror_to_light(scene, *image, h.t);
-    } else {
-      if (reached) clear |= kShadowMirror;
-      leg = kLegDone;
-    }
-  }
-  return clear;
-}
-
-// The query for image sample `is` from the shading point at s.
-TRACER_HD MirrorQuery mirror_query(const SceneView& scene, const Surface& s, const MirrorImageSample& is) {
-  return {{{offset_ray_origin(s.p, s.ng, is.wi, scene.offset_scale), is.wi}, kInfinity, is.mirror, {0.0f, 0.0f, 0.0f}},
-          is.light};
 }
 
 // One vertex of the path: `hit` is the closest hit of st.ray. Adds the emission it sees,
