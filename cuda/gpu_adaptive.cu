@@ -173,7 +173,7 @@ GpuAdaptiveFilm render_adaptive_on_gpu(const SceneArrays& arrays, const SceneVie
   const bool stream = rs.schedule == Schedule::Stream;
   r.run.device_bytes =
       DeviceScene::bytes(arrays, device_bvh_of(view)) + pixels * (2 * sizeof(FilmSum) + sizeof(uint32_t) + 2) +
-      kCounterCount * sizeof(unsigned long long) + GpuStream::device_bytes(rs, GpuBackend::stream_samples(rs, pixels));
+      kCounterCount * sizeof(unsigned long long) + GpuStream::device_bytes(view, GpuBackend::stream_samples(rs, pixels));
   require_free_device_memory(r.run.device_bytes,
                              stream ? label + " (--stream-width " + std::to_string(rs.stream_width) + ")" : label,
                              r.run.device);

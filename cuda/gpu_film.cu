@@ -111,7 +111,7 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
   const bool stream = rs.schedule == Schedule::Stream;
   const uint64_t samples = static_cast<uint64_t>(pixels) * (range.end - range.begin);
   r.run.device_bytes = DeviceScene::bytes(arrays, device_bvh_of(view)) + pixels * sizeof(FilmSum) +
-                       kCounterCount * sizeof(unsigned long long) + (stream ? GpuStream::device_bytes(rs, samples) : 0);
+                       kCounterCount * sizeof(unsigned long long) + (stream ? GpuStream::device_bytes(view, samples) : 0);
   require_free_device_memory(r.run.device_bytes,
                              stream ? label + " (--stream-width " + std::to_string(rs.stream_width) + ")" : label,
                              r.run.device);

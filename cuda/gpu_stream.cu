@@ -253,21 +253,21 @@ std::string describe_stream_kernels() {
          describe_kernel("shadow_any_hit_stage_kernel", shadow_any_hit_stage_kernel, prop) + variants;
 }
 
-size_t GpuStream::device_bytes(const RenderSettings& rs, uint64_t total) {
-  return stream_bytes_per_state(rs) * stream_width_for(rs, total);
+size_t GpuStream::device_bytes(const SceneView& view, uint64_t total) {
+  return stream_bytes_per_state(view) * stream_width_for(view.settings, total);
 }
 
 GpuStream::GpuStream(const SceneView& device_view, uint64_t total)
     : scene_(device_view), width_(stream_width_for(device_view.settings, total)) {
   if (width_ == 0) return;
-  states_ = allocate_stream_states(scene_.settings, width_, DeviceArrays{blocks_});
+  states_ = allocate_stream_states(scene_, width_, DeviceArrays{blocks_});
   for (uint32_t q = 0; q < stream_queue_count(scene_.settings); ++q) queues_[q] = DeviceBuffer<uint32_t>(width_);
   split_sizes_ = DeviceBuffer<uint32_t>(3);
 }
 
 double GpuStream::render(const StreamTarget& target, unsigned long long* counters, StreamStats& stats) {
   const uint64_t total = static_cast<uint64_t>(target.count) * (target.end - target.begin);
-  stats.bytes_per_state = stream_bytes_per_state(scene_.settings);
+  stats.bytes_per_state = stream_bytes_per_state(scene_);
   stats.state_bytes = stats.bytes_per_state * width_;
   if (total == 0) return 0.0;
   CudaStream backend{scene_, target, states_, queues_, counters, split_sizes_.get()};

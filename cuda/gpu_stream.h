@@ -21,7 +21,7 @@ void launch_trace_stage(const SceneView& device_view, StreamStage stage, const S
 class GpuStream {
  public:
   // Device bytes of the states and queues for at most `total` samples in flight at a time.
-  static size_t device_bytes(const RenderSettings& rs, uint64_t total);
+  static size_t device_bytes(const SceneView& view, uint64_t total);
 
   // Ray states and queues on the device for min(stream_width, total) samples.
   GpuStream(const SceneView& device_view, uint64_t total);

@@ -65,13 +65,13 @@ inline void render_stream_on_cpu(const SceneView& view, const StreamTarget& targ
     }
   };
   const uint64_t total = static_cast<uint64_t>(target.count) * (target.end - target.begin);
-  if (const auto why = stream_memory_refusal(view.settings, total)) throw InputError(*why);
+  if (const auto why = stream_memory_refusal(view, total)) throw InputError(*why);
   const size_t width = stream_width_for(view.settings, total);
-  stats.bytes_per_state = stream_bytes_per_state(view.settings);
+  stats.bytes_per_state = stream_bytes_per_state(view);
   stats.state_bytes = stats.bytes_per_state * width;
   if (width == 0) return;
   HostStreamArrays arrays;
-  Backend backend{view, target, threads, allocate_stream_states(view.settings, width, arrays), {}, {}, {}, {}};
+  Backend backend{view, target, threads, allocate_stream_states(view, width, arrays), {}, {}, {}, {}};
   schedule_stream(total, width, backend, stats);
   rays.camera += backend.camera, rays.secondary += backend.secondary, rays.shadow += backend.shadow;
 }

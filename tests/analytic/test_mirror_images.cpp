@@ -9,11 +9,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "kernel/shading/mirror_images.h"
 #include "light_fixture.h"
+#include "options/render_options.h"
 #include "render/render_cpu.h"
+#include "render/stream_states.h"
 
 namespace tracer {
 namespace {
@@ -174,10 +177,15 @@ TEST(MirrorImages, AScenePathWithoutPlanarMirrorsIsBitForBitTheSame) {
   on.mirror_images = Switch::On;
   off.mirror_images = Switch::Off;
   RenderStats stats;
-  const Scene with = test::scene_from(scene, on);
+  const Scene with = test::scene_from(scene, on), without = test::scene_from(scene, off);
   EXPECT_EQ(with.view().mirror_count, 0u);
-  EXPECT_EQ(with.settings.mirror_images, Switch::Off) << "nothing to sample: the render runs with it off";
-  EXPECT_EQ(render_cpu(with, 0, stats).rgb, render_cpu(test::scene_from(scene, off), 0, stats).rgb);
+  EXPECT_EQ(with.features & kFeatureMirrorImages, 0u) << "nothing to sample: the kernel runs without the feature";
+  EXPECT_EQ(with.settings.mirror_images, Switch::On) << "the loader leaves the setting as given";
+  EXPECT_FALSE(recorded_options(with.settings, with.background.kind).to_json().contains("mirror_images"))
+      << "at its default, the setting is not part of the render's identity";
+  EXPECT_EQ(stream_bytes_per_state(with.view()), stream_bytes_per_state(without.view()))
+      << "no stream arrays for mirror images without a mirror";
+  EXPECT_EQ(render_cpu(with, 0, stats).rgb, render_cpu(without, 0, stats).rgb);
 }
 
 }  // namespace

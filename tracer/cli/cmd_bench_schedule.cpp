@@ -49,11 +49,13 @@ static int run_bench_schedule(const BenchScheduleCommand& cmd) {
     RenderOverrides ov;
     ov.width = ov.height = cmd.size;
     ov.spp = cmd.spp;
-    RenderSettings rs = load_scene(path, ov).settings;
-    rs.schedule = Schedule::Stream;
+    const Scene scene = load_scene(path, ov);
+    SceneView view = scene.view();
+    view.settings.schedule = Schedule::Stream;
     for (const uint32_t w : widths) {
-      rs.stream_width = w;
-      if (const auto why = stream_memory_refusal(rs, static_cast<uint64_t>(cmd.size) * cmd.size * cmd.spp, "--widths"))
+      view.settings.stream_width = w;
+      if (const auto why =
+              stream_memory_refusal(view, static_cast<uint64_t>(cmd.size) * cmd.size * cmd.spp, "--widths"))
         throw InputError(path + ": " + *why);
     }
   }

@@ -130,16 +130,16 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
                    const std::function<void(uint64_t done, uint64_t total)>& progress) {
   const uint64_t total = static_cast<uint64_t>(target.count) * (target.end - target.begin);
   const size_t width = stream_width_for(view.settings, total);
-  stats.bytes_per_state = stream_bytes_per_state(view.settings);
+  stats.bytes_per_state = stream_bytes_per_state(view);
   const size_t state_bytes = stats.bytes_per_state * width;
   stats.state_bytes = std::max(stats.state_bytes, state_bytes);  // the largest of an adaptive render's passes
   if (width == 0) return;
-  if (const auto why = stream_memory_refusal(view.settings, total)) throw InputError(*why);
-  const auto refuse = [&] { return InputError(stream_width_refusal(view.settings, total, "cannot be allocated")); };
+  if (const auto why = stream_memory_refusal(view, total)) throw InputError(*why);
+  const auto refuse = [&] { return InputError(stream_width_refusal(view, total, "cannot be allocated")); };
   HostStreamArrays arrays;
   OpenMpStream backend{view, variant, target, threads, counts, {}, {}};
   try {
-    backend.states = allocate_stream_states(view.settings, width, arrays);
+    backend.states = allocate_stream_states(view, width, arrays);
     for (uint32_t q = 0; q < stream_queue_count(view.settings); ++q) backend.queues[q].reserve(width);
   } catch (const std::bad_alloc&) {
     throw refuse();

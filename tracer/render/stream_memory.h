@@ -16,21 +16,22 @@ namespace tracer {
 
 // "FLAG W: B bytes of ray states for N samples in flight WHY; give a smaller width", the one
 // wording of every refusal of a stream width (bench schedule's flag is --widths).
-inline std::string stream_width_refusal(const RenderSettings& rs, uint64_t total_samples, const std::string& why,
+inline std::string stream_width_refusal(const SceneView& view, uint64_t total_samples, const std::string& why,
                                         const std::string& flag = "--stream-width") {
-  const size_t width = stream_width_for(rs, total_samples);
-  return flag + " " + std::to_string(rs.stream_width) + ": " +
-         std::to_string(static_cast<uint64_t>(stream_bytes_per_state(rs)) * width) + " bytes of ray states for " +
+  const size_t width = stream_width_for(view.settings, total_samples);
+  return flag + " " + std::to_string(view.settings.stream_width) + ": " +
+         std::to_string(static_cast<uint64_t>(stream_bytes_per_state(view)) * width) + " bytes of ray states for " +
          std::to_string(width) + " samples in flight " + why + "; give a smaller width";
 }
 
-inline std::optional<std::string> stream_memory_refusal(const RenderSettings& rs, uint64_t total_samples,
+inline std::optional<std::string> stream_memory_refusal(const SceneView& view, uint64_t total_samples,
                                                         const std::string& flag = "--stream-width") {
   static const MemoryLimit limit = memory_limit();  // read once: an adaptive render asks every pass
-  const uint64_t bytes = static_cast<uint64_t>(stream_bytes_per_state(rs)) * stream_width_for(rs, total_samples);
+  const uint64_t bytes =
+      static_cast<uint64_t>(stream_bytes_per_state(view)) * stream_width_for(view.settings, total_samples);
   if (limit.bytes == 0 || bytes <= limit.bytes / 2) return std::nullopt;
-  return stream_width_refusal(
-      rs, total_samples, "exceed half of " + limit.source + ", " + std::to_string(limit.bytes) + " bytes", flag);
+  return stream_width_refusal(view, total_samples,
+                              "exceed half of " + limit.source + ", " + std::to_string(limit.bytes) + " bytes", flag);
 }
 
 }  // namespace tracer

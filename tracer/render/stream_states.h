@@ -15,10 +15,13 @@ namespace tracer {
 inline size_t stream_queue_count(const RenderSettings& rs) { return rs.integrator == IntegratorKind::Whitted ? 4 : 3; }
 
 // `allocate(static_cast<T*>(nullptr), count)` returns room for `count` objects of T.
-// Arrays an integrator does not use stay null.
+// Arrays an integrator does not use stay null, as do the mirror images' where the scene lists
+// no flat mirror.
 template <class Allocate>
-StreamStates allocate_stream_states(const RenderSettings& rs, size_t width, Allocate&& allocate) {
+StreamStates allocate_stream_states(const SceneView& view, size_t width, Allocate&& allocate) {
+  const RenderSettings& rs = view.settings;
   const bool path = rs.integrator == IntegratorKind::Path, whitted = rs.integrator == IntegratorKind::Whitted;
+  const bool images = path && view.mirror_count > 0;
   const auto array = [&](auto* type, bool used, size_t count = 0) {
     return used ? allocate(type, count == 0 ? width : count) : type;
   };
@@ -38,8 +41,8 @@ StreamStates allocate_stream_states(const RenderSettings& rs, size_t width, Allo
   st.shadow_tmax = array(static_cast<float*>(nullptr), path || whitted);
   st.shadow_emitter = array(static_cast<uint32_t*>(nullptr), path || whitted);
   st.shadow_contribution = array(static_cast<Vec3*>(nullptr), path);
-  st.shadow_kinds = array(static_cast<uint8_t*>(nullptr), path && rs.mirror_images == Switch::On);
-  st.image = array(static_cast<MirrorQuery*>(nullptr), path && rs.mirror_images == Switch::On);
+  st.shadow_kinds = array(static_cast<uint8_t*>(nullptr), images);
+  st.image = array(static_cast<MirrorQuery*>(nullptr), images);
   st.stack_size = whitted ? whitted_stack_size(rs.max_depth) : 0u;
   st.width = static_cast<uint32_t>(width);
   st.vertex = array(static_cast<WhittedVertex*>(nullptr), whitted);
@@ -60,9 +63,9 @@ struct HostStreamArrays {
 };
 
 // Bytes per sample in flight: the state arrays and the queue entries.
-inline size_t stream_bytes_per_state(const RenderSettings& rs) {
-  size_t bytes = stream_queue_count(rs) * sizeof(uint32_t);
-  allocate_stream_states(rs, 1, [&](auto* type, size_t count) {
+inline size_t stream_bytes_per_state(const SceneView& view) {
+  size_t bytes = stream_queue_count(view.settings) * sizeof(uint32_t);
+  allocate_stream_states(view, 1, [&](auto* type, size_t count) {
     bytes += count * sizeof(*type);
     return type;
   });

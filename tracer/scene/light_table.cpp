@@ -123,10 +123,7 @@ void build_mirror_list(Scene& scene) {
     for (uint32_t id = 0; id < scene.primitives.size(); ++id)
       if (is_planar_mirror(view, scene.primitives[id])) scene.mirror_prims.push_back(id);
   }
-  if (scene.mirror_prims.empty())
-    scene.settings.mirror_images = Switch::Off;
-  else
-    scene.features |= kFeatureMirrorImages;
+  if (!scene.mirror_prims.empty()) scene.features |= kFeatureMirrorImages;
 }
 
 }  // namespace tracer

@@ -14,8 +14,9 @@ void build_light_table(Scene& scene);
 
 // The planar mirrors whose light images the path tracer samples (render.mirror_images: path, nee
 // on, a shape light in the table; kernel/shading/mirror_images.h) into mirror_prims, and the
-// scene's kFeatureMirrorImages with them, so that it runs the kernel with their code. A render
-// with none to sample runs with the setting off: no arrays for it in a stream's states.
+// scene's kFeatureMirrorImages with them, so that it runs the kernel with their code. The setting
+// is left as given: a scene with none to sample runs the kernel without the feature and
+// allocates no stream arrays for it.
 void build_mirror_list(Scene& scene);
 
 }  // namespace tracer

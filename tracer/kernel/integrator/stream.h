@@ -42,9 +42,9 @@ struct StreamStates {
   float* shadow_tmax;
   uint32_t* shadow_emitter;
   Vec3* shadow_contribution;
-  // the path's shadow queries (ShadowKind bits) and its mirror-image query, with
-  // render.mirror_images on (the loader turns it off where there is no mirror); without them
-  // the shadow stage traces the light's shadow ray alone
+  // the path's shadow queries (ShadowKind bits) and its mirror-image query, where the scene
+  // lists flat mirrors (SceneView::mirror_count > 0); without them the shadow stage traces the
+  // light's shadow ray alone
   uint8_t* shadow_kinds;
   MirrorQuery* image;
   // Whitted: the vertex being lit and the depth-first stack, stack_size entries per state,
