@@ -1,18 +1,19 @@
-// The GPU entry points of a runner built without nvcc: each says so, and the runner's
-// `--device cpu` still runs every bundle and parity case.
+// The GPU entry points of a build without CUDA (no nvcc, or TRACER_WITH_CUDA=OFF): each says
+// so, and the runner's `--device cpu` still runs every bundle and parity case.
+#include <string>
+
 #include "gpu_adaptive.h"
 #include "gpu_film.h"
 #include "lbvh_gpu.h"
 #include "parity/parity_gpu.h"
+#include "render/cuda_absent_reason.h"
 #include "render/device_error.h"
 #include "render/trace_cuda.h"
 
 namespace tracer {
 
 namespace {
-[[noreturn]] void no_cuda() {
-  throw DeviceUnavailable("this tracer-gpu was built without CUDA (no nvcc at build time)");
-}
+[[noreturn]] void no_cuda() { throw DeviceUnavailable(std::string("this build has no CUDA: ") + kCudaAbsentReason); }
 }  // namespace
 
 GpuFilm render_film_on_gpu(const SceneArrays&, const SceneView&, SampleRange, const std::string&) { no_cuda(); }

@@ -1,5 +1,8 @@
-// The CUDA renderer's interface in a build that found no nvcc at configure time (the GPU ray
-// queries' is in cuda/runner/gpu_absent.cpp).
+// The CUDA renderer's interface in a build without it: configured with TRACER_WITH_CUDA=OFF, or
+// no nvcc found at configure time (the GPU ray queries' is in cuda/runner/gpu_absent.cpp).
+#include <string>
+
+#include "render/cuda_absent_reason.h"
 #include "render/device_error.h"
 #include "render/render_cuda.h"
 
@@ -7,7 +10,7 @@ namespace tracer {
 
 namespace {
 [[noreturn]] void no_cuda() {
-  throw DeviceUnavailable("this build has no CUDA renderer: CMake found no nvcc when it configured the build");
+  throw DeviceUnavailable(std::string("this build has no CUDA renderer: ") + kCudaAbsentReason);
 }
 }  // namespace
 
