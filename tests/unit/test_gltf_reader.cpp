@@ -3,6 +3,8 @@
 // refused with an InputError naming the file and the JSON path inside it.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "gltf_builder.h"
 #include "test_util.h"
 
@@ -119,18 +121,41 @@ TEST_F(GltfReader, CamerasByNameOrIndexAndAFramingCameraWithoutOne) {
   EXPECT_EQ(framed.settings.height, 12u);   // 16 x 4:3 without a camera's aspect ratio
 }
 
-TEST_F(GltfReader, PointLightsInCandelaAndOtherLightsRefused) {
+TEST_F(GltfReader, PunctualLightsInTheirUnitsShiningAlongTheNodesMinusZ) {
   json doc = test::triangle_gltf();
-  doc["extensions"]["KHR_lights_punctual"]["lights"] = {
-      {{"type", "point"}, {"color", {1, 0.5, 0.25}}, {"intensity", 8}}};
+  json& light = doc["extensions"]["KHR_lights_punctual"]["lights"];
+  light = {{{"type", "point"}, {"color", {1, 0.5, 0.25}}, {"intensity", 8}}};
   doc["nodes"][1]["extensions"]["KHR_lights_punctual"]["light"] = 0;
-  const Scene s = load(doc);
+  Scene s = load(doc);
   ASSERT_EQ(s.lights.size(), 1u);
-  EXPECT_EQ(s.lights[0].intensity, (Vec3{8, 4, 2}));
+  EXPECT_EQ(s.lights[0].kind, LightKind::Point);
+  EXPECT_EQ(s.lights[0].intensity, (Vec3{8, 4, 2}));  // candela
   EXPECT_EQ(s.lights[0].position, (Vec3{0, 0, 3}));
   EXPECT_EQ(s.background.radiance, (Vec3{1, 1, 1}));  // lit by its own lights, and the viewer's sky
-  doc["extensions"]["KHR_lights_punctual"]["lights"][0]["type"] = "directional";
-  expect_error(doc, "extensions.KHR_lights_punctual.lights[0]: a directional light");
+
+  // Turned 90 degrees about +x, the node's -z is +y.
+  doc["nodes"][1]["rotation"] = {std::sqrt(0.5), 0, 0, std::sqrt(0.5)};
+  light[0]["type"] = "spot";
+  light[0]["spot"] = {{"innerConeAngle", 0.25}, {"outerConeAngle", 0.5}};
+  s = load(doc);
+  EXPECT_EQ(s.lights[0].kind, LightKind::Spot);
+  EXPECT_EQ(s.lights[0].position, (Vec3{0, 0, 3}));
+  EXPECT_NEAR(s.lights[0].direction.y, 1.0f, 1e-6f);
+  EXPECT_NEAR(s.lights[0].direction.z, 0.0f, 1e-6f);
+  EXPECT_EQ(s.lights[0].cos_inner, static_cast<float>(std::cos(0.25)));
+  EXPECT_EQ(s.lights[0].cos_outer, static_cast<float>(std::cos(0.5)));
+  light[0]["spot"]["innerConeAngle"] = 0.75;
+  expect_error(doc, "extensions.KHR_lights_punctual.lights[0].spot: expected cone half-angles");
+
+  light[0].erase("spot");
+  light[0]["type"] = "directional";
+  s = load(doc);
+  EXPECT_EQ(s.lights[0].kind, LightKind::Directional);
+  EXPECT_EQ(s.lights[0].intensity, (Vec3{8, 4, 2}));  // lux
+  EXPECT_NEAR(s.lights[0].direction.y, 1.0f, 1e-6f);
+  EXPECT_EQ(s.lights[0].one_minus_cos, 0.0f);  // parallel light: glTF's sun has no size
+  light[0]["type"] = "area";
+  expect_error(doc, "extensions.KHR_lights_punctual.lights[0].type: a light of type \"area\"");
 }
 
 TEST_F(GltfReader, MaterialsFactorsEmissionAndTheDiffuseSpecialCase) {

@@ -79,10 +79,10 @@ TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
       << output;
   // A declared light's kind is one a scene file declares: any other would be sampled as a point light.
   SceneBundle lit = make_scene_bundle(scene, scene.view(), {0, 1}, scene_path);
-  lit.arrays.lights.push_back(Light{LightKind::Shape, {0, 2, 0}, {1, 1, 1}, 0, 0, 0, 0});
+  lit.arrays.lights.push_back(Light{LightKind::Shape, {0, 2, 0}, {1, 1, 1}, 0, 0, 0, 0, {0, 0, 0}, 0, 0, 0});
   write_bundle(bundle, encode_scene_bundle(lit));
   EXPECT_EQ(test::run_command(std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu", &output), 2);
-  EXPECT_NE(output.find("b.bundle: the bundle's view: lights[0]: kind 1 is not a declared light's"), std::string::npos)
+  EXPECT_NE(output.find("b.bundle: the bundle's view: lights[0]: kind 3 is not a declared light's"), std::string::npos)
       << output;
   // An --expect that no hash can equal is refused before the render (it rendered, then exited 1).
   write_bundle(bundle, encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, 1}, scene_path)));

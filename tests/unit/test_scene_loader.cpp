@@ -90,9 +90,9 @@ TEST(SceneLoader, FeatureMaskListsWhatTheSceneUses) {
       test::scene_from(scene_with(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "g"},
       {"type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0], "material": "m"})",
                                   R"("lights": [{"type": "point", "position": [0, 5, 0], "intensity": [1, 1, 1]}],)"));
-  EXPECT_EQ(s.features, kFeatureSphere | kFeaturePlane | kFeatureDielectric | kFeatureLambert | kFeaturePointLight);
+  EXPECT_EQ(s.features, kFeatureSphere | kFeaturePlane | kFeatureDielectric | kFeatureLambert | kFeatureDeclaredLights);
   EXPECT_EQ(feature_names(s.features),
-            (std::vector<std::string>{"sphere", "plane", "lambert", "dielectric", "point-light"}));
+            (std::vector<std::string>{"sphere", "plane", "lambert", "dielectric", "declared-lights"}));
   EXPECT_EQ(s.unbounded.size(), 1u);
   EXPECT_EQ(s.bounded.size(), 1u);
 }

@@ -28,15 +28,17 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // went through one dispatch (kernel/light/light.h); 3 more when materials did
     // (kernel/material/bsdf.h: a struct per kind), in the same occupancy step. Mirror images are
     // a kernel feature (kFeatureMirrorImages) since 2026-11-27: a scene without a flat mirror runs
-    // the path kernels compiled without them (183 -> 155 registers here, 12.5 % still).
-    {"path_render_kernel",               155,  800, 0, 0, 256},
+    // the path kernels compiled without them (183 -> 155 registers here, 12.5 % still). Spot
+    // lights and suns (kernel/light/spot_light.h, directional_light.h): path 155 -> 156 (the
+    // miss meets a sun's disc), Whitted 182 -> 184 (the declared light's kind switch), 12.5 % still.
+    {"path_render_kernel",               156,  800, 0, 0, 256},
     {"path_mirror_images_render_kernel", 183,  800, 0, 0, 256},
-    {"whitted_render_kernel",            182, 3440, 0, 0, 256},
+    {"whitted_render_kernel",            184, 3440, 0, 0, 256},
     {"view_render_kernel",                86,  288, 0, 0, 256},
     // adaptive sampling (cuda/gpu_adaptive.cu)
     // path: mirror images, as the megakernel (18.75 % occupancy -> 12.5 %)
-    // without mirror images 145 (18.75 %), with them 171 (12.5 %)
-    {"path_adaptive_pass_kernel",        145,  800, 0, 0, 128},
+    // without mirror images 145 (18.75 %), with them 171 (12.5 %); 146 with spot lights and suns
+    {"path_adaptive_pass_kernel",        146,  800, 0, 0, 128},
     {"path_mirror_images_adaptive_pass_kernel", 171, 800, 0, 0, 128},
     {"whitted_adaptive_pass_kernel",     174, 3440, 0, 0, 128},
     {"view_adaptive_pass_kernel",         78,  288, 0, 0, 128},

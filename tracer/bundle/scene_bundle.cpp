@@ -49,6 +49,14 @@ std::string view_violation(const SceneBundle& b) {
     if (!is_declared_kind(b.arrays.lights[i].kind))
       return "lights[" + std::to_string(i) + "]: kind " +
              std::to_string(static_cast<uint32_t>(b.arrays.lights[i].kind)) + " is not a declared light's";
+  // The declared lights lead the light table, in order (the miss of a path weighs a sun by its entry).
+  const auto& table = b.arrays.light_table;
+  if (!table.empty() && table.size() < b.arrays.lights.size())
+    return "light_table: " + std::to_string(table.size()) + " entries for " + std::to_string(b.arrays.lights.size()) +
+           " declared lights";
+  for (size_t i = 0; i < b.arrays.lights.size() && !table.empty(); ++i)
+    if (table[i].kind != b.arrays.lights[i].kind || table[i].index != i)
+      return "light_table[" + std::to_string(i) + "]: not declared light " + std::to_string(i);
   return "";
 }
 

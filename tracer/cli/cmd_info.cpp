@@ -1,6 +1,7 @@
 // `tracer info SCENE`: what the loader made of a scene: shapes and primitives, materials and
 // lights, the feature mask, a glTF file's contents and what it left out, the acceleration
 // structure and how long loading took, and the trace variant the GPU's stream schedule runs.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -26,10 +27,19 @@ static int run_info(const std::string& scene_path) {
               by_kind[1], by_kind[2], by_kind[3]);
   if (scene.report.degenerate_triangles > 0)
     std::printf("left out   %u mesh triangles of zero area\n", scene.report.degenerate_triangles);
-  std::printf("materials  %zu, point lights %zu\n", scene.materials.size(), scene.lights.size());
+  std::printf("materials  %zu, declared lights %zu", scene.materials.size(), scene.lights.size());
+#define TRACER_INFO_LIGHT_COUNT(Kind, type)                                                   \
+  if (const long n = std::count_if(scene.lights.begin(), scene.lights.end(),                  \
+                                   [](const Light& l) { return l.kind == LightKind::Kind; }); \
+      n > 0)                                                                                  \
+    std::printf(", %s %ld", type, n);
+  TRACER_DECLARED_LIGHT_KINDS(TRACER_INFO_LIGHT_COUNT)
+#undef TRACER_INFO_LIGHT_COUNT
+  std::printf("\n");
   if (!scene.mirror_prims.empty())
-    std::printf("mirrors    %zu flat mirrors, the lights seen in them sampled as mirror images (render.mirror_images)\n",
-                scene.mirror_prims.size());
+    std::printf(
+        "mirrors    %zu flat mirrors, the lights seen in them sampled as mirror images (render.mirror_images)\n",
+        scene.mirror_prims.size());
   std::printf("features  ");
   for (const std::string& f : feature_names(scene.features)) std::printf(" %s", f.c_str());
   for (const std::string& line : scene.report.gltf) std::printf("\ngltf       %s", line.c_str());

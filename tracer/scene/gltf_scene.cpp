@@ -8,6 +8,7 @@
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_materials.h"
 #include "scene/gltf_schema.h"
+#include "scene/light_reader.h"
 #include "scene/mesh_primitives.h"
 
 namespace tracer {
@@ -262,10 +263,10 @@ class GltfSceneReader {
     if (!with_lights_) return;
     const tinygltf::Light& l = model_.lights[index];
     const std::string path = "extensions.KHR_lights_punctual." + at("lights", index);
-    if (l.type != "point")
-      fail_at(file_.path, path,
-              "a " + l.type + " light" + (l.name.empty() ? "" : " (\"" + l.name + "\")") +
-                  ": the tracer's integrators carry point lights only");
+    if (l.type != "point" && l.type != "spot" && l.type != "directional")
+      fail_at(file_.path, path + ".type",
+              "a light of type \"" + l.type + "\"" + (l.name.empty() ? "" : " (\"" + l.name + "\")") +
+                  ": expected point, spot or directional");
     Vec3 colour{1, 1, 1};
     if (!l.color.empty()) {
       if (l.color.size() != 3) fail_at(file_.path, path + ".color", "expected 3 numbers");
@@ -276,13 +277,24 @@ class GltfSceneReader {
     if (!(intensity >= 0.0f && intensity < 1e30f) || !(colour.x >= 0 && colour.y >= 0 && colour.z >= 0) ||
         !is_finite(colour))
       fail_at(file_.path, path, "color and intensity must be finite and >= 0");
-    if (l.range > 0.0) ignore(path + ".range (light falls off as 1/d^2 everywhere)");
+    if (l.range > 0.0 && l.type != "directional") ignore(path + ".range (light falls off as 1/d^2 everywhere)");
     Light p{};
-    p.kind = LightKind::Point;
-    p.position = world.point({0, 0, 0});
-    p.intensity = colour * intensity;  // candela: the tracer's radiance unit is the nit (docs/gltf.md)
+    p.kind = l.type == "point" ? LightKind::Point : l.type == "spot" ? LightKind::Spot : LightKind::Directional;
+    // candela (point, spot) and lux (directional): the tracer's radiance unit is the nit (docs/gltf.md)
+    p.intensity = colour * intensity;
+    if (p.kind != LightKind::Directional) p.position = world.point({0, 0, 0});
+    if (p.kind != LightKind::Point) {  // a spot and a sun shine along the node's -z
+      if (const std::string why = set_light_direction(p, world.vector({0, 0, -1})); !why.empty())
+        fail_at(file_.path, node_path, "the node's transform gives its " + l.type + " light no direction: " + why);
+    }
+    if (p.kind == LightKind::Spot) {
+      const double inner = gltf_float(file_, l.spot.innerConeAngle, path + ".spot.innerConeAngle"),
+                   outer = gltf_float(file_, l.spot.outerConeAngle, path + ".spot.outerConeAngle");
+      if (const std::string why = set_spot_cone(p, inner, outer); !why.empty())
+        fail_at(file_.path, path + ".spot", why + " (in radians: 0 <= innerConeAngle <= outerConeAngle <= pi/2)");
+    }
     scene_.lights.push_back(p);
-    scene_.report.used_types.insert("light:point");
+    scene_.report.used_types.insert("light:" + l.type);
     ++contents_.lights;
   }
 

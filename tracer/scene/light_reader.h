@@ -14,6 +14,16 @@ namespace tracer {
 Light read_light(const Json& value, const std::string& path, const std::string& file,
                  std::set<std::string>& used_types);
 
+// The parts of a spot or a sun that the scene file and glTF's KHR_lights_punctual describe
+// alike; each returns "" or why the value is refused, for the caller to name its key.
+std::string set_light_direction(Light& light, Vec3 direction);  // made unit, in double
+// Half-angles in radians, 0 <= inner <= outer <= pi / 2.
+std::string set_spot_cone(Light& light, double inner, double outer);
+// The sun's angular diameter in radians: 0 (a delta light) or kMinSunDiameter to pi, where
+// its radiance E / (pi sin^2 theta_max) stays finite for the irradiance already set.
+std::string set_sun_disc(Light& light, double diameter);
+constexpr double kMinSunDiameter = 1.7453292519943295e-4;  // 0.01 degrees
+
 // A missing background is constant black; `type` receives its type name.
 Background read_background(const Json* value, const std::string& file, std::string& type, TextureLoader& textures);
 

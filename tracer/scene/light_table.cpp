@@ -58,8 +58,8 @@ double build_environment_cells(Scene& scene) {
   return luminance_integral;
 }
 
-// Radius of a sphere around every bounded primitive: the environment's light reaches the scene
-// through its cross-section.
+// Radius of a sphere around every bounded primitive: the environment's and the suns' light
+// reaches the scene through its cross-section.
 double scene_radius(const Scene& scene) {
   Bounds all;
   for (const Primitive& p : scene.primitives)
@@ -77,9 +77,10 @@ void build_light_table(Scene& scene) {
   scene.sky_cells_per_side = 0;
   scene.environment_light = kNoHit;
   std::vector<double> power;
-  for (uint32_t i = 0; i < scene.lights.size(); ++i) {
+  const double radius = scene_radius(scene);
+  for (uint32_t i = 0; i < scene.lights.size(); ++i) {  // first in the table: declared_lights_seen
     scene.light_table.push_back({scene.lights[i].kind, i, 0.0f, 0.0f});
-    power.push_back(light_power(scene.lights[i]));
+    power.push_back(light_power(scene.lights[i], radius));
   }
   for (uint32_t id = 0; id < scene.primitives.size(); ++id) {
     const Primitive& p = scene.primitives[id];
@@ -95,8 +96,7 @@ void build_light_table(Scene& scene) {
     if (luminance_integral > 0.0) {
       scene.environment_light = static_cast<uint32_t>(scene.light_table.size());
       scene.light_table.push_back({LightKind::Environment, 0, 0.0f, 0.0f});
-      const double r = scene_radius(scene);
-      power.push_back(kPi * r * r * luminance_integral);  // flux through the scene's cross-section
+      power.push_back(kPi * radius * radius * luminance_integral);  // flux through the scene's cross-section
     } else {
       scene.sky_cells.clear();
       scene.sky_cells_per_side = 0;

@@ -121,7 +121,7 @@ void finish_scene(Scene& scene, const RenderOverrides& overrides) {
     scene.features |= shape_feature(p.kind) | material_feature(scene.materials[p.material].kind);
     if (p.shading >= 0 && scene.triangle_shading[p.shading].has_normals) scene.features |= kFeatureShadingNormals;
   }
-  if (!scene.lights.empty()) scene.features |= kFeaturePointLight;
+  if (!scene.lights.empty()) scene.features |= kFeatureDeclaredLights;
   if (overrides.fresnel)
     for (Material& m : scene.materials)
       if (m.kind == MaterialKind::Dielectric) m.fresnel = *overrides.fresnel;
@@ -149,7 +149,7 @@ Scene load_scene(const std::string& path, const RenderOverrides& overrides) {
 
 std::vector<std::string> feature_names(uint32_t features) {
   static const char* names[] = {"sphere",    "plane",           "triangle", "quad",       "lambert",
-                                "metal",     "dielectric",      "phong",    "emissive",   "point-light",
+                                "metal",     "dielectric",      "phong",    "emissive",   "declared-lights",
                                 "thin-lens", "shading-normals", "textures", "microfacet", "mirror-images"};
   std::vector<std::string> out;
   for (uint32_t i = 0; i < sizeof names / sizeof names[0]; ++i)

@@ -20,7 +20,7 @@ enum FeatureBit : uint32_t {
   kFeatureDielectric = 1u << 6,
   kFeaturePhong = 1u << 7,
   kFeatureEmissive = 1u << 8,
-  kFeaturePointLight = 1u << 9,
+  kFeatureDeclaredLights = 1u << 9,  // point, spot and directional lights (SceneView::lights)
   kFeatureThinLens = 1u << 10,
   kFeatureShadingNormals = 1u << 11,
   kFeatureTextures = 1u << 12,

@@ -105,6 +105,8 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
                         ? power_heuristic(st.bsdf_pdf, environment_light_pdf(scene, st.ray.dir))
                         : 1.0f;
     st.radiance += st.throughput * background_radiance(scene, st.ray.dir) * w;
+    if (uses_feature(scene.features, kFeatureDeclaredLights))
+      st.radiance += st.throughput * declared_lights_seen(scene, st.ray.dir, nee && !st.specular, st.bsdf_pdf);
     return step;
   }
   Surface s = surface_at(scene, st.ray, hit);

@@ -47,7 +47,7 @@ TRACER_HD_STEP bool whitted_begin(const SceneView& scene, const WhittedTask& tas
   v.w = whitted_response(m, -dot(task.ray.dir, v.n));
   if (v.front || v.w.two_sided) radiance += task.weight * v.w.emission;
   v.local = v.w.ka * scene.ambient;
-  v.light = uses_feature(scene.features, kFeaturePointLight) ? 0u : scene.light_count;
+  v.light = uses_feature(scene.features, kFeatureDeclaredLights) ? 0u : scene.light_count;
   return true;
 }
 

@@ -1,9 +1,10 @@
 // The lights as plain data, every kind's record in one place. A light is one of LightKind:
-// lights the scene file declares (points) are `Light` records in SceneView::lights; emissive
-// shapes are their primitives; the environment is the scene's Background. The path tracer's
-// light table lists every light it samples as a LightEntry; each kind's sample, density and
-// power live in its own header (point_light.h, shape_light.h, environment_light.h) and
-// kernel/light/light.h dispatches on the kind.
+// lights the scene file declares (points, spots, suns) are `Light` records in
+// SceneView::lights; emissive shapes are their primitives; the environment is the scene's
+// Background. The path tracer's light table lists every light it samples as a LightEntry;
+// each kind's sample, density and power live in its own header (point_light.h, spot_light.h,
+// directional_light.h, shape_light.h, environment_light.h) and kernel/light/light.h
+// dispatches on the kind.
 #pragma once
 #include "kernel/base/platform.h"
 #include "kernel/base/vec3.h"
@@ -11,14 +12,16 @@
 namespace tracer {
 
 enum class LightKind : uint32_t {
-  Point,       // a declared point light: intensity and falloff, a delta light (point_light.h)
-  Shape,       // an emissive sphere, quad or triangle (shape_light.h)
-  Environment  // the background, sampled by its cells (environment_light.h)
+  Point,        // a declared point light: intensity and falloff, a delta light (point_light.h)
+  Spot,         // a point light whose intensity falls off about an axis (spot_light.h)
+  Directional,  // the sun: parallel light, or a disc of small angular size (directional_light.h)
+  Shape,        // an emissive sphere, quad or triangle (shape_light.h)
+  Environment   // the background, sampled by its cells (environment_light.h)
 };
 
 // The kinds a scene file declares (SceneView::lights; the others are made of its shapes or its
 // background), as X(Kind, its scene-file type), listed once.
-#define TRACER_DECLARED_LIGHT_KINDS(X) X(Point, "point")
+#define TRACER_DECLARED_LIGHT_KINDS(X) X(Point, "point") X(Spot, "spot") X(Directional, "directional")
 
 TRACER_HD constexpr bool is_declared_kind(LightKind kind) {
   switch (kind) {
@@ -33,10 +36,14 @@ TRACER_HD constexpr bool is_declared_kind(LightKind kind) {
 // A light the scene declares (a kind for which is_declared_kind holds).
 struct Light {
   LightKind kind;
-  Vec3 position;
-  Vec3 intensity;
-  float kc, kl, kq;          // attenuation, used when has_attenuation
+  Vec3 position;             // point, spot
+  Vec3 intensity;            // point, spot: I on the axis (W/sr); directional: irradiance E at normal incidence
+  float kc, kl, kq;          // point, spot: attenuation, used when has_attenuation
   uint32_t has_attenuation;  // 0: physical 1/d^2 falloff
+  Vec3 direction;            // spot, directional: the unit direction the light travels
+  float cos_inner;           // spot: cosines of the inner and outer cone's half-angles
+  float cos_outer;
+  float one_minus_cos;  // directional: 1 - cos of the disc's angular radius (0: a delta light)
 };
 
 // An entry of the path integrator's light table.

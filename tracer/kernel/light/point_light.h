@@ -35,10 +35,9 @@ TRACER_HD LightArrival point_light_arrival(const Light& light, Vec3 p) {
   return a;
 }
 
-// The light sample of point light `light` chosen with probability pmf, seen from `from`.
-TRACER_HD LightSample sample_point_light(const Light& light, float pmf, Vec3 from) {
+// The light sample of a point light chosen with probability pmf that arrives as `a`.
+TRACER_HD LightSample point_light_sample(const LightArrival& a, float pmf) {
   LightSample s = {{0.0f, 0.0f, 0.0f}, 0.0f, {0.0f, 0.0f, 0.0f}, 0.0f, LightKind::Point, true, kNoHit, false};
-  const LightArrival a = point_light_arrival(light, from);
   s.distance = a.distance;
   if (!(s.distance > 0.0f)) return s;
   s.wi = a.wi;
@@ -46,6 +45,11 @@ TRACER_HD LightSample sample_point_light(const Light& light, float pmf, Vec3 fro
   s.pdf = pmf;
   s.valid = true;
   return s;
+}
+
+// The light sample of point light `light` chosen with probability pmf, seen from `from`.
+TRACER_HD LightSample sample_point_light(const Light& light, float pmf, Vec3 from) {
+  return point_light_sample(point_light_arrival(light, from), pmf);
 }
 
 // The power that chooses it in the light table: 4 pi times the intensity's luminance.
