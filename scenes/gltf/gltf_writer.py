@@ -104,9 +104,13 @@ class Gltf:
         return self.node(camera=len(self.doc["cameras"]) - 1, **node)
 
     def point_light(self, colour, intensity, **node):
+        return self.light({"type": "point", "color": list(colour), "intensity": intensity}, **node)
+
+    def light(self, light, **node):
+        """A KHR_lights_punctual light (its JSON object) on a new node."""
         self.extensions.add("KHR_lights_punctual")
         lights = self.doc.setdefault("extensions", {}).setdefault("KHR_lights_punctual", {"lights": []})["lights"]
-        lights.append({"type": "point", "color": list(colour), "intensity": intensity})
+        lights.append(light)
         return self.node(extensions={"KHR_lights_punctual": {"light": len(lights) - 1}}, **node)
 
     def _finish(self):

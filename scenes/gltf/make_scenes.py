@@ -160,8 +160,43 @@ def conventions():
     g.write_glb(os.path.join(HERE, "conventions.glb"))
 
 
+def rotation_to(direction):
+    """The quaternion [x, y, z, w] that turns a light's -z onto the unit `direction`."""
+    x, y, z = direction
+    # the half-way vector h between -z and d: the rotation by 180 degrees about h maps -z to d
+    hx, hy, hz = x, y, z - 1.0
+    n = math.sqrt(hx * hx + hy * hy + hz * hz)
+    return [hx / n, hy / n, hz / n, 0.0]
+
+
+def sun_and_spot():
+    """A floor, a sphere and a block lit by a directional light (3 lux) and a spot light."""
+    g = Gltf()
+    diffuse = {"KHR_materials_specular": {"specularFactor": 0}}
+    grey = g.material("floor", pbrMetallicRoughness={"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0,
+                                                     "roughnessFactor": 0}, extensions=diffuse)
+    g.node(mesh=g.mesh("floor", [-3, 0, -3, -3, 0, 3, 3, 0, 3, 3, 0, -3], [0, 1, 2, 0, 2, 3], grey,
+                       normals=[0, 1, 0] * 4))
+    clay = g.material("clay", pbrMetallicRoughness={"baseColorFactor": [0.8, 0.45, 0.3, 1], "metallicFactor": 0,
+                                                    "roughnessFactor": 0}, extensions=diffuse)
+    pos, nor, _, idx = uv_sphere(0.5, 32, 16)
+    g.node(mesh=g.mesh("sphere", pos, idx, clay, normals=nor), translation=[-0.8, 0.5, 0])
+    pos, nor, _, idx = cube(0.4)
+    g.node(mesh=g.mesh("block", pos, idx, grey, normals=nor), translation=[0.8, 0.4, -0.3])
+    sun = [-0.4, -0.8, -0.45]
+    n = math.sqrt(sum(c * c for c in sun))
+    g.light({"type": "directional", "color": [1, 0.95, 0.9], "intensity": 3.0},
+            rotation=rotation_to([c / n for c in sun]))
+    g.light({"type": "spot", "color": [0.6, 0.7, 1], "intensity": 6.0,
+             "spot": {"innerConeAngle": 0.3, "outerConeAngle": 0.5}},
+            translation=[1.2, 2.5, 1.5], rotation=rotation_to([-0.35 / 1.2, -1 / 1.2, -0.6 / 1.2]))
+    pitched_camera(g, 45, [0, 2.2, 4.5], -22)
+    g.write_glb(os.path.join(HERE, "sun-and-spot.glb"))
+
+
 if __name__ == "__main__":
     cornell_box()
     sphere_grid()
     textured()
     conventions()
+    sun_and_spot()

@@ -64,7 +64,7 @@ void add_scene_options(CLI::App& app, RenderCommand& cmd) {
   for (const OptionInfo& o : option_table()) app.add_option(option_flag(o.name), cmd.options[o.name], o.help);
   app.add_option("--camera", cmd.camera, "glTF files: the camera, by index or name (default: the first)");
   app.add_option("--background", cmd.background,
-                 "glTF files: a constant background R,G,B (default: white without lights, black with)");
+                 "glTF files: a constant background R,G,B (default: 1,1,1, the neutral sky of a viewer)");
   app.add_option("--samples", cmd.samples,
                  "A:B renders only samples [A, B) of every pixel (render: into NAME.partial, for tracer merge)");
 }

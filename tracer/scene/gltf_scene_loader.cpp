@@ -136,7 +136,7 @@ Scene load_gltf_scene(const std::string& bytes, const std::string& path, const R
   info.push_back("meshes " + std::to_string(contents.meshes) + ", triangles " + std::to_string(contents.triangles) +
                  ", materials " + std::to_string(contents.materials) + ", textures " +
                  std::to_string(contents.textures) + ", cameras " + std::to_string(contents.cameras.size()) +
-                 ", point lights " + std::to_string(contents.lights));
+                 ", lights " + std::to_string(contents.lights));
   const auto triple = [](Vec3 v) {
     char text[96];
     std::snprintf(text, sizeof text, "%.9g,%.9g,%.9g", v.x, v.y, v.z);
