@@ -132,11 +132,13 @@ std::string write_cube_faces(const std::filesystem::path& dir, int size, TexelCo
 // The goldens that stand for all of them on an axis where rendering every golden would repeat
 // what another test proves ray by ray (the structures: AccelIdentity's hits on every shipped
 // scene): one of each integrator (Whitted, path, a view, adaptive), mirror images, a triangle
-// mesh, a textured glTF file, and the scene that holds most features.
+// mesh, a textured glTF file, the scene that holds most features, and a sun (shadow rays with
+// no end, through every structure).
 inline const std::vector<std::string>& representative_goldens() {
   static const std::vector<std::string> names = {
       "cornell-box", "cornell-box-path", "cornell-box-normals",    "cornell-box-adaptive",
-      "mesh",        "gltf-textured",    "cornell-box-mirror-box", "showcase"};
+      "mesh",        "gltf-textured",    "cornell-box-mirror-box", "showcase",
+      "sun"};
   return names;
 }
 
