@@ -84,6 +84,19 @@ TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
   EXPECT_EQ(test::run_command(std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu", &output), 2);
   EXPECT_NE(output.find("b.bundle: the bundle's view: lights[0]: kind 3 is not a declared light's"), std::string::npos)
       << output;
+  // The declared lights lead the light table, in order (a path that leaves the scene weighs a
+  // sun by its entry): a table that starts with another light is refused.
+  SceneBundle sun = make_scene_bundle(scene, scene.view(), {0, 1}, scene_path);
+  Light parallel{};
+  parallel.kind = LightKind::Directional;
+  parallel.direction = {0, -1, 0};
+  parallel.intensity = {1, 1, 1};
+  sun.arrays.lights = {parallel};
+  sun.arrays.light_table = {LightEntry{LightKind::Shape, 0, 1.0f, 1.0f}};
+  write_bundle(bundle, encode_scene_bundle(sun));
+  EXPECT_EQ(test::run_command(std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu", &output), 2);
+  EXPECT_NE(output.find("b.bundle: the bundle's view: light_table[0]: not declared light 0"), std::string::npos)
+      << output;
   // An --expect that no hash can equal is refused before the render (it rendered, then exited 1).
   write_bundle(bundle, encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, 1}, scene_path)));
   EXPECT_EQ(
