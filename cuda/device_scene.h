@@ -1,25 +1,33 @@
 // The scene's flat arrays (every entry of kernel/scene/scene_arrays.h) copied to plain device
 // buffers, and a SceneView whose pointers point at them: what a kernel receives by value.
-// bvh's 8-wide tree goes to the device only when asked for: it is walked by the
-// wide_bvh_triangles trace variant alone (kernel/accel/trace_variants.h), and the binary
-// tree, which every GPU kernel walks, gives the same hits.
+// bvh's binary tree goes to the device as nodes, and, asked for Pairs, also as the pair
+// records the trace variants walk (kernel/accel/bvh_pair_node.h), built here from the nodes
+// where every bounded primitive is a triangle; its 8-wide tree goes only when asked for: it
+// is walked by the wide_bvh_triangles trace variant alone (kernel/accel/trace_variants.h).
+// Each gives the same hits.
 #pragma once
+#include <string>
+
+#include "accel/bvh_pairs_builder.h"
 #include "device_buffer.h"
+#include "render/device_bvh.h"
 #include "scene/scene_arrays.h"
 
 namespace tracer {
 
-enum class DeviceBvh { Binary, Wide };
-
-// The tree a view asks for: the 8-wide one where it counts one (a bundle that keeps it).
+// The tree a view asks for: the 8-wide one where it counts one (a bundle that keeps it), else
+// the binary one, with its pair records for the stream schedule (the megakernels walk nodes).
 inline DeviceBvh device_bvh_of(const SceneView& view) {
-  return view.wide_node_count != 0 ? DeviceBvh::Wide : DeviceBvh::Binary;
+  if (view.wide_node_count != 0) return DeviceBvh::Wide;
+  return view.settings.schedule == Schedule::Stream ? DeviceBvh::Pairs : DeviceBvh::Binary;
 }
 
 class DeviceScene {
  public:
   // `host_view` supplies the scalars (camera, settings, ...); its pointers are replaced.
-  DeviceScene(const SceneArrays& arrays, const SceneView& host_view, DeviceBvh bvh = DeviceBvh::Binary)
+  // InputError naming `source` when the binary tree points outside its arrays (Pairs).
+  DeviceScene(const SceneArrays& arrays, const SceneView& host_view, DeviceBvh bvh = DeviceBvh::Binary,
+              const std::string& source = "scene")
       :
 #define TRACER_UPLOAD(Type, name) name##_(upload(arrays.name, bvh)),
         TRACER_SCENE_ARRAYS(TRACER_UPLOAD)
@@ -29,7 +37,16 @@ class DeviceScene {
 #define TRACER_POINT_AT_DEVICE(Type, name) view_.name = name##_.get();
     TRACER_SCENE_ARRAYS(TRACER_POINT_AT_DEVICE)
 #undef TRACER_POINT_AT_DEVICE
-    if (bvh == DeviceBvh::Binary) view_.wide_node_count = 0;
+    if (bvh != DeviceBvh::Wide) view_.wide_node_count = 0;
+    view_.bvh_pair_count = 0;  // records come from the nodes here, never from the arrays given
+    if (bvh == DeviceBvh::Pairs && walks_binary_tree(host_view.settings.accel)) {
+      const BvhPairs pairs = build_bvh_pairs(arrays.bvh_nodes, arrays.bounded, arrays.primitives, source);
+      bvh_pairs_ = DeviceBuffer<BvhPairNode>(pairs.nodes);
+      bvh_pair_triangles_ = DeviceBuffer<PairTriangle>(pairs.triangles);
+      view_.bvh_pairs = bvh_pairs_.get();
+      view_.bvh_pair_triangles = bvh_pair_triangles_.get();
+      view_.bvh_pair_count = static_cast<uint32_t>(pairs.nodes.size());
+    }
   }
 
   const SceneView& view() const { return view_; }
@@ -38,7 +55,11 @@ class DeviceScene {
   static size_t bytes(const SceneArrays& arrays, DeviceBvh bvh) {
     const size_t wide =
         arrays.wide_nodes.size() * sizeof(WideBvhNode) + arrays.triangle_blocks.size() * sizeof(TriangleBlock);
-    return scene_array_bytes(arrays) - (bvh == DeviceBvh::Binary ? wide : 0);
+    // at most one record per two nodes and one triangle per bounded primitive
+    const size_t pairs = bvh == DeviceBvh::Pairs ? arrays.bvh_nodes.size() / 2 * sizeof(BvhPairNode) +
+                                                       arrays.bounded.size() * sizeof(PairTriangle)
+                                                 : 0;
+    return scene_array_bytes(arrays) - (bvh != DeviceBvh::Wide ? wide : 0) + pairs;
   }
 
  private:
@@ -46,6 +67,7 @@ class DeviceScene {
   static DeviceBuffer<T> upload(const std::vector<T>& host, DeviceBvh) {
     return DeviceBuffer<T>(host);
   }
+  static bool walks_binary_tree(AccelKind accel) { return accel == AccelKind::Bvh || accel == AccelKind::Lbvh; }
   static DeviceBuffer<WideBvhNode> upload(const std::vector<WideBvhNode>& host, DeviceBvh bvh) {
     return bvh == DeviceBvh::Wide ? DeviceBuffer<WideBvhNode>(host) : DeviceBuffer<WideBvhNode>();
   }

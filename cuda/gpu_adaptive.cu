@@ -179,7 +179,7 @@ GpuAdaptiveFilm render_adaptive_on_gpu(const SceneArrays& arrays, const SceneVie
                              r.run.device);
 
   auto t = std::chrono::steady_clock::now();
-  const DeviceScene device_scene(arrays, view, device_bvh_of(view));
+  const DeviceScene device_scene(arrays, view, device_bvh_of(view), label);
   GpuBackend backend(device_scene.view(), pixels);
   TRACER_CUDA_CHECK(cudaDeviceSynchronize());
   r.run.upload_seconds = seconds_since(t);

@@ -117,7 +117,7 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
                              r.run.device);
 
   auto t = std::chrono::steady_clock::now();
-  const DeviceScene device_scene(arrays, view, device_bvh_of(view));
+  const DeviceScene device_scene(arrays, view, device_bvh_of(view), label);
   DeviceBuffer<FilmSum> film(pixels);
   DeviceBuffer<unsigned long long> counters(kCounterCount);
   counters.zero();

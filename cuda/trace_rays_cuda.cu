@@ -59,12 +59,12 @@ double median_time(const SceneView& view, StreamStage stage, const StreamStates&
 struct CudaRayTracer::Device {
   cudaDeviceProp prop;  // selected before the scene is uploaded
   DeviceScene scene;
-  Device(const SceneArrays& arrays, const SceneView& view, bool wide_bvh)
-      : prop(select_cuda_device()), scene(arrays, path_view(view), wide_bvh ? DeviceBvh::Wide : DeviceBvh::Binary) {}
+  Device(const SceneArrays& arrays, const SceneView& view, DeviceBvh tree)
+      : prop(select_cuda_device()), scene(arrays, path_view(view), tree) {}
 };
 
-CudaRayTracer::CudaRayTracer(const SceneArrays& arrays, const SceneView& view, bool wide_bvh)
-    : device_(std::make_unique<Device>(arrays, view, wide_bvh)) {}
+CudaRayTracer::CudaRayTracer(const SceneArrays& arrays, const SceneView& view, DeviceBvh tree)
+    : device_(std::make_unique<Device>(arrays, view, tree)) {}
 
 const char* CudaRayTracer::variant() const {
   const SceneView& view = device_->scene.view();

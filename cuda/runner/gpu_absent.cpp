@@ -23,7 +23,7 @@ std::string describe_render_kernel() { no_cuda(); }
 std::string describe_stream_kernels() { no_cuda(); }
 
 struct CudaRayTracer::Device {};
-CudaRayTracer::CudaRayTracer(const SceneArrays&, const SceneView&, bool) { no_cuda(); }
+CudaRayTracer::CudaRayTracer(const SceneArrays&, const SceneView&, DeviceBvh) { no_cuda(); }
 CudaRayTracer::~CudaRayTracer() = default;
 const char* CudaRayTracer::variant() const { no_cuda(); }
 double CudaRayTracer::closest(const std::vector<Ray>&, std::vector<Hit>&, uint32_t) { no_cuda(); }

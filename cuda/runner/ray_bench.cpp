@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "accel/bvh_builder.h"
 #include "accel/wide_bvh_builder.h"
+#include "bench/mesh_generators.h"
 #include "bench/ray_sets.h"
 #include "io/input_error.h"
 #include "kernel/accel/trace.h"
@@ -68,6 +70,44 @@ void print_row(const std::string& name, const RaySets& rays, const TracedRays& t
 
 }  // namespace
 
+SceneBundle with_generated_mesh(SceneBundle bundle, const std::string& spec, const std::string& label) {
+  constexpr uint32_t kMostTriangles = 1u << 24;  // the scene loader's limit
+  const size_t colon = spec.find(':');
+  uint32_t triangles = 0;
+  const std::string count = colon == std::string::npos ? "" : spec.substr(colon + 1);
+  for (const char c : count) {
+    if (c < '0' || c > '9' || triangles > kMostTriangles / 10) {
+      triangles = 0;
+      break;
+    }
+    triangles = triangles * 10 + static_cast<uint32_t>(c - '0');
+  }
+  if (triangles == 0 || triangles > kMostTriangles)
+    throw InputError(label + ": mesh:" + spec + ": expected KIND:TRIANGLES, 1 to " + std::to_string(kMostTriangles) +
+                     " triangles");
+  const std::vector<MeshTriangle> mesh = generate_mesh(spec.substr(0, colon), triangles);
+  if (bundle.arrays.materials.empty()) throw InputError(label + ": the bundle has no material for the mesh");
+  SceneArrays& a = bundle.arrays;
+  a.primitives.clear();
+  std::vector<BuildItem> items;
+  for (const MeshTriangle& t : mesh) {
+    const Primitive p = {ShapeKind::Triangle, 0, -1, 0.0f, t.p[0], t.p[1], t.p[2]};
+    const Bounds b = primitive_bounds(p);
+    items.push_back({b, (b.lo + b.hi) * 0.5f, static_cast<uint32_t>(a.primitives.size())});
+    a.primitives.push_back(p);
+  }
+  a.triangle_shading.clear();
+  a.unbounded.clear();
+  a.bounded.clear();
+  a.bvh_nodes = build_sah_bvh(items, a.bounded);
+  a.wide_nodes.clear();
+  a.triangle_blocks.clear();
+  a.light_table.clear();
+  a.light_of_prim.clear();
+  a.mirror_prims.clear();
+  return bundle;
+}
+
 void run_ray_bench(const SceneBundle& bundle, const std::string& label, bool gpu, unsigned threads, uint32_t repeats) {
   if (bundle.scalars.settings.accel != AccelKind::Bvh || bundle.arrays.bvh_nodes.empty())
     throw InputError(label + ": the rays table traces bvh's two trees; this bundle's structure is not bvh");
@@ -104,14 +144,19 @@ void run_ray_bench(const SceneBundle& bundle, const std::string& label, bool gpu
   print_row(label + " cpu bvh", rays, cpu_binary, binary_sum, reference, "");
   if (binary_sum != reference) throw std::runtime_error(label + ": the binary tree's hits differ from the wide tree's");
   if (!gpu) return;
-  for (const bool wide : {false, true}) {
-    CudaRayTracer device(arrays, view, wide);
+  const struct {
+    DeviceBvh tree;
+    const char* name;
+  } trees[] = {
+      {DeviceBvh::Binary, " bvh nodes cuda"}, {DeviceBvh::Pairs, " bvh cuda"}, {DeviceBvh::Wide, " bvh8 cuda"}};
+  for (const auto& [tree, tree_name] : trees) {
+    CudaRayTracer device(arrays, view, tree);
     TracedRays t;
     t.seconds[0] = device.closest(rays.primary, t.primary, repeats);
     t.seconds[1] = device.closest(rays.incoherent, t.incoherent, repeats);
     t.seconds[2] = device.any(rays.shadow, rays.shadow_tmax, t.occluded, repeats);
     const uint64_t sum = ray_hits_checksum(t.primary, t.incoherent, t.occluded);
-    const std::string name = label + (wide ? " bvh8 cuda" : " bvh cuda");
+    const std::string name = label + tree_name;
     char note[96];
     std::snprintf(note, sizeof note, "  (trace %s; %.1fx, %.1fx, %.1fx the CPU)", device.variant(),
                   cpu.seconds[0] / t.seconds[0], cpu.seconds[1] / t.seconds[1], cpu.seconds[2] / t.seconds[2]);

@@ -1,13 +1,19 @@
 // `tracer-gpu bench`'s rays table (docs/cuda.md): the three ray sets of `tracer bench rays`
 // (bench/ray_sets.h) on a bundle's scene, traced by the runner's CPU threads and, on a GPU,
-// by the stream schedule's closest-hit and shadow kernels on bvh's binary tree and on its
-// 8-wide tree; every row's hits are checked against the CPU's.
+// by the stream schedule's closest-hit and shadow kernels on bvh's binary tree (its nodes, and
+// its pair records) and on its 8-wide tree; every row's hits are checked against the CPU's.
 #pragma once
 #include <string>
 
 #include "bundle/scene_bundle.h"
 
 namespace tracer {
+
+// `bundle`'s scene with its primitives replaced by generate_mesh(KIND, TRIANGLES) of `spec`
+// ("KIND:TRIANGLES", bench/mesh_generators.h) under a SAH bvh built as the tracer builds it
+// (accel/bvh_builder.h): a mesh too large to carry in a bundle, the 10^6-triangle terrain; the
+// bundle gives the camera and the settings. InputError naming `label` for a malformed spec.
+SceneBundle with_generated_mesh(SceneBundle bundle, const std::string& spec, const std::string& label);
 
 // Prints the table's rows for `bundle` (a bvh scene), `label` naming it. The 8-wide tree is
 // collapsed here from the bundle's binary tree, as the tracer collapses it. InputError when the

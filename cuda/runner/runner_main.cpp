@@ -330,7 +330,8 @@ int run_pack(const Options& o) {
   return passed == total && total > 0 ? 0 : 1;
 }
 
-// DIR/bench.tsv: "TABLE LABEL FILE [SCHEDULE]" per row (SCHEDULE as in pack.tsv). Each bundle is rendered --repeat
+// DIR/bench.tsv: "TABLE LABEL FILE [SCHEDULE]" per row (SCHEDULE as in pack.tsv; a row of table "rays" may
+// name "mesh:KIND:TRIANGLES" there instead, ray_bench.h). Each bundle is rendered --repeat
 // times on the device and its best time reported; on the GPU the CPU renders it once beside it, as the baseline of the
 // same run. Rows of table "rays" trace ray sets instead (ray_bench.h).
 int run_bench(const Options& o) {
@@ -355,7 +356,11 @@ int run_bench(const Options& o) {
         std::printf("%-10s %-34s %10s %10s %10s  %s\n", "table", "label", "primary", "incoherent", "shadow",
                     "hits (checksum), Mrays/s");
       rays_header = true;
-      run_ray_bench(read_scene_bundle(dir + file), label, gpu, o.threads, o.repeat);
+      // a fourth field "mesh:KIND:TRIANGLES" traces a generated mesh in the bundle's view
+      const SceneBundle b = read_scene_bundle(dir + file);
+      run_ray_bench(
+          schedule.rfind("mesh:", 0) == 0 ? with_generated_mesh(b, schedule.substr(5), dir + "bench.tsv: " + label) : b,
+          label, gpu, o.threads, o.repeat);
       continue;
     }
     const Options row = schedule.empty() ? o : with_schedule(o, schedule, dir + "bench.tsv: " + label);

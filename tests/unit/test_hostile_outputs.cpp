@@ -97,6 +97,15 @@ TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
   EXPECT_EQ(test::run_command(std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu", &output), 2);
   EXPECT_NE(output.find("b.bundle: the bundle's view: light_table[0]: not declared light 0"), std::string::npos)
       << output;
+  // The GPU's pair records are built from the nodes at upload; records carried in a bundle, which
+  // the stream's trace variants would walk unchecked, are refused.
+  SceneBundle paired = make_scene_bundle(scene, scene.view(), {0, 1}, scene_path);
+  paired.arrays.bvh_pairs.push_back(BvhPairNode{{0, 0, 0}, 1000000, {1, 1, 1}, 0, {0, 0, 0}, 0, {1, 1, 1}, 0});
+  write_bundle(bundle, encode_scene_bundle(paired));
+  EXPECT_EQ(test::run_command(std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu", &output), 2);
+  EXPECT_NE(output.find("b.bundle: the bundle's view: bvh_pairs: pair records are built from bvh_nodes at upload"),
+            std::string::npos)
+      << output;
   // An --expect that no hash can equal is refused before the render (it rendered, then exited 1).
   write_bundle(bundle, encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, 1}, scene_path)));
   EXPECT_EQ(

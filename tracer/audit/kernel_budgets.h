@@ -31,16 +31,18 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // the path kernels compiled without them (183 -> 155 registers here, 12.5 % still). Spot
     // lights and suns (kernel/light/spot_light.h, directional_light.h): path 155 -> 156 (the
     // miss meets a sun's disc), Whitted 182 -> 184 (the declared light's kind switch), 12.5 % still.
-    {"path_render_kernel",               156,  800, 0, 0, 256},
-    {"path_mirror_images_render_kernel", 183,  800, 0, 0, 256},
-    {"whitted_render_kernel",            184, 3440, 0, 0, 256},
+    // 16 bytes more stack in every kernel holding a SceneView copy since it points at the binary
+    // tree's pair records (bvh_pairs, bvh_pair_triangles, bvh_pair_count; 2026-11-27).
+    {"path_render_kernel",               156,  816, 0, 0, 256},
+    {"path_mirror_images_render_kernel", 183,  816, 0, 0, 256},
+    {"whitted_render_kernel",            184, 3456, 0, 0, 256},
     {"view_render_kernel",                86,  288, 0, 0, 256},
     // adaptive sampling (cuda/gpu_adaptive.cu)
     // path: mirror images, as the megakernel (18.75 % occupancy -> 12.5 %)
     // without mirror images 145 (18.75 %), with them 171 (12.5 %); 146 with spot lights and suns
-    {"path_adaptive_pass_kernel",        146,  800, 0, 0, 128},
-    {"path_mirror_images_adaptive_pass_kernel", 171, 800, 0, 0, 128},
-    {"whitted_adaptive_pass_kernel",     174, 3440, 0, 0, 128},
+    {"path_adaptive_pass_kernel",        146,  816, 0, 0, 128},
+    {"path_mirror_images_adaptive_pass_kernel", 171, 816, 0, 0, 128},
+    {"whitted_adaptive_pass_kernel",     174, 3456, 0, 0, 128},
     {"view_adaptive_pass_kernel",         78,  288, 0, 0, 128},
     {"mark_unconverged_kernel",           40,    0, 0, 0, 128},
     {"keep_kernel",                       16,    0, 0, 0, 128},
@@ -54,8 +56,8 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // three more when lights went through one dispatch (kernel/light/light.h: a light sample
     // carries its delta flag and emitter), one more for the materials' dispatch, in the same
     // occupancy step. Without mirror images' code 124 (25 %); with it 149 (18.75 %)
-    {"path_shade_stage_kernel",          124,  728, 0, 0, 128},
-    {"path_mirror_images_shade_stage_kernel", 149, 728, 0, 0, 128},
+    {"path_shade_stage_kernel",          124,  744, 0, 0, 128},
+    {"path_mirror_images_shade_stage_kernel", 149, 744, 0, 0, 128},
     // Whitted and views: seven and one more for emission from any material (glTF's), the
     // normal map's bitangent sign and per-axis texture wrap; both within the 8-register
     // allocation step they were in (96 and 48), so occupancy is unchanged
@@ -65,8 +67,11 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // the trace variants' stages (kernel/accel/trace_variants.h), held to 64 registers; each shadow
     // stage traces a mirror image's two ways too (trace_shadows: one traversal call site), two to
     // four registers more for the sphere variants, 80 bytes of spills for the 8-wide tree's
-    {"closest_hit_bvh_triangles_kernel",  64,  272, 0, 0, 128},
-    {"shadow_any_hit_bvh_triangles_kernel", 64, 272, 0, 0, 128},
+    // the binary tree walked through its pair records (kernel/accel/traverse_bvh_pairs.h): a stack
+    // of (record, entry distance), 512 bytes, and 12 / 8 bytes of spill stores at 64 registers;
+    // 2.2x the node walk's primary and 2.0x its incoherent rays on an H200 (docs/cuda.md)
+    {"closest_hit_bvh_triangles_kernel",  64,  576, 12, 0, 128},
+    {"shadow_any_hit_bvh_triangles_kernel", 64, 576, 8, 0, 128},
     // the 8-wide tree: its 64-entry stack, the binary walk's for a deeper tree; 16 bytes of spill stores
     {"closest_hit_wide_bvh_triangles_kernel", 64, 1104, 76, 0, 128},
     {"shadow_any_hit_wide_bvh_triangles_kernel", 64, 1136, 80, 0, 128},

@@ -34,6 +34,13 @@ inline RaySets make_primary_and_incoherent_rays(const Camera& camera, uint32_t w
   return r;
 }
 
+// Where `tracer bench rays` puts the camera for a bare mesh (an OBJ file): looking at the
+// centre of the mesh's box [lo, hi] from 1.2 diagonals along (0.5, 0.6, 1), 45 degrees.
+inline Vec3 mesh_bench_eye(Vec3 lo, Vec3 hi) {
+  return (lo + hi) * 0.5f + normalize(Vec3{0.5f, 0.6f, 1.0f}) * (1.2f * length(hi - lo));
+}
+constexpr float kMeshBenchFov = 45.0f;
+
 // The light shadow rays aim at: above the camera by its distance to the image plane's corner.
 inline Vec3 shadow_light(const Camera& camera) {
   return camera.origin + Vec3{0.0f, length(camera.origin - camera.focal_top_left), 0.0f};

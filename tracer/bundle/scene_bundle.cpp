@@ -30,6 +30,8 @@ std::string view_violation(const SceneBundle& b) {
       return "grid: " + std::to_string(cells) + " cells, but " + std::to_string(b.arrays.grid_cell_start.size()) +
              " cell starts";
   }
+  if (!b.arrays.bvh_pairs.empty() || !b.arrays.bvh_pair_triangles.empty() || v.bvh_pair_count != 0)
+    return "bvh_pairs: pair records are built from bvh_nodes at upload; a bundle holds none";
   if (!b.arrays.mirror_prims.empty() &&
       (v.settings.integrator != IntegratorKind::Path || v.settings.mirror_images != Switch::On))
     return "mirror_prims: " + std::to_string(b.arrays.mirror_prims.size()) +

@@ -163,10 +163,10 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
       throw std::runtime_error(label + ": hits differ from " + enum_name(accels[0]) +
                                "'s (docs/determinism.md rule 4)");
   };
-  // The GPU's row for a structure: its trace variant's kernels (kernel/accel/trace_variants.h);
-  // `wide_bvh`: bvh's 8-wide tree on the device.
-  const auto measure_cuda = [&](const std::string& label, const Scene& scene, bool wide_bvh) {
-    CudaRayTracer device(scene, scene.view(), wide_bvh);
+  // The GPU's row for a structure: its trace variant's kernels (kernel/accel/trace_variants.h)
+  // on the tree `tree` names (render/device_bvh.h) where the structure is bvh or lbvh.
+  const auto measure_cuda = [&](const std::string& label, const Scene& scene, DeviceBvh tree) {
+    CudaRayTracer device(scene, scene.view(), tree);
     std::vector<Hit> primary, incoherent;
     std::vector<uint8_t> occluded;
     const double seconds[3] = {device.closest(rays.primary, primary, cmd.repeats),
@@ -191,10 +191,11 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     kernel_name = cpu_kernel_name(kernel);
     const double build = build_seconds(scene, cmd.repeats);
     measure(enum_name(accel), scene, view, kernel, accel == AccelKind::Bvh ? bvh_rates : rates, build);
-    if (cmd.device == "cuda") measure_cuda(std::string(enum_name(accel)) + " cuda", scene, false);
+    if (cmd.device == "cuda") measure_cuda(std::string(enum_name(accel)) + " cuda", scene, DeviceBvh::Pairs);
     if (accel != AccelKind::Bvh) continue;
     if (cmd.device == "cuda") {
-      measure_cuda("bvh8 cuda", scene, true);
+      measure_cuda("bvh nodes cuda", scene, DeviceBvh::Binary);
+      measure_cuda("bvh8 cuda", scene, DeviceBvh::Wide);
       std::printf("(bvh8 cuda: the 8-wide tree needs %u stack entries, the variant holds %d)\n",
                   wide_bvh_stack_need(scene.wide_nodes), kWideVariantStackSize);
     }
@@ -208,7 +209,8 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
   std::printf("(CPU kernel %s; a row \"bvh ISA\" runs the same tree with that instruction set's kernel%s)\n",
               kernel_name.c_str(),
               cmd.device == "cuda"
-                  ? "; a row \"ACCEL cuda\" the GPU's stream kernels, kernel time only, on bvh's binary tree; "
+                  ? "; a row \"ACCEL cuda\" the GPU's stream kernels, kernel time only, on bvh's and lbvh's "
+                    "pair records where the scene is all triangles; \"bvh nodes cuda\" on bvh's binary nodes, "
                     "\"bvh8 cuda\" on its 8-wide tree"
                   : "");
   const Scene embree_scene = load_bench_scene(cmd.scene, AccelKind::None, 0);

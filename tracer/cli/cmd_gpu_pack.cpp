@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "bench/mesh_generators.h"
+#include "bench/ray_sets.h"
 #include "bundle/scene_bundle.h"
 #include "cli/command_registry.h"
 #include "cli/commands.h"
@@ -118,7 +119,8 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
   fs::create_directories(out / "bench");
   std::string list = "# table label file: `tracer-gpu bench DIR` times every row\n";
   const auto add = [&](const std::string& table, const std::string& label, const std::string& scene_path,
-                       uint32_t width, uint32_t height, const Sampler& s, Effects effects) {
+                       uint32_t width, uint32_t height, const Sampler& s, Effects effects,
+                       const std::string& fourth_field = "") {
     RenderOverrides o;
     o.width = width, o.height = height, o.sampler = s.sampler, o.spp = s.spp, o.effects = effects,
     o.integrator = IntegratorKind::Whitted;
@@ -127,7 +129,7 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
     const std::string file = "bench/" + table + "-" + label + ".bundle";
     write_bundle((out / file).string(),
                  encode_scene_bundle(make_scene_bundle(scene, scene.view(), {0, scene.settings.spp}, label)));
-    list += table + " " + label + " " + file + "\n";
+    list += table + " " + label + " " + file + (fourth_field.empty() ? "" : " " + fourth_field) + "\n";
   };
   const std::string cornell = (root / "scenes/cornell-box.json").string();
   for (const Sampler& s : {samplers[0], samplers[2]})
@@ -181,6 +183,35 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
     write_file_atomically((temp / "sphere-100k-alone.json").string(), alone);
     add("rays", "sphere-" + std::to_string(mesh.size()) + "tri", (temp / "sphere-100k-alone.json").string(), 720, 480,
         samplers[0], kEffectAll);
+    // A bare mesh framed as `tracer bench rays` frames an OBJ file (bench/ray_sets.h).
+    const auto add_bare_mesh = [&](const std::string& label, const std::vector<MeshTriangle>& triangles,
+                                   const std::string& fourth_field) {
+      Vec3 lo = triangles.at(0).p[0], hi = lo;
+      for (const MeshTriangle& t : triangles)
+        for (const Vec3& p : t.p) lo = min_of(lo, p), hi = max_of(hi, p);
+      const Vec3 eye = mesh_bench_eye(lo, hi), centre = (lo + hi) * 0.5f;
+      const auto vec = [](Vec3 v) {
+        char text[96];
+        std::snprintf(text, sizeof text, "[%.9g, %.9g, %.9g]", v.x, v.y, v.z);
+        return std::string(text);
+      };
+      write_obj(triangles, (temp / (label + ".obj")).string());
+      write_file_atomically((temp / (label + ".json")).string(),
+                            R"({ "format": "tracer-scene/1", "camera": { "from": )" + vec(eye) + R"(, "to": )" +
+                                vec(centre) + R"(, "vfov": )" + std::to_string(kMeshBenchFov) + R"( },
+  "film": { "width": 720, "height": 480 }, "render": { "integrator": "whitted", "spp": 1, "sampler": "center" },
+  "materials": { "m": { "type": "lambert", "albedo": [0.7, 0.7, 0.7] } },
+  "shapes": [ { "type": "mesh", "file": ")" +
+                                label + R"(.obj", "material": "m" } ] })");
+      add("rays", label, (temp / (label + ".json")).string(), 720, 480, samplers[0], kEffectAll, fourth_field);
+    };
+    // the bunny, where ci/fetch-bunny.sh put it
+    const fs::path bunny = root / "scenes/generated/bunny.obj";
+    if (fs::is_regular_file(bunny)) add_bare_mesh("bunny", load_obj(bunny.string(), bunny.string(), "bunny"), "");
+    // the 10^6-triangle terrain of ci/generate-meshes.sh, 80 MB as a bundle: the runner makes it
+    // (`mesh:terrain:1000000`) in the view of a 4,096-triangle one, whose box differs only in
+    // height (0.811 against 0.822 of 4 x 4)
+    add_bare_mesh("terrain-1m", generate_mesh("terrain", 4096), "mesh:terrain:1000000");
   } catch (...) {
     fs::remove_all(temp);
     throw;

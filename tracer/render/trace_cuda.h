@@ -2,14 +2,15 @@
 // table (cuda/trace_rays_cuda.cu): the scene's arrays on the device and a buffer of rays traced
 // by the stream schedule's closest-hit and shadow kernels, the scene's trace variant
 // (kernel/accel/trace_variants.h), each launch timed with CUDA events; `repeats` is at least 1.
-// With `wide_bvh`, a bvh scene's 8-wide tree goes to the device too and its rays run on the
-// wide_bvh_triangles variant. A build without nvcc links cuda/runner/gpu_absent.cpp, whose
+// `tree` says which of a bvh scene's trees goes to the device (render/device_bvh.h): with the
+// 8-wide one its rays run on the wide_bvh_triangles variant. A build without nvcc links cuda/runner/gpu_absent.cpp, whose
 // constructor raises DeviceUnavailable.
 #pragma once
 #include <memory>
 #include <vector>
 
 #include "kernel/accel/primitive_hit.h"
+#include "render/device_bvh.h"
 #include "scene/scene_arrays.h"
 
 namespace tracer {
@@ -17,7 +18,7 @@ namespace tracer {
 class CudaRayTracer {
  public:
   // Uploads the arrays (`view` gives the scalars); DeviceUnavailable when there is no usable GPU.
-  CudaRayTracer(const SceneArrays& arrays, const SceneView& view, bool wide_bvh);
+  CudaRayTracer(const SceneArrays& arrays, const SceneView& view, DeviceBvh tree);
   ~CudaRayTracer();
   CudaRayTracer(const CudaRayTracer&) = delete;
   CudaRayTracer& operator=(const CudaRayTracer&) = delete;

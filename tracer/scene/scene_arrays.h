@@ -23,6 +23,7 @@ inline void point_view_at(SceneView& view, const SceneArrays& arrays) {
   view.bounded_count = static_cast<uint32_t>(arrays.bounded.size());
   view.unbounded_count = static_cast<uint32_t>(arrays.unbounded.size());
   view.bvh_node_count = static_cast<uint32_t>(arrays.bvh_nodes.size());
+  view.bvh_pair_count = static_cast<uint32_t>(arrays.bvh_pairs.size());
   view.wide_node_count = static_cast<uint32_t>(arrays.wide_nodes.size());
   view.kd_node_count = static_cast<uint32_t>(arrays.kd_nodes.size());
   view.light_count = static_cast<uint32_t>(arrays.lights.size());

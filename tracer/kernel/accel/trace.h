@@ -3,6 +3,7 @@
 // (t, primitive id), and no structure prunes a candidate that could beat it (docs/determinism.md rule 4).
 #pragma once
 #include "kernel/accel/traverse_bvh.h"
+#include "kernel/accel/traverse_bvh_pairs.h"
 #include "kernel/accel/traverse_grid.h"
 #include "kernel/accel/traverse_kdtree.h"
 #include "kernel/accel/traverse_wide_bvh.h"
@@ -39,7 +40,10 @@ TRACER_HD void trace_into(const SceneView& scene, const Ray& ray, Hit& best, boo
       }
       [[fallthrough]];
     case AccelKind::Lbvh:
-      if (traces<kCode>(kTraceBvh)) traverse_bvh<kCode>(scene, ray, shear, best, any);
+      if (walks_bvh_pairs<kCode>() && scene.bvh_pair_count != 0)
+        traverse_bvh_pairs<kCode>(scene, ray, shear, best, any);
+      else if (traces<kCode>(kTraceBvh))
+        traverse_bvh<kCode>(scene, ray, shear, best, any);
       break;
     case AccelKind::Kdtree:
     case AccelKind::KdtreeMedian:

@@ -11,6 +11,8 @@
   X(uint32_t, bounded)                 /* ids of primitives with finite bounds, in BVH leaf order */ \
   X(uint32_t, unbounded)               /* ids of planes, tested for every ray */                     \
   X(BvhNode, bvh_nodes)                /* bvh and lbvh */                                            \
+  X(BvhPairNode, bvh_pairs)            /* the GPU's walk of bvh_nodes: built at upload, else empty */ \
+  X(PairTriangle, bvh_pair_triangles)  /* their leaves' triangles */                                 \
   X(WideBvhNode, wide_nodes)           /* bvh on the CPU: the 8-wide collapse of bvh_nodes */        \
   X(TriangleBlock, triangle_blocks)    /* its leaves' primitives, 4 to a block */                    \
   X(KdNode, kd_nodes)                  /* kdtree and kdtree-median */                                \

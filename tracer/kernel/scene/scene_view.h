@@ -4,6 +4,7 @@
 // (t, primitive id) compared lexicographically (docs/determinism.md rule 4).
 #pragma once
 #include "kernel/accel/bvh_node.h"
+#include "kernel/accel/bvh_pair_node.h"
 #include "kernel/accel/grid.h"
 #include "kernel/accel/kd_node.h"
 #include "kernel/accel/wide_bvh_node.h"
@@ -26,6 +27,7 @@ struct SceneView {
   uint32_t bounded_count;
   uint32_t unbounded_count;
   uint32_t bvh_node_count;
+  uint32_t bvh_pair_count;  // 0 unless the GPU's walk records were built (cuda/device_scene.h)
   uint32_t wide_node_count;
   uint32_t kd_node_count;
   uint32_t light_count;
