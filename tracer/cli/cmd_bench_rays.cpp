@@ -63,12 +63,11 @@ Scene load_bench_scene(const std::string& path, AccelKind accel, uint32_t grid_r
   Scene scene = load_scene_text(json, (p.parent_path() / "bench-rays.json").string(), ov);
   Bounds b;
   for (const Primitive& prim : scene.primitives) b.grow(primitive_bounds(prim));
-  const Vec3 centre = (b.lo + b.hi) * 0.5f, diag = b.hi - b.lo;
   CameraSpec spec;
-  spec.to = centre;
-  spec.from = centre + normalize(Vec3{0.5f, 0.6f, 1.0f}) * (1.2f * length(diag));
+  spec.to = (b.lo + b.hi) * 0.5f;
+  spec.from = mesh_bench_eye(b.lo, b.hi);
   spec.up = {0, 1, 0};
-  spec.vfov_degrees = 45.0f;
+  spec.vfov_degrees = kMeshBenchFov;
   spec.aperture = 0.0f;
   spec.focus_distance = length(spec.from - spec.to);
   scene.camera = make_camera(spec, kCamera, kCamera);
