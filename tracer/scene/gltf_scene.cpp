@@ -1,6 +1,7 @@
 #include "scene/gltf_scene.h"
 
 #include <cmath>
+#include <optional>
 #include <set>
 
 #include "io/json_reader.h"
@@ -10,6 +11,7 @@
 #include "scene/gltf_schema.h"
 #include "scene/light_reader.h"
 #include "scene/mesh_primitives.h"
+#include "scene/scene_types.h"
 
 namespace tracer {
 namespace {
@@ -263,7 +265,8 @@ class GltfSceneReader {
     if (!with_lights_) return;
     const tinygltf::Light& l = model_.lights[index];
     const std::string path = "extensions.KHR_lights_punctual." + at("lights", index);
-    if (l.type != "point" && l.type != "spot" && l.type != "directional")
+    const std::optional<LightKind> kind = declared_light_kind(l.type);
+    if (!kind)
       fail_at(file_.path, path + ".type",
               "a light of type \"" + l.type + "\"" + (l.name.empty() ? "" : " (\"" + l.name + "\")") +
                   ": expected point, spot or directional");
@@ -279,7 +282,7 @@ class GltfSceneReader {
       fail_at(file_.path, path, "color and intensity must be finite and >= 0");
     if (l.range > 0.0 && l.type != "directional") ignore(path + ".range (light falls off as 1/d^2 everywhere)");
     Light p{};
-    p.kind = l.type == "point" ? LightKind::Point : l.type == "spot" ? LightKind::Spot : LightKind::Directional;
+    p.kind = *kind;
     // candela (point, spot) and lux (directional): the tracer's radiance unit is the nit (docs/gltf.md)
     p.intensity = colour * intensity;
     if (p.kind != LightKind::Directional) p.position = world.point({0, 0, 0});

@@ -67,14 +67,13 @@ Light read_light(const Json& value, const std::string& path, const std::string& 
                          "; emissive shapes are area lights)");
   used_types.insert("light:" + type);
   Light l{};
-  if (type == "directional") {
-    l.kind = LightKind::Directional;
+  l.kind = *declared_light_kind(type);  // accepted: a declared light's type
+  if (l.kind == LightKind::Directional) {
     read_direction(obj, l);
     l.intensity = obj.color("irradiance");
     if (const std::string why = set_sun_disc(l, obj.number_or("angle", 0.0f) * kDegree); !why.empty())
       obj.fail("angle", why);
   } else {
-    l.kind = type == "spot" ? LightKind::Spot : LightKind::Point;
     l.position = obj.vec3("position");
     l.intensity = obj.color("intensity");
     read_attenuation(obj, l);

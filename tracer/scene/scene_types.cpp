@@ -33,6 +33,14 @@ const std::map<std::string, std::vector<std::string>>& accepted_scene_types() {
   return types;
 }
 
+std::optional<LightKind> declared_light_kind(const std::string& type) {
+#define TRACER_DECLARED_LIGHT_OF_TYPE(Kind, name) \
+  if (type == name) return LightKind::Kind;
+  TRACER_DECLARED_LIGHT_KINDS(TRACER_DECLARED_LIGHT_OF_TYPE)
+#undef TRACER_DECLARED_LIGHT_OF_TYPE
+  return std::nullopt;
+}
+
 bool is_accepted_type(const std::string& category, const std::string& name) {
   const auto& names = accepted_scene_types().at(category);
   return std::find(names.begin(), names.end(), name) != names.end();

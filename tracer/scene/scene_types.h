@@ -3,10 +3,12 @@
 // golden coverage test can check that every accepted type is drawn by some golden.
 #pragma once
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "io/json_reader.h"
+#include "kernel/light/light_records.h"
 
 namespace tracer {
 
@@ -20,6 +22,10 @@ bool is_accepted_type(const std::string& category, const std::string& name);
 
 // Reads the `type` key of a section and checks it against the table of `category`.
 std::string read_type(JsonObject& obj, const std::string& category);
+
+// The declared light of a scene file's (or glTF KHR_lights_punctual's) type: "point", "spot",
+// "directional"; none for any other.
+std::optional<LightKind> declared_light_kind(const std::string& type);
 
 // "sphere, plane, triangle, quad, box or mesh": for "expected ..." messages.
 std::string expected_types(const std::string& category);
