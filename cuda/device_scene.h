@@ -16,10 +16,9 @@
 namespace tracer {
 
 // The tree a view asks for: the 8-wide one where it counts one (a bundle that keeps it), else
-// the binary one, with its pair records for the stream schedule (the megakernels walk nodes).
+// the binary one with its pair records.
 inline DeviceBvh device_bvh_of(const SceneView& view) {
-  if (view.wide_node_count != 0) return DeviceBvh::Wide;
-  return view.settings.schedule == Schedule::Stream ? DeviceBvh::Pairs : DeviceBvh::Binary;
+  return view.wide_node_count != 0 ? DeviceBvh::Wide : DeviceBvh::Pairs;
 }
 
 class DeviceScene {

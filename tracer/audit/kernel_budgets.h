@@ -32,24 +32,28 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // lights and suns (kernel/light/spot_light.h, directional_light.h): path 155 -> 156 (the
     // miss meets a sun's disc), Whitted 182 -> 184 (the declared light's kind switch), 12.5 % still.
     // 16 bytes more stack in every kernel holding a SceneView copy since it points at the binary
-    // tree's pair records (bvh_pairs, bvh_pair_triangles, bvh_pair_count; 2026-11-27).
-    {"path_render_kernel",               156,  816, 0, 0, 256},
-    {"path_mirror_images_render_kernel", 183,  816, 0, 0, 256},
-    {"whitted_render_kernel",            184, 3456, 0, 0, 256},
-    {"view_render_kernel",                86,  288, 0, 0, 256},
+    // tree's pair records (bvh_pairs, bvh_pair_triangles, bvh_pair_count; 2026-11-27), and 288
+    // more in every kernel running the full trace code since the GPU's full code walks them too
+    // (kernel/accel/traverse_bvh_pairs.h: its stack of (record, entry distance)); registers in
+    // the same occupancy steps: path 156, its adaptive pass 146 -> 147, Whitted 184 -> 182,
+    // views 86 -> 84 and their adaptive pass 78 -> 80, the parity trace kernel 88 -> 92.
+    {"path_render_kernel",               156, 1104, 0, 0, 256},
+    {"path_mirror_images_render_kernel", 183, 1104, 0, 0, 256},
+    {"whitted_render_kernel",            182, 3744, 0, 0, 256},
+    {"view_render_kernel",                84,  576, 0, 0, 256},
     // adaptive sampling (cuda/gpu_adaptive.cu)
     // path: mirror images, as the megakernel (18.75 % occupancy -> 12.5 %)
     // without mirror images 145 (18.75 %), with them 171 (12.5 %); 146 with spot lights and suns
-    {"path_adaptive_pass_kernel",        146,  816, 0, 0, 128},
-    {"path_mirror_images_adaptive_pass_kernel", 171, 816, 0, 0, 128},
-    {"whitted_adaptive_pass_kernel",     174, 3456, 0, 0, 128},
-    {"view_adaptive_pass_kernel",         78,  288, 0, 0, 128},
+    {"path_adaptive_pass_kernel",        147, 1104, 0, 0, 128},
+    {"path_mirror_images_adaptive_pass_kernel", 170, 1104, 0, 0, 128},
+    {"whitted_adaptive_pass_kernel",     172, 3744, 0, 0, 128},
+    {"view_adaptive_pass_kernel",         80,  576, 0, 0, 128},
     {"mark_unconverged_kernel",           40,    0, 0, 0, 128},
     {"keep_kernel",                       16,    0, 0, 0, 128},
     // the stream schedule (cuda/gpu_stream.cu)
     {"begin_batch_kernel",                20,    0, 0, 0, 128},
     {"generate_stage_kernel",             24,    0, 0, 0, 128},
-    {"closest_hit_stage_kernel",          72,  288, 0, 0, 128},
+    {"closest_hit_stage_kernel",          72,  576, 0, 0, 128},
     // one register more for render.light_sampling's solid-angle branch, one for Russian
     // roulette's first-vertex throughput and five for spherical triangles (Arvo's sample), in
     // the same occupancy step (25 %); 43 more and a stack frame for mirror images (25 % -> 18.75 %);
@@ -63,7 +67,7 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // allocation step they were in (96 and 48), so occupancy is unchanged
     {"whitted_shade_stage_kernel",        96,    0, 0, 0, 128},
     {"view_shade_stage_kernel",           46,    0, 0, 0, 128},
-    {"shadow_any_hit_stage_kernel",       70,  288, 0, 0, 128},
+    {"shadow_any_hit_stage_kernel",       70,  576, 0, 0, 128},
     // the trace variants' stages (kernel/accel/trace_variants.h), held to 64 registers; each shadow
     // stage traces a mirror image's two ways too (trace_shadows: one traversal call site), two to
     // four registers more for the sphere variants, 80 bytes of spills for the 8-wide tree's
@@ -99,9 +103,9 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     {"shape_kernel",                      42,    0, 0, 0, 256},
     {"bsdf_kernel",                       56,    0, 0, 0, 256},
     {"adaptive_kernel",                   46,    0, 0, 0, 256},
-    {"trace_kernel",                      88,  272, 0, 0, 256},
+    {"trace_kernel",                      92,  560, 0, 0, 256},
     // the path tracer's sample, with mirror images; one more for per-axis texture wrap
-    {"sample_kernel",                    203, 2912, 0, 0, 256},
+    {"sample_kernel",                    203, 3200, 0, 0, 256},
 };
 // clang-format on
 

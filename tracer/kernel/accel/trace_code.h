@@ -69,13 +69,13 @@ TRACER_HD constexpr bool walks_wide_bvh() {
 
 // Whether code kCode walks the binary tree's pair records (kernel/accel/bvh_pair_node.h)
 // where the view holds them, which it does only for scenes whose bounded primitives are all
-// triangles. On the GPU only the binary tree's trace variants do; the megakernels keep the
-// node walk, and the wide tree's variant, whose device holds no records, its node fallback.
+// triangles. On the GPU every code that walks the binary tree does but the wide tree's
+// variant, whose device holds no records (it keeps its node fallback).
 template <uint32_t kCode>
 TRACER_HD constexpr bool walks_bvh_pairs() {
 #if defined(__CUDA_ARCH__)
-  return kCode != kTraceAll && traces<kCode>(kTraceBvh) && traces<kCode>(kFeatureTriangle) &&
-         !traces<kCode>(kTraceWideBvh);
+  return traces<kCode>(kTraceBvh) && traces<kCode>(kFeatureTriangle) &&
+         (kCode == kTraceAll || !traces<kCode>(kTraceWideBvh));
 #else
   return traces<kCode>(kTraceBvh) && traces<kCode>(kFeatureTriangle);
 #endif
