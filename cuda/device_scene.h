@@ -1,10 +1,9 @@
 // The scene's flat arrays (every entry of kernel/scene/scene_arrays.h) copied to plain device
 // buffers, and a SceneView whose pointers point at them: what a kernel receives by value.
 // bvh's binary tree goes to the device as nodes, and, asked for Pairs, also as the pair
-// records the trace variants walk (kernel/accel/bvh_pair_node.h), built here from the nodes
-// where every bounded primitive is a triangle; its 8-wide tree goes only when asked for: it
-// is walked by the wide_bvh_triangles trace variant alone (kernel/accel/trace_variants.h).
-// Each gives the same hits.
+// records every binary walk on the device takes (kernel/accel/bvh_pair_node.h), built here
+// from the nodes; its 8-wide tree goes only when asked for: it is walked by the
+// wide_bvh_triangles trace variant alone (kernel/accel/trace_variants.h). Each gives the same hits.
 #pragma once
 #include <string>
 
@@ -16,9 +15,12 @@
 namespace tracer {
 
 // The tree a view asks for: the 8-wide one where it counts one (a bundle that keeps it), else
-// the binary one with its pair records.
+// the binary one, with its pair records where the scene's bounded shapes are all triangles (the
+// records hold triangles only: for any other scene they would be walked for nothing).
 inline DeviceBvh device_bvh_of(const SceneView& view) {
-  return view.wide_node_count != 0 ? DeviceBvh::Wide : DeviceBvh::Pairs;
+  if (view.wide_node_count != 0) return DeviceBvh::Wide;
+  const uint32_t bounded_shapes = kTraceShapes & ~kFeaturePlane;
+  return (view.features & bounded_shapes) == kFeatureTriangle ? DeviceBvh::Pairs : DeviceBvh::Binary;
 }
 
 class DeviceScene {
@@ -37,8 +39,8 @@ class DeviceScene {
     TRACER_SCENE_ARRAYS(TRACER_POINT_AT_DEVICE)
 #undef TRACER_POINT_AT_DEVICE
     if (bvh != DeviceBvh::Wide) view_.wide_node_count = 0;
-    view_.bvh_pair_count = 0;  // records come from the nodes here, never from the arrays given
-    if (bvh == DeviceBvh::Pairs && walks_binary_tree(host_view.settings.accel)) {
+    view_.bvh_pair_count = 0;       // records come from the nodes here, never from the arrays given
+    if (bvh == DeviceBvh::Pairs) {  // none for a tree of other shapes, or no binary tree
       const BvhPairs pairs = build_bvh_pairs(arrays.bvh_nodes, arrays.bounded, arrays.primitives, source);
       bvh_pairs_ = DeviceBuffer<BvhPairNode>(pairs.nodes);
       bvh_pair_triangles_ = DeviceBuffer<PairTriangle>(pairs.triangles);
@@ -66,7 +68,6 @@ class DeviceScene {
   static DeviceBuffer<T> upload(const std::vector<T>& host, DeviceBvh) {
     return DeviceBuffer<T>(host);
   }
-  static bool walks_binary_tree(AccelKind accel) { return accel == AccelKind::Bvh || accel == AccelKind::Lbvh; }
   static DeviceBuffer<WideBvhNode> upload(const std::vector<WideBvhNode>& host, DeviceBvh bvh) {
     return bvh == DeviceBvh::Wide ? DeviceBuffer<WideBvhNode>(host) : DeviceBuffer<WideBvhNode>();
   }

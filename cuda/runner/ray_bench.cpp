@@ -70,23 +70,9 @@ void print_row(const std::string& name, const RaySets& rays, const TracedRays& t
 
 }  // namespace
 
-SceneBundle with_generated_mesh(SceneBundle bundle, const std::string& spec, const std::string& label) {
-  constexpr uint32_t kMostTriangles = 1u << 24;  // the scene loader's limit
-  const size_t colon = spec.find(':');
-  uint32_t triangles = 0;
-  const std::string count = colon == std::string::npos ? "" : spec.substr(colon + 1);
-  for (const char c : count) {
-    if (c < '0' || c > '9' || triangles > kMostTriangles / 10) {
-      triangles = 0;
-      break;
-    }
-    triangles = triangles * 10 + static_cast<uint32_t>(c - '0');
-  }
-  if (triangles == 0 || triangles > kMostTriangles)
-    throw InputError(label + ": mesh:" + spec + ": expected KIND:TRIANGLES, 1 to " + std::to_string(kMostTriangles) +
-                     " triangles");
-  const std::vector<MeshTriangle> mesh = generate_mesh(spec.substr(0, colon), triangles);
-  if (bundle.arrays.materials.empty()) throw InputError(label + ": the bundle has no material for the mesh");
+SceneBundle with_generated_mesh(SceneBundle bundle, const std::string& kind, uint32_t triangles) {
+  const std::vector<MeshTriangle> mesh = generate_mesh(kind, triangles);
+  if (bundle.arrays.materials.empty()) throw InputError("the bundle has no material for the mesh");
   SceneArrays& a = bundle.arrays;
   a.primitives.clear();
   std::vector<BuildItem> items;

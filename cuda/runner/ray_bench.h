@@ -9,11 +9,14 @@
 
 namespace tracer {
 
-// `bundle`'s scene with its primitives replaced by generate_mesh(KIND, TRIANGLES) of `spec`
-// ("KIND:TRIANGLES", bench/mesh_generators.h) under a SAH bvh built as the tracer builds it
-// (accel/bvh_builder.h): a mesh too large to carry in a bundle, the 10^6-triangle terrain; the
-// bundle gives the camera and the settings. InputError naming `label` for a malformed spec.
-SceneBundle with_generated_mesh(SceneBundle bundle, const std::string& spec, const std::string& label);
+// The most triangles with_generated_mesh makes: the scene loader's limit.
+constexpr uint32_t kMostGeneratedTriangles = 1u << 24;
+
+// `bundle`'s scene with its primitives replaced by generate_mesh(kind, triangles)
+// (bench/mesh_generators.h) under a SAH bvh built as the tracer builds it (accel/bvh_builder.h):
+// a mesh too large to carry in a bundle, the 10^6-triangle terrain; the bundle gives the camera
+// and the settings. InputError for an unknown kind or a bundle without a material.
+SceneBundle with_generated_mesh(SceneBundle bundle, const std::string& kind, uint32_t triangles);
 
 // Prints the table's rows for `bundle` (a bvh scene), `label` naming it. The 8-wide tree is
 // collapsed here from the bundle's binary tree, as the tracer collapses it. InputError when the

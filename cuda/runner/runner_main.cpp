@@ -330,6 +330,18 @@ int run_pack(const Options& o) {
   return passed == total && total > 0 ? 0 : 1;
 }
 
+// A rays row's fourth field, "mesh:KIND:TRIANGLES": `b` with that generated mesh (ray_bench.h).
+SceneBundle with_mesh_field(const SceneBundle& b, const std::string& field, const std::string& where) {
+  const size_t colon = field.find(':', 5);
+  try {
+    if (colon == std::string::npos) throw InputError(field + ": expected mesh:KIND:TRIANGLES");
+    return with_generated_mesh(b, field.substr(5, colon - 5),
+                               parse_count(field.substr(0, colon), field.substr(colon + 1), kMostGeneratedTriangles));
+  } catch (const InputError& e) {
+    throw InputError(where + ": " + e.what());
+  }
+}
+
 // DIR/bench.tsv: "TABLE LABEL FILE [SCHEDULE]" per row (SCHEDULE as in pack.tsv; a row of table "rays" may
 // name "mesh:KIND:TRIANGLES" there instead, ray_bench.h). Each bundle is rendered --repeat
 // times on the device and its best time reported; on the GPU the CPU renders it once beside it, as the baseline of the
@@ -356,11 +368,9 @@ int run_bench(const Options& o) {
         std::printf("%-10s %-34s %10s %10s %10s  %s\n", "table", "label", "primary", "incoherent", "shadow",
                     "hits (checksum), Mrays/s");
       rays_header = true;
-      // a fourth field "mesh:KIND:TRIANGLES" traces a generated mesh in the bundle's view
       const SceneBundle b = read_scene_bundle(dir + file);
-      run_ray_bench(
-          schedule.rfind("mesh:", 0) == 0 ? with_generated_mesh(b, schedule.substr(5), dir + "bench.tsv: " + label) : b,
-          label, gpu, o.threads, o.repeat);
+      run_ray_bench(schedule.rfind("mesh:", 0) == 0 ? with_mesh_field(b, schedule, dir + "bench.tsv: " + label) : b,
+                    label, gpu, o.threads, o.repeat);
       continue;
     }
     const Options row = schedule.empty() ? o : with_schedule(o, schedule, dir + "bench.tsv: " + label);

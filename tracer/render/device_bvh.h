@@ -1,5 +1,5 @@
-// Which of bvh's trees a GPU upload holds (cuda/device_scene.h) and so which one the stream
-// schedule's trace variants walk: each gives the same hits.
+// Which of bvh's trees a GPU upload holds (cuda/device_scene.h) and so which one its kernels
+// walk: each gives the same hits.
 #pragma once
 
 namespace tracer {
