@@ -9,18 +9,23 @@
 # From the repository root, after bash ci/build.sh:
 #   bash scenes/gltf/blender_compare.sh FILE.glb [SPP] [WIDTH] [HEIGHT] [KEEP_DIR] [SKY]
 # KEEP_DIR, when given (or ""), keeps tracer.exr and blender.exr there. SKY R,G,B replaces the
-# neutral sky in both (0,0,0: the file's own lights alone).
+# neutral sky in both (0,0,0: the file's own lights alone); SKY an image file (.exr, .hdr) lights
+# both by that equirectangular map (the tracer's --environment, Blender's Environment Texture).
 set -euo pipefail
 file=$1 spp=${2:-1024} width=${3:-160} height=${4:-120} keep=${5:-} sky=${6:-1,1,1}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-build/tracer render "$file" --spp "$spp" --width "$width" --height "$height" --background "$sky" --quiet \
+case "$sky" in
+  *.exr | *.hdr) ours=(--environment "$sky") theirs=(--environment "$(realpath "$sky")") ;;
+  *) ours=(--background "$sky") theirs=(--world "$sky") ;;
+esac
+build/tracer render "$file" --spp "$spp" --width "$width" --height "$height" "${ours[@]}" --quiet \
   -o "$work/tracer.exr" >/dev/null
 # "camera (none in the file: one framing the model) from X,Y,Z to X,Y,Z up X,Y,Z vfov DEGREES"
 camera=$(build/tracer info "$file" |
   sed -n 's/.*one framing the model) from \([^ ]*\) to \([^ ]*\) up \([^ ]*\) vfov \([^ ]*\).*/--camera-from=\1 --camera-to=\2 --camera-up=\3 --vfov=\4/p')
 blender -b -noaudio --factory-startup --python "$(dirname "$0")/blender_render.py" -- "$file" "$work/blender.exr" \
-  --spp "$spp" --width "$width" --height "$height" --lighting COMPAT --world "$sky" $camera >"$work/blender.log" 2>&1 ||
+  --spp "$spp" --width "$width" --height "$height" --lighting COMPAT "${theirs[@]}" $camera >"$work/blender.log" 2>&1 ||
   { tail -20 "$work/blender.log"; exit 1; }
 [ -n "$keep" ] && mkdir -p "$keep" && cp "$work/tracer.exr" "$work/blender.exr" "$keep/"
 /usr/bin/python3 - "$work/tracer.exr" "$work/blender.exr" <<'PY'

@@ -3,12 +3,14 @@ docs/gltf.md's comparison of conventions (camera, light units, emission, the met
 
   blender -b -noaudio --factory-startup --python scenes/gltf/blender_render.py -- \
       FILE.glb OUT.exr [--spp N] [--width W] [--height H] [--max-depth D] [--lighting SPEC|COMPAT|RAW]
-      [--world R,G,B] [--camera-from=X,Y,Z --camera-to=X,Y,Z --camera-up=X,Y,Z --vfov=DEGREES]
+      [--world R,G,B | --environment FILE] [--camera-from=X,Y,Z --camera-to=X,Y,Z --camera-up=X,Y,Z --vfov=DEGREES]
 
 Settings as ../shared/cycles/scene_to_cycles.py chose them for the tracer's JSON scenes: a box
 filter one pixel wide, no adaptive sampling, denoising or clamping, caustics on, paths of at
 most D scattering vertices (Cycles' max_bounces D - 1), a world of constant radiance --world
-(default 1, 1, 1: the tracer's neutral sky for a glTF file). Point lights get radius 0
+(default 1, 1, 1: the tracer's neutral sky for a glTF file) or an equirectangular image
+--environment (an Environment Texture node, equirectangular, linear, strength 1: the tracer's
+--environment). Point lights get radius 0
 (Cycles' default is a sphere light). --lighting is the importer's conversion of
 KHR_lights_punctual intensities: SPEC (its default) turns candela into watts as
 W = cd * 4 pi / 683, COMPAT as W = cd * 4 pi; RAW takes the number as watts. --camera-from
@@ -62,6 +64,7 @@ def main():
     p.add_argument("--max-depth", type=int, default=8)
     p.add_argument("--lighting", default="SPEC", choices=["SPEC", "COMPAT", "RAW"])
     p.add_argument("--world", default="1,1,1")
+    p.add_argument("--environment")
     p.add_argument("--camera-from")
     p.add_argument("--camera-to")
     p.add_argument("--camera-up", default="0,1,0")
@@ -99,6 +102,13 @@ def main():
     world.use_nodes = True
     world.node_tree.nodes["Background"].inputs["Color"].default_value = tuple(float(c) for c in a.world.split(",")) + (1,)
     world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
+    if a.environment:
+        texture = world.node_tree.nodes.new("ShaderNodeTexEnvironment")
+        texture.image = bpy.data.images.load(a.environment)
+        texture.image.colorspace_settings.name = "Linear"
+        texture.projection = "EQUIRECTANGULAR"
+        texture.interpolation = "Linear"
+        world.node_tree.links.new(texture.outputs["Color"], world.node_tree.nodes["Background"].inputs["Color"])
     scene.world = world
 
     r = scene.render

@@ -20,18 +20,7 @@ Image render(const std::string& json, const RenderOverrides& ov = {}) {
   return image;
 }
 
-struct MeanStat {
-  double mean, stderr_;
-};
-
-// Mean of channel c over all pixels and its standard error.
-MeanStat mean_of(const Image& img, int c) {
-  const size_t n = img.rgb.size() / 3;
-  double sum = 0, sum2 = 0;
-  for (size_t i = 0; i < n; ++i) sum += img.rgb[3 * i + c], sum2 += double(img.rgb[3 * i + c]) * img.rgb[3 * i + c];
-  const double mean = sum / n, var = std::max(0.0, sum2 / n - mean * mean) * n / (n - 1);
-  return {mean, std::sqrt(var / n)};
-}
+using test::MeanStat;
 
 constexpr double kFloatTolerance = 1e-6;  // a few ulps of values near 1, plus the film's 2^-32
 
@@ -112,7 +101,7 @@ void plane_under_bright_top_face(bool sky_sampling, SamplerKind sampler = Sample
       0, stats);
   std::filesystem::remove_all(dir);
   EXPECT_EQ(stats.nonfinite_samples, 0u);
-  const MeanStat m = mean_of(img, 0);
+  const MeanStat m = test::channel_mean(img, 0);
   EXPECT_NEAR(m.mean, 0.5 * 2.0 * 0.5541264, 5 * m.stderr_) << "stderr " << m.stderr_;
   EXPECT_GT(m.stderr_, 0.0) << "the estimator has variance here";
 }
@@ -135,7 +124,7 @@ void closed_emitting_sphere(bool nee, SamplerKind sampler = SamplerKind::Stochas
     "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "shell"}]})",
                            ov);
   for (int c = 0; c < 3; ++c) {
-    const MeanStat m = mean_of(img, c);
+    const MeanStat m = test::channel_mean(img, c);
     EXPECT_NEAR(m.mean, 1.0, 5 * m.stderr_ + kFloatTolerance) << "channel " << c << ", stderr " << m.stderr_;
     EXPECT_GT(m.stderr_, 0.0) << "the estimator has variance here";
   }
@@ -156,7 +145,7 @@ TEST(PathAnalytic, PointLightAtTheCentreOfALambertSphere) {
     "materials": {"shell": {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}},
     "lights": [{"type": "point", "position": [0, 0, 0], "intensity": [3.14159265, 3.14159265, 3.14159265]}],
     "shapes": [{"type": "sphere", "center": [0, 0, 0], "radius": 2, "material": "shell"}]})");
-  const MeanStat m = mean_of(img, 1);
+  const MeanStat m = test::channel_mean(img, 1);
   EXPECT_NEAR(m.mean, 0.25, 5 * m.stderr_ + kFloatTolerance) << "stderr " << m.stderr_;
 }
 
@@ -189,7 +178,7 @@ TEST(PathAnalytic, NeeAndPlainEstimatorConvergeToTheSameImage) {
   Image diff = with;
   for (size_t i = 0; i < diff.rgb.size(); ++i) diff.rgb[i] = with.rgb[i] - without.rgb[i];
   for (int c = 0; c < 3; ++c) {
-    const MeanStat d = mean_of(diff, c), level = mean_of(with, c);
+    const MeanStat d = test::channel_mean(diff, c), level = test::channel_mean(with, c);
     EXPECT_NEAR(d.mean, 0.0, 5 * d.stderr_) << "channel " << c << ", image mean " << level.mean;
     EXPECT_GT(level.mean, 0.05);
   }
@@ -234,7 +223,7 @@ TEST(PathAnalytic, PhongSpecularLobeReflectsAllOfAUniformSkyAtNormalIncidence) {
   const Image img =
       render(plane_seen_head_on(R"({"type": "phong", "diffuse": [0, 0, 0], "specular": [1, 1, 1], "shininess": 20})",
                                 R"({"type": "constant", "radiance": [1, 1, 1]})"));
-  const MeanStat m = mean_of(img, 0);
+  const MeanStat m = test::channel_mean(img, 0);
   EXPECT_NEAR(m.mean, 1.0, 5.0 * m.stderr_ + 1e-4) << "stderr " << m.stderr_;
 }
 
@@ -245,7 +234,7 @@ TEST(PathAnalytic, PhongSpecularLobeReflectsAllOfAUniformSkyAtNormalIncidence) {
 TEST(PathAnalytic, MetalRoughnessSetsTheLobesMeanCosine) {
   const Image img = render(plane_seen_head_on(R"({"type": "metal", "albedo": [1, 1, 1], "roughness": 0.5})",
                                               R"({"type": "gradient", "zenith": [1, 1, 1], "horizon": [0, 0, 0]})"));
-  const MeanStat m = mean_of(img, 0);
+  const MeanStat m = test::channel_mean(img, 0);
   EXPECT_NEAR(m.mean, 7.0 / 8.0, 5.0 * m.stderr_ + 1e-4) << "stderr " << m.stderr_;
 }
 

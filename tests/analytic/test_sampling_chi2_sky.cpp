@@ -43,13 +43,12 @@ TEST(SamplingChi2, CubeMapSkyCellsByTheirDensity) {
   std::filesystem::remove_all(dir);
   const SceneView view = scene.view();
   ASSERT_EQ(view.environment_light, 0u);
-  ASSERT_EQ(view.sky_cells_per_side, uint32_t(kSize));
+  ASSERT_EQ(view.sky_cell_columns, uint32_t(kSize));
   std::vector<double> observed(6 * kBinsPerSide * kBinsPerSide, 0.0), expected(observed.size(), 0.0);
   test::InputStream s{17};
   double inverse_pdf = 0, inverse_pdf2 = 0;
   for (int i = 0; i < kSamples; ++i) {
-    const float u1 = s.next(), u2 = s.next(), cell_u = s.next();
-    const LightSample ls = sample_light(view, view.environment_light, {0, 0, 0}, u1, u2, cell_u);
+    const LightSample ls = test::draw_environment(view, s);
     ASSERT_TRUE(ls.valid);
     ASSERT_NEAR(length(ls.wi), 1.0f, 1e-6f);
     float u, v;
@@ -92,7 +91,7 @@ TEST(SamplingChi2, CubeMapSkyCellSeesALoneTexelOffItsCentre) {
   std::filesystem::remove_all(dir);
   const SceneView view = scene.view();
   ASSERT_EQ(view.environment_light, 0u) << "the sky has a sampling distribution";
-  ASSERT_EQ(view.sky_cells_per_side, 128u);
+  ASSERT_EQ(view.sky_cell_columns, 128u);
   const float u = 0.5f / kSize, v = 1.0f - 1.5f / kSize;  // texel (0, 1)'s centre
   EXPECT_GT(environment_direction_pdf(view, normalize(cube_direction(0, 2 * u - 1, 2 * v - 1))), 0.0f);
 }

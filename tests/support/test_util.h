@@ -18,6 +18,7 @@
 
 #include "image/image_io.h"
 #include "io/input_error.h"
+#include "kernel/light/light.h"
 #include "render/render_cpu.h"
 #include "scene/scene_loader.h"
 
@@ -36,6 +37,25 @@ struct InputStream {
 };
 
 // A file's bytes ("" when it cannot be opened).
+// A sample of the scene's environment light seen from the origin, by three draws of s (the
+// direction's two, then the cell's), as the sampling tests take them.
+inline LightSample draw_environment(const SceneView& view, InputStream& s) {
+  const float u1 = s.next(), u2 = s.next(), cell_u = s.next();
+  return sample_light(view, view.environment_light, {0, 0, 0}, u1, u2, cell_u);
+}
+
+// The mean of channel c over an image's pixels, and its standard error.
+struct MeanStat {
+  double mean, stderr_;
+};
+inline MeanStat channel_mean(const Image& img, int c) {
+  const size_t n = img.rgb.size() / 3;
+  double sum = 0, sum2 = 0;
+  for (size_t i = 0; i < n; ++i) sum += img.rgb[3 * i + c], sum2 += double(img.rgb[3 * i + c]) * img.rgb[3 * i + c];
+  const double mean = sum / n, var = std::max(0.0, sum2 / n - mean * mean) * n / (n - 1);
+  return {mean, std::sqrt(var / n)};
+}
+
 inline std::string read_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), {}};

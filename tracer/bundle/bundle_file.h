@@ -15,7 +15,8 @@
 namespace tracer {
 
 // 2: TriangleShading gained bitangent_sign; 3: Light gained its kind; 4: its direction, cone and disc.
-constexpr uint32_t kBundleVersion = 5;
+// 6: SceneView's environment cells by columns and rows; Background's equirectangular map.
+constexpr uint32_t kBundleVersion = 6;
 constexpr uint64_t kBundleMaxBytes = 1ull << 30;  // what a reader accepts
 
 struct BundleSection {

@@ -42,11 +42,20 @@ std::string view_violation(const SceneBundle& b) {
   for (const uint32_t id : b.arrays.mirror_prims)
     if (id >= b.arrays.primitives.size())
       return "mirror_prims: primitive " + std::to_string(id) + " of " + std::to_string(b.arrays.primitives.size());
-  const uint32_t side = v.sky_cells_per_side;
-  if (!b.arrays.sky_cells.empty() &&
-      (side < 1 || side > 4096 || environment_cell_count(side) != b.arrays.sky_cells.size()))
-    return "sky: " + std::to_string(side) + " cells per side, but " + std::to_string(b.arrays.sky_cells.size()) +
-           " cells";
+  const BackgroundKind background = v.background.kind;
+  if (static_cast<uint32_t>(background) > static_cast<uint32_t>(BackgroundKind::Environment))
+    return "background: kind " + std::to_string(static_cast<uint32_t>(background));
+  if (background == BackgroundKind::Environment &&
+      (v.background.map >= b.arrays.textures.size() || b.arrays.textures[v.background.map].kind != TextureKind::Image))
+    return "background: map " + std::to_string(v.background.map) + " is not one of the " +
+           std::to_string(b.arrays.textures.size()) + " textures' images";
+  const uint32_t columns = v.sky_cell_columns, rows = v.sky_cell_rows;
+  if ((b.arrays.sky_cells.empty()
+           ? columns != 0 || rows != 0
+           : !samples_environment(background) || columns < 1 || rows < 1 || columns > 4096 || rows > 4096) ||
+      environment_cell_count(background, columns, rows) != b.arrays.sky_cells.size())
+    return "sky: " + std::to_string(columns) + " x " + std::to_string(rows) + " cells, but " +
+           std::to_string(b.arrays.sky_cells.size()) + " cells";
   for (size_t i = 0; i < b.arrays.lights.size(); ++i)
     if (!is_declared_kind(b.arrays.lights[i].kind))
       return "lights[" + std::to_string(i) + "]: kind " +

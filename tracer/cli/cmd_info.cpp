@@ -7,6 +7,7 @@
 
 #include "cli/command_registry.h"
 #include "kernel/accel/trace_variants.h"
+#include "options/enum_names.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
@@ -14,9 +15,27 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-static int run_info(const std::string& scene_path) {
+// The background's type and, for a map, its size and the cells sampling it as a light.
+void print_background(const Scene& scene) {
+  const Background& bg = scene.background;
+  std::printf("background %s", enum_name(bg.kind));
+  const uint32_t texture = bg.kind == BackgroundKind::Environment ? bg.map
+                           : bg.kind == BackgroundKind::Cubemap   ? bg.faces[0]
+                                                                  : kNoTexture;
+  if (texture != kNoTexture)
+    std::printf(" (%ux%u texels%s)", scene.textures[texture].width, scene.textures[texture].height,
+                bg.kind == BackgroundKind::Cubemap ? " a face" : "");
+  if (scene.environment_light != kNoHit)
+    std::printf(", a light of %ux%u cells%s", scene.sky_cell_columns, scene.sky_cell_rows,
+                bg.kind == BackgroundKind::Cubemap ? " a face" : "");
+  std::printf("\n");
+}
+
+static int run_info(const std::string& scene_path, const std::optional<std::string>& environment) {
   const auto t = Clock::now();
-  const Scene scene = load_scene(scene_path);
+  RenderOverrides overrides;
+  overrides.environment = environment;
+  const Scene scene = load_scene(scene_path, overrides);
   const double seconds = std::chrono::duration<double>(Clock::now() - t).count();
   std::printf("scene      %s\n", scene_path.c_str());
   std::printf("shapes    ");
@@ -36,6 +55,7 @@ static int run_info(const std::string& scene_path) {
   TRACER_DECLARED_LIGHT_KINDS(TRACER_INFO_LIGHT_COUNT)
 #undef TRACER_INFO_LIGHT_COUNT
   std::printf("\n");
+  print_background(scene);
   if (!scene.mirror_prims.empty())
     std::printf(
         "mirrors    %zu flat mirrors, the lights seen in them sampled as mirror images (render.mirror_images)\n",
@@ -58,8 +78,10 @@ static int run_info(const std::string& scene_path) {
 const RegisterCommand kInfoCommand(
     {"", "info", "primitive counts, feature mask and acceleration stats", [](CLI::App& app) {
        auto scene = std::make_shared<std::string>();
+       auto environment = std::make_shared<std::optional<std::string>>();
        app.add_option("scene", *scene, "scene file (JSON), or a glTF 2.0 file")->required();
-       return [scene] { return run_info(*scene); };
+       app.add_option("--environment", *environment, "an equirectangular image as the background, as render's");
+       return [scene, environment] { return run_info(*scene, *environment); };
      }});
 
 }  // namespace tracer

@@ -65,6 +65,9 @@ void add_scene_options(CLI::App& app, RenderCommand& cmd) {
   app.add_option("--camera", cmd.camera, "glTF files: the camera, by index or name (default: the first)");
   app.add_option("--background", cmd.background,
                  "glTF files: a constant background R,G,B (default: 1,1,1, the neutral sky of a viewer)");
+  app.add_option("--environment", cmd.environment,
+                 "an equirectangular image (.hdr, .exr, ...) as the background of any scene, lighting it "
+                 "(docs/scene-format.md, \"environment\")");
   app.add_option("--samples", cmd.samples,
                  "A:B renders only samples [A, B) of every pixel (render: into NAME.partial, for tracer merge)");
 }
@@ -93,6 +96,9 @@ RenderOverrides scene_overrides(const RenderCommand& cmd) {
   overrides.camera = cmd.camera;
   if (cmd.background)
     overrides.background = parse_colour_text(*cmd.background, cmd.scene + ": command line --background");
+  if (cmd.background && cmd.environment)
+    throw InputError(cmd.scene + ": command line --background and --environment: both set the background; give one");
+  overrides.environment = cmd.environment;
   return overrides;
 }
 

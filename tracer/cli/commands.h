@@ -19,6 +19,7 @@ struct RenderCommand {
   std::string sample_map;  // --sample-map FILE: adaptive sampling's per-pixel sample counts
   bool quiet = false;
   std::optional<std::string> camera, background;  // glTF files only
+  std::optional<std::string> environment;         // any scene: an equirectangular map for its background
 };
 
 // The scene argument, one flag per option of the options table, and --samples.

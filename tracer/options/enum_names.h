@@ -52,7 +52,9 @@ struct EnumNames<Schedule> {
 template <>
 struct EnumNames<BackgroundKind> {
   static constexpr const char* kind = "background";
-  static constexpr const char* names[] = {"constant", "gradient", "cubemap"};
+#define TRACER_BACKGROUND_NAME(Kind, type) type,
+  static constexpr const char* names[] = {TRACER_BACKGROUND_KINDS(TRACER_BACKGROUND_NAME)};
+#undef TRACER_BACKGROUND_NAME
 };
 template <>
 struct EnumNames<MaterialKind> {

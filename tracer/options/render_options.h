@@ -51,6 +51,8 @@ struct RenderOverrides : RenderOptions {
   // glTF files only (docs/gltf.md): the camera, by name or index, and a constant background.
   std::optional<std::string> camera;
   std::optional<Vec3> background;
+  // Any scene: an equirectangular image (a path) replacing its background.
+  std::optional<std::string> environment;
   // Where the options come from, for messages: empty for the command line, else the file and
   // key path that set them ("golden/manifest.json: goldens.ball.options").
   std::string origin;

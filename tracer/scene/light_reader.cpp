@@ -89,11 +89,37 @@ Light read_light(const Json& value, const std::string& path, const std::string& 
   return l;
 }
 
+Background constant_background(Vec3 radiance) {
+  return {BackgroundKind::Constant,
+          radiance,
+          {0, 0, 0},
+          {kNoTexture, kNoTexture, kNoTexture, kNoTexture, kNoTexture, kNoTexture},
+          kNoTexture,
+          1.0f,
+          0.0f};
+}
+
+std::string set_environment(Background& bg, uint32_t map, double degrees, double strength) {
+  if (!std::isfinite(degrees) || std::abs(degrees) > 1e6) return "rotation: expected degrees from -1e6 to 1e6";
+  if (!(strength >= 0.0 && strength <= 1e6)) return "strength: expected a number from 0 to 1e6";
+  bg = constant_background({static_cast<float>(strength), static_cast<float>(strength), static_cast<float>(strength)});
+  bg.kind = BackgroundKind::Environment;
+  bg.map = map;
+  const double turn = std::fmod(degrees, 360.0);
+  if (std::fmod(turn, 90.0) == 0.0) {  // a quarter turn exactly, so a scene turned with it draws the same
+    const int quarter = (static_cast<int>(turn / 90.0) + 4) % 4;
+    const float cosines[4] = {1.0f, 0.0f, -1.0f, 0.0f}, sines[4] = {0.0f, 1.0f, 0.0f, -1.0f};
+    bg.cos_turn = cosines[quarter];
+    bg.sin_turn = sines[quarter];
+  } else {
+    bg.cos_turn = static_cast<float>(std::cos(turn * M_PI / 180.0));
+    bg.sin_turn = static_cast<float>(std::sin(turn * M_PI / 180.0));
+  }
+  return "";
+}
+
 Background read_background(const Json* value, const std::string& file, std::string& type, TextureLoader& textures) {
-  Background bg{BackgroundKind::Constant,
-                {0, 0, 0},
-                {0, 0, 0},
-                {kNoTexture, kNoTexture, kNoTexture, kNoTexture, kNoTexture, kNoTexture}};
+  Background bg = constant_background({0, 0, 0});
   type = "constant";
   if (!value) return bg;
   JsonObject obj(*value, "background", file);
@@ -108,6 +134,10 @@ Background read_background(const Json* value, const std::string& file, std::stri
   } else if (type == "cubemap") {
     bg.kind = BackgroundKind::Cubemap;
     textures.cube_faces(obj, bg.faces);
+  } else if (type == "environment") {
+    const uint32_t map = textures.environment_map(obj.child("file"), textures.resolve(obj.string("file")));
+    const std::string why = set_environment(bg, map, obj.number_or("rotation", 0.0f), obj.number_or("strength", 1.0f));
+    if (!why.empty()) obj.fail(why.substr(0, why.find(':')), why.substr(why.find(':') + 2));
   }
   obj.finish();
   return bg;

@@ -24,6 +24,14 @@ std::string set_spot_cone(Light& light, double inner, double outer);
 std::string set_sun_disc(Light& light, double diameter);
 constexpr double kMinSunDiameter = 1.7453292519943295e-4;  // 0.01 degrees
 
+// A constant background of that radiance.
+Background constant_background(Vec3 radiance);
+
+// An equirectangular background (kernel/light/equirect_map.h) of texture `map`, turned
+// `degrees` about +y (exactly at multiples of 90) and scaled by `strength`; "" or
+// "KEY: why" for a value refused.
+std::string set_environment(Background& bg, uint32_t map, double degrees, double strength);
+
 // A missing background is constant black; `type` receives its type name.
 Background read_background(const Json* value, const std::string& file, std::string& type, TextureLoader& textures);
 

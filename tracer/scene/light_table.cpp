@@ -7,56 +7,10 @@
 #include "kernel/light/light.h"
 #include "kernel/material/bsdf.h"
 #include "kernel/shading/mirror_images.h"
+#include "scene/environment_cells.h"
 
 namespace tracer {
 namespace {
-
-constexpr uint32_t kMaxSkyCellsPerSide = 128;
-
-// The environment's cells (kernel/light/environment_light.h); returns the integral of luminance
-// over the sphere the cells' weights estimate, for the environment's power.
-double build_environment_cells(Scene& scene) {
-  const SceneView view = scene.view();
-  const uint32_t face_size = scene.textures[scene.background.faces[0]].width;
-  const uint32_t n = std::min(face_size, kMaxSkyCellsPerSide);
-  // The bilinear filter is bilinear between texel centres, so its largest value over a cell
-  // lies on the grid of half-texel steps: (2k + 1)^2 points for k texels per cell side.
-  const uint32_t steps = 2u * ((face_size + n - 1) / n);
-  scene.sky_cells.assign(6u * n * n, SkyCell{0.0f, 0.0f});
-  std::vector<double> weight(scene.sky_cells.size());
-  double luminance_integral = 0.0;
-  for (uint32_t face = 0; face < 6; ++face)
-    for (uint32_t cy = 0; cy < n; ++cy)
-      for (uint32_t cx = 0; cx < n; ++cx) {
-        float brightest = 0.0f;
-        for (uint32_t j = 0; j <= steps; ++j)
-          for (uint32_t i = 0; i <= steps; ++i) {
-            const float fx = static_cast<float>(i) / static_cast<float>(steps),
-                        fy = static_cast<float>(j) / static_cast<float>(steps);
-            const float a = 2.0f * (static_cast<float>(cx) + fx) / static_cast<float>(n) - 1.0f;
-            const float b = 2.0f * (static_cast<float>(cy) + fy) / static_cast<float>(n) - 1.0f;
-            brightest =
-                std::max(brightest, luminance(background_radiance(view, normalize(cube_direction(face, a, b)))));
-          }
-        const double a = 2.0 * (cx + 0.5) / n - 1.0, b = 2.0 * (cy + 0.5) / n - 1.0;
-        const double solid_angle = 4.0 / (static_cast<double>(n) * n) / std::pow(1.0 + a * a + b * b, 1.5);
-        weight[(face * n + cy) * n + cx] = brightest * solid_angle;
-        luminance_integral += brightest * solid_angle;
-      }
-  // Cumulative sums rounded to multiples of 2^-24, the step of our uniforms, so that the
-  // probability of drawing a cell is exactly cdf - previous cdf.
-  double running = 0.0;
-  float previous = 0.0f;
-  for (size_t i = 0; i < weight.size(); ++i) {
-    running += weight[i];
-    const float cdf =
-        i + 1 == weight.size() ? 1.0f : static_cast<float>(std::round(running / luminance_integral * 0x1p24) * 0x1p-24);
-    scene.sky_cells[i] = {cdf - previous, cdf};
-    previous = cdf;
-  }
-  scene.sky_cells_per_side = n;
-  return luminance_integral;
-}
 
 // Radius of a sphere around every bounded primitive: the environment's and the suns' light
 // reaches the scene through its cross-section.
@@ -74,7 +28,7 @@ void build_light_table(Scene& scene) {
   scene.light_table.clear();
   scene.light_of_prim.assign(scene.primitives.size(), kNoHit);
   scene.sky_cells.clear();
-  scene.sky_cells_per_side = 0;
+  scene.sky_cell_columns = scene.sky_cell_rows = 0;
   scene.environment_light = kNoHit;
   std::vector<double> power;
   const double radius = scene_radius(scene);
@@ -97,9 +51,6 @@ void build_light_table(Scene& scene) {
       scene.environment_light = static_cast<uint32_t>(scene.light_table.size());
       scene.light_table.push_back({LightKind::Environment, 0, 0.0f, 0.0f});
       power.push_back(kPi * radius * radius * luminance_integral);  // flux through the scene's cross-section
-    } else {
-      scene.sky_cells.clear();
-      scene.sky_cells_per_side = 0;
     }
   }
   double total = 0.0;

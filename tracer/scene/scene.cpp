@@ -15,7 +15,8 @@ SceneView Scene::view() const {
   v.kd_hi = kd_hi;
   v.kd_pad = kd_pad;
   v.grid = grid;
-  v.sky_cells_per_side = sky_cells_per_side;
+  v.sky_cell_columns = sky_cell_columns;
+  v.sky_cell_rows = sky_cell_rows;
   v.environment_light = environment_light;
   v.offset_scale = offset_scale;
   v.background = background;

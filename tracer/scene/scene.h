@@ -32,7 +32,7 @@ struct Scene : SceneArrays {
   float kd_pad = 0.0f;
   GridInfo grid{};
   std::vector<std::string> material_names;
-  uint32_t sky_cells_per_side = 0;
+  uint32_t sky_cell_columns = 0, sky_cell_rows = 0;
   uint32_t environment_light = kNoHit;  // the environment's light_table entry
   float offset_scale = 1.0f;            // kernel/geom/ray_offset.h
   Background background{};

@@ -117,6 +117,14 @@ Scene load_scene_unguarded(const std::string& text, const std::string& path, con
 }  // namespace
 
 void finish_scene(Scene& scene, const RenderOverrides& overrides) {
+  if (overrides.environment) {
+    TextureLoader textures(scene, "");
+    const uint32_t map = textures.environment_map("command line --environment", *overrides.environment);
+    set_environment(scene.background, map, 0.0, 1.0);
+    auto& types = scene.report.used_types;
+    for (auto it = types.begin(); it != types.end();) it = it->rfind("background:", 0) == 0 ? types.erase(it) : ++it;
+    types.insert("background:environment");
+  }
   for (const Primitive& p : scene.primitives) {
     scene.features |= shape_feature(p.kind) | material_feature(scene.materials[p.material].kind);
     if (p.shading >= 0 && scene.triangle_shading[p.shading].has_normals) scene.features |= kFeatureShadingNormals;

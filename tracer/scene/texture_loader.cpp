@@ -30,8 +30,8 @@ Vec3 TextureLoader::colour(JsonObject& obj, const std::string& key, uint32_t& te
     const std::string wrap = spec.string_or("wrap", "repeat");
     if (wrap != "repeat" && wrap != "clamp")
       spec.fail("wrap", "expected \"repeat\" or \"clamp\", got \"" + wrap + "\"");
-    texture =
-        image(spec.child("texture"), resolve(file), wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat, mean);
+    const TextureWrap mode = wrap == "clamp" ? TextureWrap::Clamp : TextureWrap::Repeat;
+    texture = image(spec.child("texture"), resolve(file), mode, mode, mean);
     scene_.report.used_types.insert("texture:image");
   } else if (spec.find("checker")) {
     JsonObject checker(spec.get("checker"), spec.child("checker"), obj.file());
@@ -70,7 +70,7 @@ void TextureLoader::cube_faces(JsonObject& background, uint32_t faces[6]) {
     const std::string where = background.child("faces") + "[" + std::to_string(i) + "]";
     if (!list[i].is_string()) fail_at(background.file(), where, "expected an image file, got " + describe(list[i]));
     Vec3 mean;
-    faces[i] = image(where, resolve(list[i].get<std::string>()), TextureWrap::Clamp, mean);
+    faces[i] = image(where, resolve(list[i].get<std::string>()), TextureWrap::Clamp, TextureWrap::Clamp, mean);
     const Texture& t = scene_.textures[faces[i]];
     const Texture& first = scene_.textures[faces[0]];
     if (t.width != t.height)
@@ -87,21 +87,28 @@ void TextureLoader::cube_faces(JsonObject& background, uint32_t faces[6]) {
 uint32_t TextureLoader::image_file(const std::string& where, const std::string& path, bool data, Vec3& mean) {
   scene_.features |= kFeatureTextures;
   if (!data) scene_.report.used_types.insert("texture:image");
-  return image(where, path, TextureWrap::Repeat, mean, data);
+  return image(where, path, TextureWrap::Repeat, TextureWrap::Repeat, mean, data);
+}
+
+uint32_t TextureLoader::environment_map(const std::string& where, const std::string& path) {
+  Vec3 mean;
+  scene_.features |= kFeatureTextures;
+  return image(where, path, TextureWrap::Repeat, TextureWrap::Clamp, mean);
 }
 
 uint32_t TextureLoader::data_map(JsonObject& obj, const std::string& key) {
   if (!obj.find(key)) return kNoTexture;
   Vec3 mean;
-  const uint32_t index = image(obj.child(key), resolve(obj.string(key)), TextureWrap::Repeat, mean, true);
+  const uint32_t index =
+      image(obj.child(key), resolve(obj.string(key)), TextureWrap::Repeat, TextureWrap::Repeat, mean, true);
   scene_.features |= kFeatureTextures;
   scene_.report.used_types.insert("texture:" + key);
   return index;
 }
 
-uint32_t TextureLoader::image(const std::string& where, const std::string& path, TextureWrap wrap, Vec3& mean,
-                              bool data) {
-  const auto known = loaded_.find({path, wrap, data});
+uint32_t TextureLoader::image(const std::string& where, const std::string& path, TextureWrap wrap_u, TextureWrap wrap_v,
+                              Vec3& mean, bool data) {
+  const auto known = loaded_.find({path, wrap_u, wrap_v, data});
   if (known != loaded_.end()) {
     mean = known->second.second;
     return known->second.first;
@@ -122,7 +129,8 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& path,
   const bool srgb = !data && !pixels.float_format;
   Texture t{};
   t.kind = TextureKind::Image;
-  t.wrap_u = t.wrap_v = wrap;
+  t.wrap_u = wrap_u;
+  t.wrap_v = wrap_v;
   t.width = pixels.width;
   t.height = pixels.height;
   t.offset = static_cast<uint32_t>(scene_.texels.size());
@@ -144,7 +152,7 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& path,
   mean = {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
   const uint32_t index = static_cast<uint32_t>(scene_.textures.size());
   scene_.textures.push_back(t);
-  loaded_[{path, wrap, data}] = {index, mean};
+  loaded_[{path, wrap_u, wrap_v, data}] = {index, mean};
   return index;
 }
 

@@ -26,6 +26,12 @@ class TextureLoader {
   // of one size, clamped at their edges.
   void cube_faces(JsonObject& background, uint32_t faces[6]);
 
+  // An equirectangular environment map at `path` (resolved already): repeated around, clamped
+  // at the poles. `where` names the scene key or command-line flag in errors.
+  uint32_t environment_map(const std::string& where, const std::string& path);
+
+  std::string resolve(const std::string& file) const;  // relative to the scene file
+
   // A data map (normal, bump or specular map: `key` is an image file, read without sRGB
   // decoding); kNoTexture when the key is absent.
   uint32_t data_map(JsonObject& obj, const std::string& key);
@@ -36,12 +42,12 @@ class TextureLoader {
 
  private:
   // `where` is the key path errors name; `path` is resolved already.
-  uint32_t image(const std::string& where, const std::string& path, TextureWrap wrap, Vec3& mean, bool data = false);
-  std::string resolve(const std::string& file) const;  // relative to the scene file
+  uint32_t image(const std::string& where, const std::string& path, TextureWrap wrap_u, TextureWrap wrap_v, Vec3& mean,
+                 bool data = false);
 
   Scene& scene_;
   std::string dir_;
-  std::map<std::tuple<std::string, TextureWrap, bool>, std::pair<uint32_t, Vec3>> loaded_;
+  std::map<std::tuple<std::string, TextureWrap, TextureWrap, bool>, std::pair<uint32_t, Vec3>> loaded_;
 };
 
 // The sRGB transfer function's inverse (IEC 61966-2-1), with det_pow.

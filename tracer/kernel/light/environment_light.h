@@ -1,6 +1,7 @@
-// The environment: the radiance a ray sees when it leaves the scene (a constant, a gradient or a
-// cube map), and, for a cube map with render.sky_sampling on in the path tracer, a light sampled
-// by its cells. The host divides each face into n x n cells (at most the face's texels) and gives
+// The environment: the radiance a ray sees when it leaves the scene (a constant, a gradient, a
+// cube map or an equirectangular map, kernel/light/equirect_map.h), and, for either map with
+// render.sky_sampling on in the path tracer, a light sampled by its cells. The host divides each
+// cube face into n x n cells (at most the face's texels) and gives
 // each cell a probability proportional to the largest luminance of the filtered sky over it
 // (found on its grid of half-texel steps, where the bilinear filter has its extremes) times its
 // solid angle (tracer/scene/light_table.cpp); the cumulative sums are multiples of 2^-24, so the
@@ -9,6 +10,7 @@
 // is pmf / (4 / n^2) * (1 + a^2 + b^2)^(3/2) (dA cos / r^2 = dA / r^3).
 #pragma once
 #include "kernel/base/float_to_int.h"
+#include "kernel/light/equirect_map.h"
 #include "kernel/light/light_records.h"
 #include "kernel/scene/scene_view.h"
 #include "kernel/shading/sampling.h"
@@ -16,10 +18,15 @@
 namespace tracer {
 
 // Whether a background of this kind can be sampled as a light (it has cells to draw).
-TRACER_HD constexpr bool samples_environment(BackgroundKind kind) { return kind == BackgroundKind::Cubemap; }
+TRACER_HD constexpr bool samples_environment(BackgroundKind kind) {
+  return kind == BackgroundKind::Cubemap || kind == BackgroundKind::Environment;
+}
 
-// The number of cells of a distribution with n cells along a side of each cube face.
-TRACER_HD constexpr uint32_t environment_cell_count(uint32_t n) { return 6u * n * n; }
+// The number of cells of a distribution of columns x rows cells on each cube face, or on the
+// equirectangular map (as 64 bits: a bundle's counts are checked before they are trusted).
+TRACER_HD constexpr uint64_t environment_cell_count(BackgroundKind kind, uint32_t columns, uint32_t rows) {
+  return (kind == BackgroundKind::Cubemap ? 6ull : 1ull) * columns * rows;
+}
 
 // The cube-map face a direction leaves through and its (u, v) there. Each face is seen from
 // the centre looking along its axis f with an up vector U (+y for the side faces; +z for +y
@@ -74,6 +81,7 @@ TRACER_HD Vec3 background_radiance(const SceneView& scene, Vec3 dir) {
       const uint32_t face = cube_face(dir, u, v);
       return sample_texture(scene.textures, scene.texels, bg.faces[face], u, v);
     }
+    case BackgroundKind::Environment: return equirect_radiance(scene, dir);
     case BackgroundKind::Constant: break;
   }
   return bg.radiance;
@@ -81,8 +89,9 @@ TRACER_HD Vec3 background_radiance(const SceneView& scene, Vec3 dir) {
 
 // Solid-angle density of environment direction dir (unit), selection probability not included.
 TRACER_HD float environment_direction_pdf(const SceneView& scene, Vec3 dir) {
-  const uint32_t n = scene.sky_cells_per_side;
-  if (n == 0) return 0.0f;
+  if (scene.sky_cell_columns == 0) return 0.0f;
+  if (scene.background.kind == BackgroundKind::Environment) return equirect_direction_pdf(scene, dir);
+  const uint32_t n = scene.sky_cell_columns;
   float u, v;
   const uint32_t face = cube_face(dir, u, v);
   const uint32_t cx = min_of(trunc_to_uint32(u * static_cast<float>(n)), n - 1u);
@@ -96,8 +105,9 @@ TRACER_HD float environment_direction_pdf(const SceneView& scene, Vec3 dir) {
 
 // A direction towards the environment drawn by cell_u (the cell) and (u1, u2) (the point in it).
 TRACER_HD Vec3 sample_environment_direction(const SceneView& scene, float cell_u, float u1, float u2) {
-  const uint32_t n = scene.sky_cells_per_side;
-  const uint32_t cell = find_cdf_interval(scene.sky_cells, environment_cell_count(n), cell_u);
+  if (scene.background.kind == BackgroundKind::Environment) return sample_equirect_direction(scene, cell_u, u1, u2);
+  const uint32_t n = scene.sky_cell_columns;
+  const uint32_t cell = find_cdf_interval(scene.sky_cells, 6u * n * n, cell_u);
   const uint32_t face = cell / (n * n), cy = (cell / n) % n, cx = cell % n;
   const float a = 2.0f * (static_cast<float>(cx) + u1) / static_cast<float>(n) - 1.0f;
   const float b = 2.0f * (static_cast<float>(cy) + u2) / static_cast<float>(n) - 1.0f;

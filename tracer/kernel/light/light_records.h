@@ -68,14 +68,26 @@ struct LightSample {
   bool valid;
 };
 
-enum class BackgroundKind : uint32_t { Constant, Gradient, Cubemap };
+// The scene file's background types, as X(Kind, its type), listed once: "environment" is an
+// equirectangular image (kernel/light/equirect_map.h).
+#define TRACER_BACKGROUND_KINDS(X) \
+  X(Constant, "constant") X(Gradient, "gradient") X(Cubemap, "cubemap") X(Environment, "environment")
+
+enum class BackgroundKind : uint32_t {
+#define TRACER_BACKGROUND_ENUM(Kind, type) Kind,
+  TRACER_BACKGROUND_KINDS(TRACER_BACKGROUND_ENUM)
+#undef TRACER_BACKGROUND_ENUM
+};
 
 // What a ray that leaves the scene sees, and the environment light when it is sampled.
 struct Background {
   BackgroundKind kind;
-  Vec3 radiance;      // constant; the zenith colour for gradient
+  Vec3 radiance;      // constant; the zenith colour for gradient; environment: the map's multiplier (strength)
   Vec3 horizon;       // gradient only
   uint32_t faces[6];  // cubemap: textures of the faces +x, -x, +y, -y, +z, -z
+  uint32_t map;       // environment: the equirectangular image's texture
+  float cos_turn;     // environment: the map turned about +y by an angle of this cosine and sine
+  float sin_turn;
 };
 
 // A cell of the environment's sampling distribution (environment_light.h).

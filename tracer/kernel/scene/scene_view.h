@@ -36,7 +36,8 @@ struct SceneView {
   Vec3 kd_lo, kd_hi;      // the kd-tree's box
   float kd_pad;           // as GridInfo::pad
   GridInfo grid;
-  uint32_t sky_cells_per_side;  // n
+  uint32_t sky_cell_columns;    // the environment's cells (environment_light.h): per cube face, or on
+  uint32_t sky_cell_rows;       // the equirectangular map; 0 when it is not sampled
   uint32_t environment_light;   // the environment's light_table entry, or kNoHit
   float offset_scale;           // ray offsets near the origin (kernel/geom/ray_offset.h): a power of two <= 1
   Background background;
