@@ -1,8 +1,12 @@
 // glTF textures (docs/gltf.md): the metallic-roughness texture scales the factors (G the
 // roughness, B the metallic) exactly: a white texture leaves the material as its factors, a
 // zero channel zeroes its factor; the base colour texture's texels are sRGB-decoded and
-// multiplied by the factor; the normal map's scale is baked into its texels.
+// multiplied by the factor; the normal map's scale is baked into its texels; alphaMode MASK
+// cuts the quad out where its base colour texture's alpha is below the cutoff, BLEND of alpha
+// 0 leaves nothing to hit.
 #include <gtest/gtest.h>
+
+#include <OpenImageIO/imageio.h>
 
 #include <cstring>
 
@@ -107,6 +111,47 @@ TEST_F(GltfTextures, TheNormalMapsScaleIsBakedIntoItsTexels) {
   const Texture& t = s.textures[s.materials[0].normal_map];
   EXPECT_EQ(s.texels[t.offset], 0.75f);     // ((2 x 1 - 1) x 0.5 + 1) / 2
   EXPECT_EQ(s.texels[t.offset + 2], 1.0f);  // z keeps its value
+}
+
+// A 2 x 1 RGBA image: the left texel white and transparent, the right one white and opaque.
+void write_half_transparent_png(const fs::path& path) {
+  const float texels[8] = {1, 1, 1, 0, 1, 1, 1, 1};
+  const auto out = OIIO::ImageOutput::create(path.string());
+  ASSERT_TRUE(out && out->open(path.string(), OIIO::ImageSpec(2, 1, 4, OIIO::TypeDesc::UINT8)));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, texels));
+  ASSERT_TRUE(out->close());
+}
+
+// The quad's u grows with x: masked at the cutoff 0.5, its left half (u < 0.5) is open and shows
+// the neutral sky (radiance 1, exactly), its right half is drawn; the texture's alpha is read
+// straight (not premultiplied), so the opaque half keeps its colour.
+TEST_F(GltfTextures, AlphaModeMaskCutsTheQuadOutByTheBaseColoursAlpha) {
+  write_half_transparent_png(dir_ / "half.png");
+  json doc = with_texture(textured_quad(), "baseColorTexture", "half.png");
+  doc["materials"][0]["alphaMode"] = "MASK";
+  const Scene s = load_scene(test::write_gltf(dir_ / "t.gltf", doc));
+  const Material& m = s.materials[0];
+  ASSERT_EQ(m.alpha_mode, AlphaMode::Mask);
+  EXPECT_EQ(m.alpha_cutoff, 0.5f);
+  ASSERT_NE(m.alpha_map, kNoTexture);
+  const Texture& a = s.textures[m.alpha_map];
+  EXPECT_EQ(s.texels[a.offset], 0.0f);
+  EXPECT_EQ(s.texels[a.offset + 3], 1.0f);
+  EXPECT_EQ(s.texels[s.textures[m.texture[kSlotAlbedo]].offset + 3], 0.8f) << "the opaque texel's colour, straight";
+  const Image img = render(doc);
+  const auto pixel = [&](uint32_t x, uint32_t y) { return img.rgb[3 * (size_t(y) * img.width + x)]; };
+  EXPECT_EQ(pixel(5, 3), 1.0f) << "the open half shows the sky";
+  EXPECT_NE(pixel(7, 3), 1.0f) << "the opaque half is drawn";
+  json opaque = doc;
+  opaque["materials"][0]["alphaMode"] = "OPAQUE";
+  EXPECT_NE(render(opaque).rgb[3 * (3 * 12 + 5)], 1.0f) << "OPAQUE draws the whole quad";
+}
+
+TEST_F(GltfTextures, AlphaModeBlendOfAlphaZeroLeavesNothingToHit) {
+  json doc = textured_quad();
+  doc["materials"][0]["alphaMode"] = "BLEND";
+  doc["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {0.8, 0.6, 0.4, 0};
+  for (float v : render(doc).rgb) ASSERT_EQ(v, 1.0f);
 }
 
 }  // namespace

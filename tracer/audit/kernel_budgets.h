@@ -43,37 +43,44 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // light choice), their adaptive passes 147 -> 146 and 170 -> 173, the path shade stages
     // 124 -> 126 and 149 -> 163, the parity sample kernel 203 -> 201: every kernel in the same
     // occupancy step (12.5 %, 18.75 % and 25 %).
-    {"path_render_kernel",               158, 1120, 0, 0, 256},
-    {"path_mirror_images_render_kernel", 187, 1120, 0, 0, 256},
-    {"whitted_render_kernel",            182, 3760, 0, 0, 256},
-    {"view_render_kernel",                84,  576, 0, 0, 256},
+    // Cut-outs (kernel/accel/alpha_test.h, 2026-11-27): every code that traces with kTraceAlpha
+    // reads a hit's material and its alpha map before keeping the hit: path 158 -> 162, Whitted
+    // 182 -> 192, views 84 -> 88, the path adaptive pass 146 -> 150, Whitted's 172 -> 176, the path
+    // shade stage 126 -> 128, the full-code stages 70 -> 72 (the closest-hit stage at its cap of 72
+    // spills 28 bytes), the parity kernels 92 -> 96 and 201 -> 208; the mirror-image kernels 1 to
+    // 5 fewer. Every kernel stays in its occupancy step. The trace variants hold no alpha code:
+    // a scene with a cut-out runs the full-code stages.
+    {"path_render_kernel",               162, 1120, 0, 0, 256},
+    {"path_mirror_images_render_kernel", 182, 1120, 0, 0, 256},
+    {"whitted_render_kernel",            192, 3760, 0, 0, 256},
+    {"view_render_kernel",                88,  576, 0, 0, 256},
     // adaptive sampling (cuda/gpu_adaptive.cu)
     // path: mirror images, as the megakernel (18.75 % occupancy -> 12.5 %)
     // without mirror images 145 (18.75 %), with them 171 (12.5 %); 146 with spot lights and suns
-    {"path_adaptive_pass_kernel",        146, 1120, 0, 0, 128},
-    {"path_mirror_images_adaptive_pass_kernel", 173, 1120, 0, 0, 128},
-    {"whitted_adaptive_pass_kernel",     172, 3760, 0, 0, 128},
+    {"path_adaptive_pass_kernel",        150, 1120, 0, 0, 128},
+    {"path_mirror_images_adaptive_pass_kernel", 171, 1120, 0, 0, 128},
+    {"whitted_adaptive_pass_kernel",     176, 3760, 0, 0, 128},
     {"view_adaptive_pass_kernel",         80,  576, 0, 0, 128},
     {"mark_unconverged_kernel",           40,    0, 0, 0, 128},
     {"keep_kernel",                       16,    0, 0, 0, 128},
     // the stream schedule (cuda/gpu_stream.cu)
     {"begin_batch_kernel",                20,    0, 0, 0, 128},
     {"generate_stage_kernel",             24,    0, 0, 0, 128},
-    {"closest_hit_stage_kernel",          72,  576, 0, 0, 128},
+    {"closest_hit_stage_kernel",          72,  608, 28, 0, 128},
     // one register more for render.light_sampling's solid-angle branch, one for Russian
     // roulette's first-vertex throughput and five for spherical triangles (Arvo's sample), in
     // the same occupancy step (25 %); 43 more and a stack frame for mirror images (25 % -> 18.75 %);
     // three more when lights went through one dispatch (kernel/light/light.h: a light sample
     // carries its delta flag and emitter), one more for the materials' dispatch, in the same
     // occupancy step. Without mirror images' code 124 (25 %); with it 149 (18.75 %)
-    {"path_shade_stage_kernel",          126,  760, 0, 0, 128},
-    {"path_mirror_images_shade_stage_kernel", 163, 760, 0, 0, 128},
+    {"path_shade_stage_kernel",          128,  760, 0, 0, 128},
+    {"path_mirror_images_shade_stage_kernel", 162, 760, 0, 0, 128},
     // Whitted and views: seven and one more for emission from any material (glTF's), the
     // normal map's bitangent sign and per-axis texture wrap; both within the 8-register
     // allocation step they were in (96 and 48), so occupancy is unchanged
     {"whitted_shade_stage_kernel",        96,    0, 0, 0, 128},
     {"view_shade_stage_kernel",           46,    0, 0, 0, 128},
-    {"shadow_any_hit_stage_kernel",       70,  576, 0, 0, 128},
+    {"shadow_any_hit_stage_kernel",       72,  576, 0, 0, 128},
     // the trace variants' stages (kernel/accel/trace_variants.h), held to 64 registers; each shadow
     // stage traces a mirror image's two ways too (trace_shadows: one traversal call site), two to
     // four registers more for the sphere variants, 80 bytes of spills for the 8-wide tree's
@@ -109,9 +116,9 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     {"shape_kernel",                      42,    0, 0, 0, 256},
     {"bsdf_kernel",                       56,    0, 0, 0, 256},
     {"adaptive_kernel",                   46,    0, 0, 0, 256},
-    {"trace_kernel",                      92,  560, 0, 0, 256},
+    {"trace_kernel",                      96,  560, 0, 0, 256},
     // the path tracer's sample, with mirror images; one more for per-axis texture wrap
-    {"sample_kernel",                    201, 3200, 0, 0, 256},
+    {"sample_kernel",                    208, 3200, 0, 0, 256},
 };
 // clang-format on
 

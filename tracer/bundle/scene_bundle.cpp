@@ -42,6 +42,16 @@ std::string view_violation(const SceneBundle& b) {
   for (const uint32_t id : b.arrays.mirror_prims)
     if (id >= b.arrays.primitives.size())
       return "mirror_prims: primitive " + std::to_string(id) + " of " + std::to_string(b.arrays.primitives.size());
+  for (size_t i = 0; i < b.arrays.materials.size(); ++i) {
+    const Material& m = b.arrays.materials[i];
+    const std::string at = "materials[" + std::to_string(i) + "]: ";
+    if (static_cast<uint32_t>(m.alpha_mode) > static_cast<uint32_t>(AlphaMode::Blend))
+      return at + "alpha mode " + std::to_string(static_cast<uint32_t>(m.alpha_mode));
+    if (m.alpha_mode != AlphaMode::Opaque && m.alpha_map != kNoTexture &&
+        (m.alpha_map >= b.arrays.textures.size() || b.arrays.textures[m.alpha_map].kind != TextureKind::Image))
+      return at + "alpha map " + std::to_string(m.alpha_map) + " is not one of the " +
+             std::to_string(b.arrays.textures.size()) + " textures' images";
+  }
   const BackgroundKind background = v.background.kind;
   if (static_cast<uint32_t>(background) > static_cast<uint32_t>(BackgroundKind::Environment))
     return "background: kind " + std::to_string(static_cast<uint32_t>(background));

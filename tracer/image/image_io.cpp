@@ -92,7 +92,12 @@ ImagePixels read_opened_image(const std::string& open_name, const std::string& p
   // refuses, which puts formats the tracer never documents in front of hostile input.
   static const bool one_reader = OIIO::attribute("try_all_readers", 0);
   (void)one_reader;
-  const std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(open_name, nullptr, proxy);
+  // Colour and alpha as stored: a PNG's colour is not premultiplied by its alpha (glTF's base
+  // colour and the tracer's alpha maps are straight alpha), which OpenImageIO does by default.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  if (proxy) config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);  // a config replaces the argument
+  const std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(open_name, &config, proxy);
   if (!in) throw InputError(path + ": cannot read image: " + OIIO::geterror());
   // The header is input too: its size is checked before any pixel is allocated.
   const OIIO::ImageSpec& header = in->spec();

@@ -64,6 +64,11 @@ struct EnumNames<MaterialKind> {
 #undef TRACER_MATERIAL_NAME
 };
 template <>
+struct EnumNames<AlphaMode> {
+  static constexpr const char* kind = "alpha mode";
+  static constexpr const char* names[] = {"opaque", "mask", "blend"};
+};
+template <>
 struct EnumNames<FresnelKind> {
   static constexpr const char* kind = "fresnel";
   static constexpr const char* names[] = {"schlick", "exact"};

@@ -249,7 +249,7 @@ ImagePixels decode_gltf_image(const GltfFile& file, int index, const std::string
   if (bytes.size() >= 4 && std::memcmp(bytes.data(), png, 4) == 0) format = "png";
   if (bytes.size() >= 3 && std::memcmp(bytes.data(), jpeg, 3) == 0) format = "jpg";
   if (format.empty()) throw InputError(name + ": not a PNG or JPEG image (the formats of glTF's core)");
-  return read_image_pixels_from_memory(bytes, format, name, 3);
+  return read_image_pixels_from_memory(bytes, format, name, 4);  // the 4th: a base colour's alpha
 }
 
 }  // namespace tracer

@@ -126,7 +126,8 @@ GltfMaterials::Baked GltfMaterials::texture(int index, int tex_coord, Bake bake,
   double sum[3] = {0, 0, 0};
   for (size_t p = 0; p < size_t{pixels.width} * pixels.height; ++p)
     for (int c = 0; c < 3; ++c) {
-      float v = pixels.values[p * pixels.channels_read + (pixels.channels_read < 3 ? 0 : c)];
+      float v = bake == Bake::Alpha ? (pixels.channels_read == 4 ? pixels.values[p * 4 + 3] : 1.0f)
+                                    : pixels.values[p * pixels.channels_read + (pixels.channels_read < 3 ? 0 : c)];
       if (!std::isfinite(v)) fail(file_, path, "its image holds a texel that is not finite");
       if (srgb) v = srgb_to_linear(v);
       if (bake == Bake::SrgbTimes) v = std::max(v, 0.0f) * factors[c];
@@ -142,17 +143,15 @@ GltfMaterials::Baked GltfMaterials::texture(int index, int tex_coord, Bake bake,
   scene_.features |= kFeatureTextures;
   scene_.report.used_types.insert(bake == Bake::SrgbTimes      ? "texture:image"
                                   : bake == Bake::LinearNormal ? "texture:normal_map"
+                                  : bake == Bake::Alpha        ? "texture:alpha_map"
                                                                : "texture:metal_rough_map");
   textures_.emplace(key, baked);
   return baked;
 }
 
 Material GltfMaterials::convert(const tinygltf::Material& g, const std::string& path, GltfUvTransform& uv) {
-  Material m{};
-  m.kind = MaterialKind::GltfMetalRough;
+  Material m = plain_material(MaterialKind::GltfMetalRough);
   m.fresnel = FresnelKind::Schlick;
-  for (uint32_t& t : m.texture) t = kNoTexture;
-  m.factor_map = m.normal_map = m.bump_map = kNoTexture;
   const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
   const std::string pbr_path = path + ".pbrMetallicRoughness";
   const Vec3 base = unit_colour(file_, pbr.baseColorFactor, 4, pbr_path + ".baseColorFactor");
@@ -213,7 +212,19 @@ Material GltfMaterials::convert(const tinygltf::Material& g, const std::string& 
       ignore(at + " (read only as specularFactor 0 on a dielectric: a Lambert surface)");
   }
   if (g.occlusionTexture.index >= 0) ignore(path + ".occlusionTexture (the tracer computes occlusion)");
-  if (g.alphaMode != "OPAQUE") ignore(path + ".alphaMode " + g.alphaMode + " (drawn opaque)");
+  if (g.alphaMode == "MASK" || g.alphaMode == "BLEND") {
+    m.alpha_mode = g.alphaMode == "MASK" ? AlphaMode::Mask : AlphaMode::Blend;
+    m.alpha = pbr.baseColorFactor.size() == 4
+                  ? unit_factor(file_, pbr.baseColorFactor[3], pbr_path + ".baseColorFactor")
+                  : 1.0f;
+    m.alpha_cutoff = unit_factor(file_, g.alphaCutoff, path + ".alphaCutoff");
+    if (pbr.baseColorTexture.index >= 0)  // its alpha channel (1 where the image has none)
+      m.alpha_map = texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, Bake::Alpha, {1, 1, 1},
+                            pbr_path + ".baseColorTexture")
+                        .texture;
+  } else if (g.alphaMode != "OPAQUE") {
+    fail(file_, path + ".alphaMode", "expected OPAQUE, MASK or BLEND, got \"" + g.alphaMode + "\"");
+  }
 
   Vec3 emission =
       g.emissiveFactor.empty() ? Vec3{0, 0, 0} : unit_colour(file_, g.emissiveFactor, 3, path + ".emissiveFactor");
@@ -229,11 +240,10 @@ Material GltfMaterials::convert(const tinygltf::Material& g, const std::string& 
   // is the tracer's emissive material, the same light without a BSDF to evaluate.
   const bool black = m.kind == MaterialKind::Lambert && m.texture[kSlotAlbedo] == kNoTexture &&
                      std::max(m.albedo.x, std::max(m.albedo.y, m.albedo.z)) == 0.0f;
-  if (black) {
-    m = Material{};
-    m.kind = MaterialKind::Emissive;
-    for (uint32_t& t : m.texture) t = kNoTexture;
-    m.factor_map = m.normal_map = m.bump_map = kNoTexture;
+  if (black) {  // keeping its cut-out
+    const Material cut = m;
+    m = plain_material(MaterialKind::Emissive);
+    m.alpha_mode = cut.alpha_mode, m.alpha = cut.alpha, m.alpha_cutoff = cut.alpha_cutoff, m.alpha_map = cut.alpha_map;
   }
   m.radiance = emission;
   m.two_sided = g.doubleSided ? 1u : 0u;

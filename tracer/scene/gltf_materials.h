@@ -43,7 +43,7 @@ class GltfMaterials {
     Vec3 mean;
   };
   // texels = bake(decoded texel) of the texture glTF's `textures[index]` names.
-  enum class Bake { SrgbTimes, LinearNormal, Linear };
+  enum class Bake { SrgbTimes, LinearNormal, Linear, Alpha };  // Alpha: the image's alpha channel
   Baked texture(int index, int tex_coord, Bake bake, Vec3 factor, const std::string& use);
   void ignore(const std::string& what);
   Material convert(const tinygltf::Material& m, const std::string& path, GltfUvTransform& uv);

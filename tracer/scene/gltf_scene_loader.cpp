@@ -14,6 +14,7 @@
 #include "kernel/base/detmath.h"
 #include "options/work_limits.h"
 #include "scene/gltf_scene.h"
+#include "scene/light_reader.h"
 #include "scene/scene_loader.h"
 #include "scene/settings_reader.h"
 
@@ -125,10 +126,7 @@ Scene load_gltf_scene(const std::string& bytes, const std::string& path, const R
   // A white sky of radiance 1 lights it as a viewer's neutral environment does, whatever
   // lights the file has of its own; --background replaces it.
   const Vec3 sky = overrides.background ? *overrides.background : Vec3{1, 1, 1};
-  scene.background = {BackgroundKind::Constant,
-                      sky,
-                      {0, 0, 0},
-                      {kNoTexture, kNoTexture, kNoTexture, kNoTexture, kNoTexture, kNoTexture}};
+  scene.background = constant_background(sky);
   scene.report.used_types.insert("background:constant");
   scene.report.shape_counts["gltf"] = 1;
 

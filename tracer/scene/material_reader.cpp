@@ -45,16 +45,30 @@ void read_conductor_fresnel(JsonObject& obj, TextureLoader& textures, Material& 
   m.albedo = fresnel_conductor(1.0f, m.eta, m.k);  // what the albedo view shows
 }
 
+// The cut-out keys any material may have (docs/scene-format.md): alpha_mode opaque (the
+// default), mask or blend; alpha in [0, 1], default 1; alpha_cutoff in [0, 1], default 0.5;
+// alpha_map, an image whose alpha channel (else its first) scales alpha.
+void read_alpha(JsonObject& obj, TextureLoader& textures, Material& m) {
+  m.alpha_mode =
+      parse_enum<AlphaMode>(obj.string_or("alpha_mode", "opaque"), obj.file() + ": " + obj.child("alpha_mode"));
+  m.alpha = unit_interval(obj, "alpha", 1.0f);
+  m.alpha_cutoff = unit_interval(obj, "alpha_cutoff", 0.5f);
+  m.alpha_map = obj.find("alpha_map")
+                    ? textures.alpha_map(obj.child("alpha_map"), textures.resolve(obj.string("alpha_map")))
+                    : kNoTexture;
+  if (m.alpha_mode == AlphaMode::Opaque)
+    for (const char* key : {"alpha", "alpha_cutoff", "alpha_map"})
+      if (obj.find(key)) obj.fail(key, "needs \"alpha_mode\": \"mask\" or \"blend\" (an opaque surface has no alpha)");
+}
+
 }  // namespace
 
 Material read_material(const Json& value, const std::string& path, const std::string& file, std::string& type,
                        TextureLoader& textures) {
   JsonObject obj(value, path, file);
-  Material m{};
+  Material m = plain_material(MaterialKind::Lambert);
   m.ior = 1.0f;
   m.shininess = 1.0f;
-  for (uint32_t& t : m.texture) t = kNoTexture;
-  m.factor_map = m.normal_map = m.bump_map = kNoTexture;
   type = read_type(obj, "material");
   if (type == "lambert") {
     m.kind = MaterialKind::Lambert;
@@ -112,6 +126,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
     if (m.normal_map != kNoTexture && m.bump_map != kNoTexture)
       obj.fail("bump_map", "give a normal_map or a bump_map, not both");
   }
+  read_alpha(obj, textures, m);
   obj.finish();
   return m;
 }

@@ -9,9 +9,7 @@ namespace tracer {
 
 Material material_from_mtl(const MtlMaterial& mtl, TextureLoader& textures, const std::string& obj_dir,
                            const std::string& where, std::string& type) {
-  Material m{};
-  for (uint32_t& t : m.texture) t = kNoTexture;
-  m.factor_map = m.normal_map = m.bump_map = kNoTexture;
+  Material m = plain_material(MaterialKind::Lambert);
   m.ior = 1.0f;
   m.shininess = 1.0f;
   const auto file = [&](const std::string& name) { return (std::filesystem::path(obj_dir) / name).string(); };

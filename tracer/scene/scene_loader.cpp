@@ -126,7 +126,12 @@ void finish_scene(Scene& scene, const RenderOverrides& overrides) {
     types.insert("background:environment");
   }
   for (const Primitive& p : scene.primitives) {
-    scene.features |= shape_feature(p.kind) | material_feature(scene.materials[p.material].kind);
+    const Material& m = scene.materials[p.material];
+    scene.features |= shape_feature(p.kind) | material_feature(m.kind);
+    if (m.alpha_mode != AlphaMode::Opaque) {
+      scene.features |= kFeatureAlpha;
+      scene.report.used_types.insert(m.alpha_mode == AlphaMode::Mask ? "alpha:mask" : "alpha:blend");
+    }
     if (p.shading >= 0 && scene.triangle_shading[p.shading].has_normals) scene.features |= kFeatureShadingNormals;
   }
   if (!scene.lights.empty()) scene.features |= kFeatureDeclaredLights;
@@ -158,7 +163,7 @@ Scene load_scene(const std::string& path, const RenderOverrides& overrides) {
 std::vector<std::string> feature_names(uint32_t features) {
   static const char* names[] = {"sphere",    "plane",           "triangle", "quad",       "lambert",
                                 "metal",     "dielectric",      "phong",    "emissive",   "declared-lights",
-                                "thin-lens", "shading-normals", "textures", "microfacet", "mirror-images"};
+                                "thin-lens", "shading-normals", "textures", "microfacet", "mirror-images", "alpha"};
   std::vector<std::string> out;
   for (uint32_t i = 0; i < sizeof names / sizeof names[0]; ++i)
     if (features & (1u << i)) out.push_back(names[i]);

@@ -27,7 +27,8 @@ const std::map<std::string, std::vector<std::string>>& accepted_scene_types() {
       {"integrator", names_of<IntegratorKind>()},
       {"sampler", names_of<SamplerKind>()},
       {"accel", names_of<AccelKind>()},
-      {"texture", {"image", "checker", "specular_map", "normal_map", "bump_map", "metal_rough_map"}},
+      {"texture", {"image", "checker", "specular_map", "normal_map", "bump_map", "metal_rough_map", "alpha_map"}},
+      {"alpha", {"mask", "blend"}},
       {"transform", {"translate", "scale", "rotate", "rotate_xyz"}},
   };
   return types;

@@ -90,6 +90,13 @@ uint32_t TextureLoader::image_file(const std::string& where, const std::string& 
   return image(where, path, TextureWrap::Repeat, TextureWrap::Repeat, mean, data);
 }
 
+uint32_t TextureLoader::alpha_map(const std::string& where, const std::string& path) {
+  Vec3 mean;
+  scene_.features |= kFeatureTextures;
+  scene_.report.used_types.insert("texture:alpha_map");
+  return image(where, path, TextureWrap::Repeat, TextureWrap::Repeat, mean, true, true);
+}
+
 uint32_t TextureLoader::environment_map(const std::string& where, const std::string& path) {
   Vec3 mean;
   scene_.features |= kFeatureTextures;
@@ -107,8 +114,8 @@ uint32_t TextureLoader::data_map(JsonObject& obj, const std::string& key) {
 }
 
 uint32_t TextureLoader::image(const std::string& where, const std::string& path, TextureWrap wrap_u, TextureWrap wrap_v,
-                              Vec3& mean, bool data) {
-  const auto known = loaded_.find({path, wrap_u, wrap_v, data});
+                              Vec3& mean, bool data, bool alpha) {
+  const auto known = loaded_.find({path, wrap_u, wrap_v, data, alpha});
   if (known != loaded_.end()) {
     mean = known->second.second;
     return known->second.first;
@@ -137,7 +144,7 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& path,
   double sum[3] = {0, 0, 0};
   for (size_t p = 0; p < size_t{pixels.width} * pixels.height; ++p)
     for (int c = 0; c < 3; ++c) {
-      float v = pixels.values[p * channels + (channels == 1 ? 0 : c)];
+      float v = pixels.values[p * channels + (alpha ? (channels == 4 ? 3 : 0) : channels == 1 ? 0 : c)];
       if (srgb) v = srgb_to_linear(v);
       // A NaN, inf or (in a colour) negative texel would reach the film as NaN or negative light.
       if (!std::isfinite(v) || (!data && v < 0.0f))
@@ -152,7 +159,7 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& path,
   mean = {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
   const uint32_t index = static_cast<uint32_t>(scene_.textures.size());
   scene_.textures.push_back(t);
-  loaded_[{path, wrap_u, wrap_v, data}] = {index, mean};
+  loaded_[{path, wrap_u, wrap_v, data, alpha}] = {index, mean};
   return index;
 }
 

@@ -36,6 +36,10 @@ class TextureLoader {
   // decoding); kNoTexture when the key is absent.
   uint32_t data_map(JsonObject& obj, const std::string& key);
 
+  // An alpha map (Material::alpha_map): the image's alpha channel where it has four channels,
+  // else its first, as a grey texture; `path` resolved already, `where` names it in errors.
+  uint32_t alpha_map(const std::string& where, const std::string& path);
+
   // An image given by a path usable as it is (MTL maps, resolved against the OBJ's
   // directory); `where` names the scene key in errors.
   uint32_t image_file(const std::string& where, const std::string& path, bool data, Vec3& mean);
@@ -43,11 +47,11 @@ class TextureLoader {
  private:
   // `where` is the key path errors name; `path` is resolved already.
   uint32_t image(const std::string& where, const std::string& path, TextureWrap wrap_u, TextureWrap wrap_v, Vec3& mean,
-                 bool data = false);
+                 bool data = false, bool alpha = false);
 
   Scene& scene_;
   std::string dir_;
-  std::map<std::tuple<std::string, TextureWrap, TextureWrap, bool>, std::pair<uint32_t, Vec3>> loaded_;
+  std::map<std::tuple<std::string, TextureWrap, TextureWrap, bool, bool>, std::pair<uint32_t, Vec3>> loaded_;
 };
 
 // The sRGB transfer function's inverse (IEC 61966-2-1), with det_pow.

@@ -2,6 +2,7 @@
 // (kernel/accel/trace.h dispatches the queries). The closest hit is the minimum of
 // (t, primitive id) compared lexicographically (docs/determinism.md rule 4).
 #pragma once
+#include "kernel/accel/alpha_test.h"
 #include "kernel/accel/trace_code.h"
 #include "kernel/geom/plane.h"
 #include "kernel/geom/quad.h"
@@ -23,7 +24,8 @@ TRACER_HD void keep_if_closer(Hit& best, float t, uint32_t id, float b1, float b
   if (t < best.t || id < best.prim) best = {t, id, b1, b2};
 }
 
-// Tests one primitive; keeps it when (t, id) is below the best so far. A shape or triangle
+// Tests one primitive; keeps it when (t, id) is below the best so far and its material does not
+// cut the hit out (alpha_test.h). A shape or triangle
 // test outside kCode (trace_code.h) is never in the scenes that run it.
 template <uint32_t kCode = kTraceAll>
 TRACER_HD void test_primitive(const SceneView& scene, uint32_t id, const Ray& ray, const RayShear& shear, Hit& best) {
@@ -50,7 +52,7 @@ TRACER_HD void test_primitive(const SceneView& scene, uint32_t id, const Ray& ra
         hit = intersect_quad(p.a, p.b, p.c, ray, 0.0f, best.t, t, b1, b2);
       break;
   }
-  if (hit) keep_if_closer(best, t, id, b1, b2);
+  if (hit && alpha_keeps<kCode>(scene, id, ray, t, b1, b2)) keep_if_closer(best, t, id, b1, b2);
 }
 
 }  // namespace tracer

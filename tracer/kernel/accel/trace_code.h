@@ -17,6 +17,8 @@ constexpr uint32_t kTraceShapes = kFeatureSphere | kFeaturePlane | kFeatureTrian
 // The triangle tests (RenderSettings::triangle_test).
 constexpr uint32_t kTraceWatertight = 1u << 16;
 constexpr uint32_t kTraceMollerTrumbore = 1u << 17;
+// Cut-outs (kernel/accel/alpha_test.h): a code without it keeps every hit.
+constexpr uint32_t kTraceAlpha = 1u << 18;
 // The traversals (RenderSettings::accel): bvh and lbvh share one, as do the two kd-trees.
 constexpr uint32_t kTraceBruteForce = 1u << 20;
 constexpr uint32_t kTraceBvh = 1u << 21;
@@ -88,7 +90,7 @@ TRACER_HD constexpr uint32_t trace_code_needed(uint32_t features, AccelKind acce
                                                bool wide_tree = false) {
   const uint32_t shapes = features & kTraceShapes;
   return shapes | ((shapes & kFeatureTriangle) != 0 ? trace_triangle_test_bit(test) : 0u) |
-         trace_accel_bit(accel, wide_tree);
+         ((features & kFeatureAlpha) != 0 ? kTraceAlpha : 0u) | trace_accel_bit(accel, wide_tree);
 }
 
 }  // namespace tracer

@@ -40,7 +40,7 @@ TRACER_HD bool test_pair_leaf(const SceneView& scene, uint32_t slot, const Ray& 
     const bool hit = tests_watertight<kCode>(scene.settings.triangle_test)
                          ? intersect_triangle(tri.a, tri.b, tri.c, ray, shear, 0.0f, best.t, t, b0, b1, b2)
                          : intersect_triangle_moller_trumbore(tri.a, tri.b, tri.c, ray, 0.0f, best.t, t, b0, b1, b2);
-    if (hit) keep_if_closer(best, t, tri.id, b1, b2);
+    if (hit && alpha_keeps<kCode>(scene, tri.id, ray, t, b1, b2)) keep_if_closer(best, t, tri.id, b1, b2);
     if (any && best.prim != kNoHit) return false;
     if (tri.last) return true;
   }

@@ -62,7 +62,7 @@ TRACER_HD void test_triangle_block(const SceneView& scene, const TriangleBlock& 
     float t = 0.0f, b0 = 0.0f, b1 = 0.0f, b2 = 0.0f;
     const bool hit = watertight ? intersect_triangle(v0, v1, v2, ray, shear, 0.0f, best.t, t, b0, b1, b2)
                                 : intersect_triangle_moller_trumbore(v0, v1, v2, ray, 0.0f, best.t, t, b0, b1, b2);
-    if (hit) keep_if_closer(best, t, b.id[l], b1, b2);
+    if (hit && alpha_keeps<kCode>(scene, b.id[l], ray, t, b1, b2)) keep_if_closer(best, t, b.id[l], b1, b2);
   }
 }
 

@@ -26,6 +26,7 @@ enum FeatureBit : uint32_t {
   kFeatureTextures = 1u << 12,
   kFeatureMicrofacet = 1u << 13,    // conductor, rough_dielectric, metal_rough
   kFeatureMirrorImages = 1u << 14,  // the path tracer samples lights through flat mirrors (mirror_prims)
+  kFeatureAlpha = 1u << 15,         // a shape's material cuts it out (Material::alpha_mode, alpha_test.h)
 };
 
 #ifndef TRACER_KERNEL_FEATURES

@@ -28,6 +28,13 @@ enum class MaterialKind : uint32_t {
 };
 enum class FresnelKind : uint32_t { Schlick, Exact };
 
+// How a material's alpha cuts its surface out (kernel/accel/alpha_test.h): glTF's alphaMode.
+enum class AlphaMode : uint32_t {
+  Opaque,  // every hit counts
+  Mask,    // a hit counts where alpha >= alpha_cutoff
+  Blend    // a hit counts with probability alpha (stochastic transparency)
+};
+
 // The colours of a material a texture may replace (Material::texture).
 enum ColourSlot : uint32_t { kSlotAlbedo, kSlotAmbient, kSlotSpecular, kSlotTint, kSlotRadiance, kColourSlots };
 
@@ -56,7 +63,24 @@ struct Material {
                                    // metallicRoughnessTexture); kNoTexture when absent
   uint32_t normal_map;             // tangent-space normals (2c - 1); kNoTexture when absent
   uint32_t bump_map;               // heights; kNoTexture when absent
+  AlphaMode alpha_mode;            // opaque unless the scene cuts the surface out
+  float alpha;                     // the alpha factor, in [0, 1]
+  float alpha_cutoff;              // mask: the least alpha a hit keeps
+  uint32_t alpha_map;              // alpha by texture (its first channel) times `alpha`; kNoTexture when absent
 };
+
+// A material of `kind` with no texture, map or cut-out, the other fields 0: what every reader
+// starts from.
+TRACER_HD Material plain_material(MaterialKind kind) {
+  Material m{};
+  m.kind = kind;
+  for (uint32_t& t : m.texture) t = kNoTexture;
+  m.factor_map = m.normal_map = m.bump_map = m.alpha_map = kNoTexture;
+  m.alpha_mode = AlphaMode::Opaque;
+  m.alpha = 1.0f;
+  m.alpha_cutoff = 0.5f;
+  return m;
+}
 
 // Whether a surface of this material emits (where its radiance texture, if any, is not black).
 TRACER_HD bool emits(const Material& m) { return max_component(m.radiance) > 0.0f; }

@@ -2,6 +2,7 @@
 #pragma once
 #include "kernel/accel/trace.h"
 #include "kernel/base/detmath.h"
+#include "kernel/geom/hit_uv.h"
 #include "kernel/material/bsdf.h"
 #include "kernel/shading/sampling.h"
 
@@ -28,41 +29,26 @@ TRACER_HD Surface surface_at(const SceneView& scene, const Ray& ray, const Hit& 
   // projection onto the surface) rather than taken as o + t d: the origin offset of
   // ray_offset.h assumes a point accurate to a few ulps of its coordinates.
   switch (prim.kind) {
-    case ShapeKind::Sphere: {
-      const Vec3 rel = ray_at(ray, hit.t) - prim.a;
-      s.ng = normalize(rel);
+    case ShapeKind::Sphere:
+      s.ng = sphere_hit_normal(prim, ray, hit.t);
       s.p = prim.a + s.ng * prim.radius;
-      // u = 0.5 + atan2(z, x) / 2 pi, v = 0.5 - asin(y) / pi (the sphere map of docs/textures.md)
-      s.u = 0.5f + det_atan2(s.ng.z, s.ng.x) / (2.0f * kPi);
-      s.v = 0.5f - det_asin(clamp_of(s.ng.y, -1.0f, 1.0f)) / kPi;
       s.ns = s.ng;
       break;
-    }
-    case ShapeKind::Plane: {
-      const Vec3 q = ray_at(ray, hit.t);
-      s.p = q - prim.b * dot(q - prim.a, prim.b);
+    case ShapeKind::Plane:
+      s.p = plane_hit_point(prim, ray, hit.t);
       s.ng = prim.b;
       s.ns = s.ng;
-      // planar coordinates in the frame of sampling.h's frame_around(normal)
-      const Frame f = frame_around(prim.b);
-      s.u = dot(s.p - prim.a, f.t);
-      s.v = dot(s.p - prim.a, f.b);
       break;
-    }
     case ShapeKind::Quad:
       s.p = prim.a + prim.b * hit.b1 + prim.c * hit.b2;
       s.ng = normalize(cross(prim.b, prim.c));
       s.ns = s.ng;
-      s.u = hit.b1;
-      s.v = hit.b2;
       break;
     case ShapeKind::Triangle: {
       s.ng = normalize(cross(prim.b - prim.a, prim.c - prim.a));
       s.ns = s.ng;
       const float b0 = 1.0f - hit.b1 - hit.b2;
       s.p = prim.a * b0 + prim.b * hit.b1 + prim.c * hit.b2;
-      s.u = hit.b1;
-      s.v = hit.b2;
       if (prim.shading >= 0) {
         const TriangleShading& sh = scene.triangle_shading[prim.shading];
         if (sh.has_normals) {
@@ -74,14 +60,11 @@ TRACER_HD Surface surface_at(const SceneView& scene, const Ray& ray, const Hit& 
             if (dot(s.ns, s.ng) < 0.0f) s.ng = -s.ng;
           }
         }
-        if (sh.has_uvs) {
-          s.u = sh.u0 * b0 + sh.u1 * hit.b1 + sh.u2 * hit.b2;
-          s.v = sh.v0 * b0 + sh.v1 * hit.b1 + sh.v2 * hit.b2;
-        }
       }
       break;
     }
   }
+  hit_uv(scene, prim, ray, hit.t, hit.b1, hit.b2, s.u, s.v);
   return s;
 }
 
