@@ -4,7 +4,7 @@
 // cube face into n x n cells (at most the face's texels) and gives
 // each cell a probability proportional to the largest luminance of the filtered sky over it
 // (found on its grid of half-texel steps, where the bilinear filter has its extremes) times its
-// solid angle (tracer/scene/light_table.cpp); the cumulative sums are multiples of 2^-24, so the
+// solid angle (tracer/scene/environment_cells.cpp); the cumulative sums are multiples of 2^-24, so the
 // probability of drawing a cell with a 24-bit uniform is exactly its pmf. A direction is uniform
 // in its cell on the face (coordinates a, b in [-1, 1] at distance 1), whose solid-angle density
 // is pmf / (4 / n^2) * (1 + a^2 + b^2)^(3/2) (dA cos / r^2 = dA / r^3).
