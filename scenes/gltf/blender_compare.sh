@@ -7,12 +7,13 @@
 # depends on the aspect ratio only, 4:3 there and at the default size here).
 # Needs Debian's blender, python3-numpy and python3-openimageio.
 # From the repository root, after bash ci/build.sh:
-#   bash scenes/gltf/blender_compare.sh FILE.glb [SPP] [WIDTH] [HEIGHT] [KEEP_DIR] [SKY]
+#   bash scenes/gltf/blender_compare.sh FILE.glb [SPP] [WIDTH] [HEIGHT] [KEEP_DIR] [SKY] [REGION]
 # KEEP_DIR, when given (or ""), keeps tracer.exr and blender.exr there. SKY R,G,B replaces the
 # neutral sky in both (0,0,0: the file's own lights alone); SKY an image file (.exr, .hdr) lights
 # both by that equirectangular map (the tracer's --environment, Blender's Environment Texture).
+# REGION X0,Y0,X1,Y1 (pixels, X1 and Y1 excluded, top row 0) prints that rectangle's means too.
 set -euo pipefail
-file=$1 spp=${2:-1024} width=${3:-160} height=${4:-120} keep=${5:-} sky=${6:-1,1,1}
+file=$1 spp=${2:-1024} width=${3:-160} height=${4:-120} keep=${5:-} sky=${6:-1,1,1} region=${7:-}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 case "$sky" in
@@ -28,7 +29,7 @@ blender -b -noaudio --factory-startup --python "$(dirname "$0")/blender_render.p
   --spp "$spp" --width "$width" --height "$height" --lighting COMPAT "${theirs[@]}" $camera >"$work/blender.log" 2>&1 ||
   { tail -20 "$work/blender.log"; exit 1; }
 [ -n "$keep" ] && mkdir -p "$keep" && cp "$work/tracer.exr" "$work/blender.exr" "$keep/"
-/usr/bin/python3 - "$work/tracer.exr" "$work/blender.exr" <<'PY'
+/usr/bin/python3 - "$work/tracer.exr" "$work/blender.exr" "$region" <<'PY'
 import sys
 import OpenImageIO as oiio
 ours, theirs = (oiio.ImageBuf(f).get_pixels(oiio.FLOAT)[:, :, :3] for f in sys.argv[1:3])
@@ -42,4 +43,10 @@ for i in range(3):
         b = theirs[i * h // 3:(i + 1) * h // 3, j * w // 3:(j + 1) * w // 3].mean()
         cells.append("%.4f / %.4f = %s" % (a, b, "%.4f" % (a / b) if b > 0 else "-"))
     print("  " + "   ".join(cells))
+if sys.argv[3]:
+    x0, y0, x1, y1 = (int(v) for v in sys.argv[3].split(","))
+    if not (0 <= x0 < x1 <= w and 0 <= y0 < y1 <= h):
+        sys.exit("region %s lies outside the %dx%d image" % (sys.argv[3], w, h))
+    a, b = ours[y0:y1, x0:x1].mean(), theirs[y0:y1, x0:x1].mean()
+    print("region %s: tracer %.4f, Blender %.4f, ratio %.3f" % (sys.argv[3], a, b, a / b))
 PY
