@@ -108,6 +108,33 @@ TEST(Optics, ExactFresnelLimits) {
   for (float c = 0.05f; c <= 1.0f; c += 0.05f) EXPECT_EQ(fresnel_exact(c, c, 1.0f, 1.0f), 0.0f);
 }
 
+// Over the indices a scene may give (docs/scene-format.md: ior and eta in [0.01, 100], k in
+// [0, 1000]), from either side of the interface, every reflectance is a number in [0, 1] and
+// every refracted direction a unit vector: the range stops short of where the squares and
+// 1 / ior overflow (a denormal ior refracted rays of NaN direction).
+TEST(Optics, FresnelAndRefractionStayFiniteOverTheAcceptedIndices) {
+  const Vec3 n = {0, 0, 1};
+  for (const float ior : {0.01f, 0.1f, 1.0f, 1.5f, 10.0f, 100.0f})
+    for (const float eta : {ior, 1.0f / ior})
+      for (double theta = 0.0; theta < 1.5707; theta += 0.01) {
+        const float cos_i = static_cast<float>(std::cos(theta));
+        for (const FresnelKind model : {FresnelKind::Schlick, FresnelKind::Exact}) {
+          const float r = dielectric_reflectance_at(model, cos_i, 1.0f, eta);
+          EXPECT_TRUE(r >= 0.0f && r <= 1.0f) << "ior " << eta << " theta " << theta << ": " << r;
+        }
+        Vec3 t;
+        float cos_t;
+        if (refract(incident(theta), n, eta, t, cos_t))
+          EXPECT_NEAR(length(t), 1.0, 1e-5) << "eta " << eta << " theta " << theta;
+      }
+  for (const float eta : {0.01f, 0.2f, 1.0f, 100.0f})
+    for (const float k : {0.0f, 0.01f, 3.0f, 1000.0f})
+      for (float c = 0.0f; c <= 1.0f; c += 0.01f) {
+        const float r = fresnel_conductor(c, eta, k);
+        EXPECT_TRUE(r >= 0.0f && r <= 1.0f) << "eta " << eta << " k " << k << " cos " << c << ": " << r;
+      }
+}
+
 // The path tracer's dielectric as sample_bsdf draws it (kernel/material/bsdf.h), from outside
 // (front) and from inside the glass: a refraction obeys Snell's law n_in sin(theta_i) =
 // n_out sin(theta_t) and leaves on the far side; beyond the critical angle arcsin(1 / ior),

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "kernel/accel/trace.h"
 #include "kernel/geom/quad.h"
@@ -257,6 +258,30 @@ TEST(ExtremesDegenerate, EveryStructureFindsTheSlivers) {
         const uint32_t want = expected == Thin::Sliver ? 0u : expected == Thin::Quad ? 1u : kNoHit;
         ASSERT_EQ(hit.prim, want) << accel << " h " << h << " ray " << i;
       }
+    }
+  }
+}
+
+// A ray whose origin or direction is not finite (a material's arithmetic gone to NaN: glass of
+// a denormal ior refracted one) hits nothing on any structure. The 8-wide tree's box test,
+// whose min and max drop a NaN, entered every child, the unused slots too, and the default
+// structure crashed (SIGSEGV) on such a ray.
+TEST(ExtremesDegenerate, ARayThatIsNotFiniteHitsNothingOnAnyStructure) {
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = kInfinity;
+  const Ray rays[] = {{{0, 0.5f, 3}, {nan, nan, nan}},
+                      {{0, 0.5f, 3}, {0, nan, -1}},
+                      {{nan, 0.5f, 3}, {0, 0, -1}},
+                      {{0, 0.5f, 3}, {0, inf, -1}},
+                      {{inf, 0, 3}, {0, 0, -1}}};
+  for (const std::string& accel : accepted_scene_types().at("accel")) {
+    RenderOverrides ov;
+    ov.accel = parse_enum<AccelKind>(accel, "accel");
+    const Scene scene = load_scene(test::source_path("scenes/features/mesh.json"), ov);
+    const SceneView view = scene.view();
+    ASSERT_NE(trace_closest(view, Ray{{0, 0.5f, 3}, {0, 0, -1}}, kInfinity).prim, kNoHit) << accel << ": aims at it";
+    for (const Ray& ray : rays) {
+      EXPECT_EQ(trace_closest(view, ray, kInfinity).prim, kNoHit) << accel;
+      EXPECT_FALSE(trace_any(view, ray, kInfinity)) << accel;
     }
   }
 }

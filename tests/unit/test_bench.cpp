@@ -89,6 +89,21 @@ TEST(Bench, ConvergeComparesConfigurations) {
     EXPECT_NE(output.find(b.message), std::string::npos) << b.configs << ": " << output;
     EXPECT_FALSE(std::filesystem::exists(csv)) << b.configs;
   }
+  // A configuration that cannot take one of the smaller spp is refused before the reference
+  // renders, naming it (checked at the largest spp alone, it was refused after rows were
+  // printed, blaming --min-spp, a flag not given).
+  EXPECT_EQ(test::run_tracer("bench converge " + scene +
+                                 " --width 8 --height 6 --spp 1,4 --configs 'rr_depth=3;noise_threshold=0.1,min_spp=4'"
+                                 " --csv " +
+                                 csv + " --plot " + plot,
+                             &output),
+            2)
+      << output;
+  EXPECT_NE(output.find("--configs \"noise_threshold=0.1,min_spp=4\".min_spp (the options of"), std::string::npos)
+      << output;
+  EXPECT_NE(output.find("(at --spp 1)"), std::string::npos) << output;
+  EXPECT_EQ(output.find("RMSE"), std::string::npos) << "no row before the refusal: " << output;
+  EXPECT_EQ(output.find("command line --min-spp"), std::string::npos) << output;
   std::filesystem::remove_all(dir);
 }
 
@@ -123,6 +138,20 @@ TEST(Bench, TradeHasARowPerKnobSetting) {
   std::filesystem::remove_all(dir);
   EXPECT_EQ(test::run_tracer("bench trade " + test::source_path("scenes/features/shadows.json"), &output), 2);
   EXPECT_NE(output.find("measures the path integrator"), std::string::npos) << output;
+  // An adaptive scene (target_error alone) cannot take the stratified sampler's knob: refused
+  // before any render, naming the knob and the sampler (it rendered 36 images first, then
+  // blamed render.noise_threshold, which the scene does not set).
+  std::string text = test::read_file(test::source_path("scenes/cornell-box-path.json"));
+  text.replace(text.find("\"render\": {"), 11, "\"render\": {\"target_error\": 0.05, ");
+  const auto adaptive = test::temp_dir("bench-trade-adaptive") / "adaptive.json";
+  std::ofstream(adaptive) << text;
+  EXPECT_EQ(test::run_tracer("bench trade " + adaptive.string() + " --width 8 --height 6 --spp 4", &output), 2)
+      << output;
+  EXPECT_NE(output.find("bench trade: knob sampler stratified: "), std::string::npos) << output;
+  EXPECT_NE(output.find("--sampler: adaptive sampling needs a sampler"), std::string::npos) << output;
+  EXPECT_EQ(output.find("noise_threshold"), std::string::npos) << output;
+  EXPECT_EQ(output.find("RMSE"), std::string::npos) << "no row before the refusal: " << output;
+  std::filesystem::remove_all(adaptive.parent_path());
 }
 
 // One repeat each: the test is the hits' checksums, not the times.

@@ -175,5 +175,51 @@ TEST(GltfValidFiles, RefusalsNameTheJsonPathInTheReadersWords) {
   fs::remove_all(dir);
 }
 
+// Numbers a reader must not take at face value: references of 2^31 and above wrapped in
+// tinygltf's int ("mesh": 4294967295 became no mesh, "POSITION": 4294967296 accessor 0, exit 0
+// with another picture); a quaternion that is not a rotation sheared or scaled the node; a
+// light's colour and intensity, each finite, overflowed once multiplied (NaN samples).
+TEST(GltfValidFiles, NumbersPastWhatTheReaderHoldsAreRefused) {
+  const auto dir = test::temp_dir("gltf-numbers");
+  const std::vector<std::pair<std::function<void(json&)>, std::string>> cases = {
+      {[](json& d) { d["nodes"][0]["mesh"] = 4294967295u; },
+       "nodes[0].mesh: expected a whole number from 0 to 2147483647, got 4294967295"},
+      {[](json& d) { d["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 4294967296u; },
+       "meshes[0].primitives[0].attributes: expected an object of whole numbers from 0 to 2147483647"},
+      {[](json& d) {
+         d["scenes"][0]["nodes"] = {0, 2147483648u};
+       },
+       "scenes[0].nodes: expected an array"},
+      {[](json& d) { d["meshes"][0]["primitives"][0]["mode"] = 4294967300.0; },
+       "meshes[0].primitives[0].mode: expected a whole number from 0 to 2147483647"},
+      {[](json& d) { d["nodes"][1]["extensions"]["KHR_lights_punctual"]["light"] = 4294967296u; },
+       "nodes[1].extensions.KHR_lights_punctual.light: expected a whole number from 0 to 2147483647"},
+      {[](json& d) {
+         d["nodes"][0]["rotation"] = {0, 0, 0, 0};
+       },
+       "nodes[0].rotation: is not a unit quaternion (its length is 0.000000)"},
+      {[](json& d) {
+         d["nodes"][0]["rotation"] = {2, 0, 0, 0};
+       },
+       "nodes[0].rotation: is not a unit quaternion"},
+      {[](json& d) {
+         d["extensions"]["KHR_lights_punctual"]["lights"] = {
+             {{"type", "point"}, {"intensity", 1e29}, {"color", {1e20, 1, 1}}}};
+         d["nodes"][1]["extensions"]["KHR_lights_punctual"]["light"] = 0;
+       },
+       "extensions.KHR_lights_punctual.lights[0]: color x intensity must be below 1e30"},
+  };
+  for (const auto& [edit, expected] : cases) {
+    json doc = test::triangle_gltf();
+    edit(doc);
+    expect_refused(test::write_gltf(dir / "n.gltf", doc), expected);
+  }
+  // A rounded quaternion, as exporters write them, is taken as written.
+  json doc = test::triangle_gltf();
+  doc["nodes"][0]["rotation"] = {0, 0, 0.70710678, 0.7071075};
+  EXPECT_NO_THROW(load_scene(test::write_gltf(dir / "r.gltf", doc)));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace tracer

@@ -74,8 +74,9 @@ TEST_F(HostileInput, ABundleIsHeldToTheLimitsOfAScene) {
   mirrors.arrays.mirror_prims = {static_cast<uint32_t>(mirrors.arrays.primitives.size())};
   write_bundle(bundle, encode_scene_bundle(mirrors));
   EXPECT_EQ(test::run_command(std::string(TRACER_GPU_BINARY) + " render " + bundle + " --device cpu", &output), 2);
-  EXPECT_NE(output.find("b.bundle: the bundle's view: mirror_prims: primitive " + count + " of " + count),
-            std::string::npos)
+  EXPECT_NE(
+      output.find("b.bundle: the bundle's view: mirror_prims[0]: primitive " + count + " of " + count + " primitives"),
+      std::string::npos)
       << output;
   // A declared light's kind is one a scene file declares: any other would be sampled as a point light.
   SceneBundle lit = make_scene_bundle(scene, scene.view(), {0, 1}, scene_path);

@@ -3,6 +3,8 @@
 // profiler gave, and the budget check's verdicts.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "audit/kernel_budgets.h"
 #include "audit/kernel_resources.h"
 
@@ -68,6 +70,7 @@ TEST(KernelResources, EveryKernelWithinItsRowPassesAndEachExcessIsNamed) {
     k.stack_bytes = b.stack_bytes;
     k.spill_stores = k.spill_loads = b.spill_bytes;
     k.shared_bytes = b.shared_bytes;
+    k.used_line = true;
     kernels.push_back(k);
   }
   KernelResources library = kernels[0];
@@ -93,6 +96,40 @@ TEST(KernelResources, EveryKernelWithinItsRowPassesAndEachExcessIsNamed) {
   p = budget_problems(kernels);
   ASSERT_EQ(p.size(), 1u);
   EXPECT_NE(p[0].find("no sm_90 kernel of the build matches"), std::string::npos) << p[0];
+}
+
+// A report edited or garbled: a figure past int's range read as 0 and passed (4294967296
+// registers), one past what a thread holds overflowed the occupancy arithmetic (SIGFPE), a
+// kernel without its "Used" line passed with 0 registers. Each is a named problem now.
+TEST(KernelResources, AReportThatCannotBeTrustedIsAProblem) {
+  const KernelBudget& row = kKernelBudgets[0];
+  const std::string mangled = kRender;
+  const auto report = [&](const std::string& used) {
+    return "ptxas info    : Compiling entry function '" + mangled + "' for 'sm_90'\n" +
+           "ptxas info    : Function properties for " + mangled + "\n" +
+           "    0 bytes stack frame, 0 bytes spill stores, 0 bytes spill loads\n" + used;
+  };
+  const struct {
+    std::string used, expected;
+  } cases[] = {
+      {"ptxas info    : Used 4294967296 registers, used 0 barriers\n", "not a number an int holds"},
+      {"ptxas info    : Used 134217728 registers, used 0 barriers\n", "134217728 registers, more than an sm_90"},
+      {"ptxas info    : Used 256 registers, used 0 barriers\n", "256 registers, more than an sm_90"},
+      {"ptxas info    : Used 40 registers, 99999999999 bytes smem\n", "shared memory bytes that is not a number"},
+      {"", "has no \"Used ... registers\" line"},
+  };
+  for (const auto& c : cases) {
+    std::vector<KernelResources> k = parse_resource_report(report(c.used));
+    ASSERT_EQ(k.size(), 1u);
+    k[0].name = row.kernel;  // as if it were the row's kernel, so only the report's figures matter
+    EXPECT_EQ(sm90_occupancy(k[0].registers, row.block, k[0].shared_bytes) >= 0.0, true);
+    const std::vector<std::string> problems = budget_problems(k);
+    bool named = false;
+    for (const std::string& p : problems) named = named || p.find(c.expected) != std::string::npos;
+    EXPECT_TRUE(named) << c.used << (problems.empty() ? "(no problem)" : problems[0]);
+  }
+  EXPECT_EQ(sm90_occupancy(134217728, 256, 0), 0.0);
+  EXPECT_EQ(sm90_occupancy(std::numeric_limits<int>::max(), 256, std::numeric_limits<int>::max()), 0.0);
 }
 
 }  // namespace

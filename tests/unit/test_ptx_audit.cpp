@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "audit/cuda_audit.h"
 #include "audit/draw_lint.h"
 #include "audit/ptx_audit.h"
 #include "io/input_error.h"
+#include "sanitizer.h"
+#include "test_util.h"
 
 using namespace tracer;
 
@@ -137,6 +140,22 @@ TEST(PtxAudit, ManyFailuresAreCountedNotAllKept) {
   EXPECT_EQ(a.failure_count, 300);
   EXPECT_EQ(a.failures.size(), kPtxSitesKept);
   EXPECT_FALSE(a.passed());
+}
+
+// The audit keeps no copy of the module's lines: 64 MB of empty lines (a string of 32 bytes
+// each) peaked at 44 times the file; within a 900 MB address space now.
+TEST(PtxAudit, AModuleOfManyLinesIsAuditedInMemoryProportionalToIt) {
+#if TRACER_UNDER_ADDRESS_SANITIZER
+  GTEST_SKIP() << "ulimit -v cannot hold an AddressSanitizer build (its shadow memory reserves terabytes)";
+#endif
+  const auto dir = test::temp_dir("ptx-lines");
+  std::ofstream(dir / "lines.ptx") << std::string(64u << 20, '\n');
+  std::string output;
+  const int rc = test::run_command(
+      "ulimit -v 900000 && " + std::string(TRACER_BINARY) + " audit ptx " + (dir / "lines.ptx").string(), &output);
+  EXPECT_TRUE(rc == 0 || rc == 1) << rc << "\n" << output.substr(0, 1000);  // a verdict, not out of memory
+  EXPECT_NE(output.find("lines.ptx"), std::string::npos) << output.substr(0, 1000);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(PtxAudit, SourceCoverageNamesFilesTheBuildAndTheSearchDisagreeOn) {

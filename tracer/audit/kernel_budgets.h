@@ -50,15 +50,15 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // spills 28 bytes), the parity kernels 92 -> 96 and 201 -> 208; the mirror-image kernels 1 to
     // 5 fewer. Every kernel stays in its occupancy step. The trace variants hold no alpha code:
     // a scene with a cut-out runs the full-code stages.
-    {"path_render_kernel",               162, 1120, 0, 0, 256},
-    {"path_mirror_images_render_kernel", 182, 1120, 0, 0, 256},
-    {"whitted_render_kernel",            192, 3760, 0, 0, 256},
+    {"path_render_kernel",               160, 1120, 0, 0, 256},
+    {"path_mirror_images_render_kernel", 193, 1120, 0, 0, 256},
+    {"whitted_render_kernel",            190, 3760, 0, 0, 256},
     {"view_render_kernel",                88,  576, 0, 0, 256},
     // adaptive sampling (cuda/gpu_adaptive.cu)
     // path: mirror images, as the megakernel (18.75 % occupancy -> 12.5 %)
     // without mirror images 145 (18.75 %), with them 171 (12.5 %); 146 with spot lights and suns
-    {"path_adaptive_pass_kernel",        150, 1120, 0, 0, 128},
-    {"path_mirror_images_adaptive_pass_kernel", 171, 1120, 0, 0, 128},
+    {"path_adaptive_pass_kernel",        152, 1120, 0, 0, 128},
+    {"path_mirror_images_adaptive_pass_kernel", 181, 1120, 0, 0, 128},
     {"whitted_adaptive_pass_kernel",     176, 3760, 0, 0, 128},
     {"view_adaptive_pass_kernel",         80,  576, 0, 0, 128},
     {"mark_unconverged_kernel",           40,    0, 0, 0, 128},
@@ -73,8 +73,8 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // three more when lights went through one dispatch (kernel/light/light.h: a light sample
     // carries its delta flag and emitter), one more for the materials' dispatch, in the same
     // occupancy step. Without mirror images' code 124 (25 %); with it 149 (18.75 %)
-    {"path_shade_stage_kernel",          128,  760, 0, 0, 128},
-    {"path_mirror_images_shade_stage_kernel", 162, 760, 0, 0, 128},
+    {"path_shade_stage_kernel",          122,  760, 0, 0, 128},
+    {"path_mirror_images_shade_stage_kernel", 163, 760, 0, 0, 128},
     // Whitted and views: seven and one more for emission from any material (glTF's), the
     // normal map's bitangent sign and per-axis texture wrap; both within the 8-register
     // allocation step they were in (96 and 48), so occupancy is unchanged
@@ -88,18 +88,18 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // of (record, entry distance), 512 bytes, and 12 / 8 bytes of spill stores at 64 registers;
     // 2.2x the node walk's primary and 2.0x its incoherent rays on an H200 (docs/cuda.md)
     {"closest_hit_bvh_triangles_kernel",  64,  576, 12, 0, 128},
-    {"shadow_any_hit_bvh_triangles_kernel", 64, 576, 8, 0, 128},
+    {"shadow_any_hit_bvh_triangles_kernel", 64, 560, 0, 0, 128},
     // the 8-wide tree: its 64-entry stack, the binary walk's for a deeper tree; 16 bytes of spill stores
     {"closest_hit_wide_bvh_triangles_kernel", 64, 1104, 76, 0, 128},
-    {"shadow_any_hit_wide_bvh_triangles_kernel", 64, 1136, 80, 0, 128},
+    {"shadow_any_hit_wide_bvh_triangles_kernel", 64, 1104, 12, 0, 128},
     {"closest_hit_bvh_spheres_kernel",    50,  272, 0, 0, 128},
     {"shadow_any_hit_bvh_spheres_kernel", 60,  272, 0, 0, 128},
     {"closest_hit_kdtree_triangles_kernel", 64,  0, 0, 0, 128},
-    {"shadow_any_hit_kdtree_triangles_kernel", 62, 0, 0, 0, 128},
+    {"shadow_any_hit_kdtree_triangles_kernel", 64, 0, 0, 0, 128},
     {"closest_hit_kdtree_spheres_kernel", 47,    0, 0, 0, 128},
     {"shadow_any_hit_kdtree_spheres_kernel", 57,  0, 0, 0, 128},
     {"closest_hit_grid_triangles_kernel", 64,   32, 4, 0, 128},
-    {"shadow_any_hit_grid_triangles_kernel", 62, 24, 0, 0, 128},  // +1: per-axis texture wrap (a mirror image's
+    {"shadow_any_hit_grid_triangles_kernel", 63, 24, 0, 0, 128},  // +1: per-axis texture wrap (a mirror image's
                                                                    // textured light), in the same step of 8
     {"closest_hit_grid_spheres_kernel",   53,   24, 0, 0, 128},
     {"shadow_any_hit_grid_spheres_kernel", 58,  24, 0, 0, 128},

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
+#include <cstdint>
 #include <cstdlib>
 #include <map>
 #include <memory>
@@ -16,13 +18,16 @@ namespace tracer {
 namespace {
 
 // The number before `unit` in a line of ptxas' report ("193 registers", "0 bytes spill
-// stores"), or 0.
+// stores"): 0 where the line has no such figure, -1 where its digits do not fit an int (a
+// report edited or garbled: 4294967296 registers must not read as 0).
 int number_before(const std::string& line, const std::string& unit) {
   const size_t at = line.find(" " + unit);
   if (at == std::string::npos) return 0;
   size_t start = at;
   while (start > 0 && std::isdigit(static_cast<unsigned char>(line[start - 1]))) --start;
-  return start == at ? 0 : std::atoi(line.substr(start, at - start).c_str());
+  int value = 0;
+  const auto [end, error] = std::from_chars(line.data() + start, line.data() + at, value);
+  return start == at ? 0 : error == std::errc() && end == line.data() + at ? value : -1;
 }
 
 // The text between the first pair of single quotes after `from`.
@@ -30,6 +35,22 @@ std::string quoted(const std::string& line, size_t from) {
   const size_t a = line.find('\'', from);
   const size_t b = a == std::string::npos ? a : line.find('\'', a + 1);
   return b == std::string::npos ? "" : line.substr(a + 1, b - a - 1);
+}
+
+// Why a kernel's figures cannot be trusted, or "": ptxas printed no "Used" line for it, a
+// figure did not fit an int, or its registers exceed what an sm_90 thread can hold.
+std::string unreadable(const KernelResources& k) {
+  if (!k.used_line) return "has no \"Used ... registers\" line for it";
+  for (const auto& [what, value] : {std::pair{"registers", k.registers},
+                                    {"stack frame bytes", k.stack_bytes},
+                                    {"spill store bytes", k.spill_stores},
+                                    {"spill load bytes", k.spill_loads},
+                                    {"shared memory bytes", k.shared_bytes}})
+    if (value < 0) return std::string("gives a number of ") + what + " that is not a number an int holds";
+  if (k.registers > kSm90MaxRegisters)
+    return "gives " + std::to_string(k.registers) + " registers, more than an sm_90 thread holds (" +
+           std::to_string(kSm90MaxRegisters) + ")";
+  return "";
 }
 
 }  // namespace
@@ -61,6 +82,7 @@ std::vector<KernelResources> parse_resource_report(const std::string& text) {
     } else if (current && line.find("ptxas info    : Used ") != std::string::npos) {
       current->registers = number_before(line, "registers");
       current->shared_bytes = number_before(line, "bytes smem");
+      current->used_line = true;
       current = nullptr;
     }
   }
@@ -90,13 +112,14 @@ std::string kernel_name(const std::string& mangled) {
 }
 
 double sm90_occupancy(int registers, int block, int shared_bytes) {
-  constexpr int kWarps = 64, kBlocks = 32, kRegisters = 65536, kShared = 228 * 1024;
-  const int warps_per_block = (block + 31) / 32;
-  const int registers_per_warp = (std::max(registers, 1) * 32 + 255) / 256 * 256;
-  const int by_registers = kRegisters / registers_per_warp / warps_per_block;
-  const int by_warps = kWarps / warps_per_block;
-  const int by_shared = kShared / (shared_bytes + 1024);
-  const int blocks = std::min({by_registers, by_warps, by_shared, kBlocks});
+  if (registers > kSm90MaxRegisters || registers < 0 || block <= 0 || shared_bytes < 0) return 0.0;
+  constexpr int64_t kWarps = 64, kBlocks = 32, kRegisters = 65536, kShared = 228 * 1024;
+  const int64_t warps_per_block = (int64_t{block} + 31) / 32;
+  const int64_t registers_per_warp = (std::max<int64_t>(registers, 1) * 32 + 255) / 256 * 256;
+  const int64_t by_registers = kRegisters / registers_per_warp / warps_per_block;
+  const int64_t by_warps = kWarps / warps_per_block;
+  const int64_t by_shared = kShared / (int64_t{shared_bytes} + 1024);
+  const int64_t blocks = std::min({by_registers, by_warps, by_shared, kBlocks});
   return static_cast<double>(blocks * warps_per_block) / kWarps;
 }
 
@@ -114,6 +137,11 @@ std::vector<std::string> budget_problems(const std::vector<KernelResources>& ker
       continue;
     }
     seen[k.name] = &k;
+    if (const std::string why = unreadable(k); !why.empty()) {
+      problems.push_back(k.name + ": ptxas' report " + why);
+      if (const KernelBudget* budget = find_kernel_budget(k.name)) matched.insert(budget->kernel);
+      continue;
+    }
     const KernelBudget* budget = find_kernel_budget(k.name);
     if (!budget) {
       problems.push_back(k.name + ": no row in tracer/audit/kernel_budgets.h; add one (docs/cuda.md)");

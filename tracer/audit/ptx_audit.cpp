@@ -201,17 +201,21 @@ PtxSite classify_instruction(const std::string& statement, const std::string& so
   return none;
 }
 
+// The line of `text` that starts at `start` (without its '\n'); `next` gets the start of the
+// one after. The audit walks the module line by line and keeps no copy of it: a vector of its
+// lines peaked at 44 times the file (a string of 32 bytes for a 1-byte empty line).
+std::string line_at(const std::string& text, size_t start, size_t& next) {
+  size_t end = text.find('\n', start);
+  if (end == std::string::npos) end = text.size();
+  next = end + 1;
+  return text.substr(start, end - start);
+}
+
 PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
-  std::vector<std::string> lines;
-  {
-    std::istringstream in(ptx_text);
-    std::string line;
-    while (std::getline(in, line)) lines.push_back(line);
-  }
   PtxAudit audit;
-  const auto parse_error = [&](size_t i, const std::string& why) {
+  const auto parse_error = [&](size_t i, const std::string& why, const std::string& text) {
     if (audit.parse_error_count++ < static_cast<long>(kPtxSitesKept))
-      audit.parse_errors.push_back(std::to_string(i + 1) + ": " + why + ": " + trim(lines[i]).substr(0, 200));
+      audit.parse_errors.push_back(std::to_string(i + 1) + ": " + why + ": " + trim(text).substr(0, 200));
   };
   const auto fail = [&](const PtxSite& s) {
     if (audit.failure_count++ < static_cast<long>(kPtxSitesKept)) audit.failures.push_back(s);
@@ -220,8 +224,8 @@ PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
   std::map<int, std::string> files;
   std::string prefix = root;
   if (!prefix.empty() && prefix.back() != '/') prefix += '/';
-  for (const std::string& raw : lines) {
-    const std::string line = trim(raw);
+  for (size_t start = 0, next = 0; start < ptx_text.size(); start = next) {
+    const std::string line = trim(line_at(ptx_text, start, next));
     if (!starts_with(line, ".file")) continue;
     std::istringstream in(line.substr(5));
     int id = 0;
@@ -235,9 +239,11 @@ PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
   State state = State::Module;
   int depth = 0;
   std::string function = "(module)", source = "unknown", statement;
-  size_t statement_line = 0;
-  for (size_t i = 0; i < lines.size(); ++i) {
-    std::string line = lines[i];
+  size_t statement_line = 0, line_count = 0;
+  std::string statement_first_line;  // the text of statement_line, for its parse error
+  for (size_t i = 0, start = 0, next = 0; start < ptx_text.size(); ++i, start = next, line_count = i) {
+    const std::string raw = line_at(ptx_text, start, next);
+    std::string line = raw;
     const size_t comment = line.find("//");
     if (comment != std::string::npos) line = line.substr(0, comment);
     line = trim(line);
@@ -290,7 +296,7 @@ PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
           }
           continue;
         }
-        parse_error(i, "not a PTX module-level statement");
+        parse_error(i, "not a PTX module-level statement", raw);
         continue;
       }
       case State::Body: break;
@@ -320,7 +326,7 @@ PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
           std::istringstream in(rest.substr(4));
           int file = 0, number = 0;
           if (!(in >> file >> number) || !files.count(file))
-            parse_error(i, ".loc names no .file");
+            parse_error(i, ".loc names no .file", raw);
           else
             source = files[file] + ":" + std::to_string(number);
           break;
@@ -335,10 +341,11 @@ PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
         }
         const char c = rest[0];
         if (!(c == '@' || c == '.' || (c >= 'a' && c <= 'z'))) {
-          parse_error(i, "not a PTX instruction or directive");
+          parse_error(i, "not a PTX instruction or directive", raw);
           break;
         }
         statement_line = i;
+        statement_first_line = raw;
       }
       const size_t semi = line.find(';', pos);
       if (semi == std::string::npos) {  // the statement goes on on the next line
@@ -352,7 +359,7 @@ PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
       if (done[0] == '.') continue;  // a directive: .reg, .local, .param, .pragma ...
       std::string operands;
       if (opcode_of(done, operands).empty()) {  // `@%p1;`: a guard predicate with nothing to guard
-        parse_error(statement_line, "a guard predicate with no instruction");
+        parse_error(statement_line, "a guard predicate with no instruction", statement_first_line);
         continue;
       }
       const std::optional<PtxSite> site = classify(done, source);
@@ -386,7 +393,7 @@ PtxAudit audit_ptx(const std::string& ptx_text, const std::string& root) {
   }
   if (state != State::Module || !statement.empty()) {
     ++audit.parse_error_count;
-    audit.parse_errors.push_back(std::to_string(lines.size()) + ": the module ends inside a function or statement");
+    audit.parse_errors.push_back(std::to_string(line_count) + ": the module ends inside a function or statement");
   }
   return audit;
 }

@@ -1,5 +1,7 @@
 #include "scene_bundle.h"
 
+#include "bundle/bundle_references.h"
+
 #include "kernel/light/environment_light.h"
 #include "options/settings_check.h"
 
@@ -13,9 +15,9 @@ SceneView without_pointers(SceneView view) {
   return view;
 }
 
-// What the kernels divide by or index with, beside the arrays' own sizes: the grid's cells
-// (traverse_grid.h), the environment's cells (environment_light.h) and the declared lights' kinds. "" when the view
-// agrees with its arrays.
+// What the kernels divide by or index with: the grid's cells (traverse_grid.h), the
+// environment's cells (environment_light.h), the declared lights' kinds, then every index
+// the arrays hold (bundle_references.h). "" when the view agrees with its arrays.
 std::string view_violation(const SceneBundle& b) {
   const SceneView& v = b.scalars;
   if (v.settings.accel == AccelKind::Grid) {  // no grid: n = 0 and no cells; else 1 to 1024 cells an axis
@@ -39,26 +41,9 @@ std::string view_violation(const SceneBundle& b) {
   if (!b.arrays.mirror_prims.empty() && (v.features & kFeatureMirrorImages) == 0u)
     return "mirror_prims: " + std::to_string(b.arrays.mirror_prims.size()) +
            " planar mirrors, but the features lack mirror-images";
-  for (const uint32_t id : b.arrays.mirror_prims)
-    if (id >= b.arrays.primitives.size())
-      return "mirror_prims: primitive " + std::to_string(id) + " of " + std::to_string(b.arrays.primitives.size());
-  for (size_t i = 0; i < b.arrays.materials.size(); ++i) {
-    const Material& m = b.arrays.materials[i];
-    const std::string at = "materials[" + std::to_string(i) + "]: ";
-    if (static_cast<uint32_t>(m.alpha_mode) > static_cast<uint32_t>(AlphaMode::Blend))
-      return at + "alpha mode " + std::to_string(static_cast<uint32_t>(m.alpha_mode));
-    if (m.alpha_mode != AlphaMode::Opaque && m.alpha_map != kNoTexture &&
-        (m.alpha_map >= b.arrays.textures.size() || b.arrays.textures[m.alpha_map].kind != TextureKind::Image))
-      return at + "alpha map " + std::to_string(m.alpha_map) + " is not one of the " +
-             std::to_string(b.arrays.textures.size()) + " textures' images";
-  }
   const BackgroundKind background = v.background.kind;
   if (static_cast<uint32_t>(background) > static_cast<uint32_t>(BackgroundKind::Environment))
     return "background: kind " + std::to_string(static_cast<uint32_t>(background));
-  if (background == BackgroundKind::Environment &&
-      (v.background.map >= b.arrays.textures.size() || b.arrays.textures[v.background.map].kind != TextureKind::Image))
-    return "background: map " + std::to_string(v.background.map) + " is not one of the " +
-           std::to_string(b.arrays.textures.size()) + " textures' images";
   const uint32_t columns = v.sky_cell_columns, rows = v.sky_cell_rows;
   if ((b.arrays.sky_cells.empty()
            ? columns != 0 || rows != 0
@@ -78,7 +63,7 @@ std::string view_violation(const SceneBundle& b) {
   for (size_t i = 0; i < b.arrays.lights.size() && !table.empty(); ++i)
     if (table[i].kind != b.arrays.lights[i].kind || table[i].index != i)
       return "light_table[" + std::to_string(i) + "]: not declared light " + std::to_string(i);
-  return "";
+  return bundle_reference_violation(b.arrays, v);
 }
 
 }  // namespace

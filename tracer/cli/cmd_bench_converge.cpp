@@ -180,12 +180,20 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
     adaptive.noise_threshold = thresholds.front();
     load_scene(cmd.scene, adaptive);
   }
-  for (const Series& config : configs) {  // each configuration loads before the reference renders
-    RenderOverrides ov = base;
-    ov.override_with(config.overrides);
-    ov.spp = max_spp;
-    load_scene(cmd.scene, ov);
-  }
+  // Each configuration loads at every spp of the list before the reference renders (checked at
+  // the largest alone, one was refused after rows were printed), its refusal naming it.
+  for (const Series& config : configs)
+    for (const uint32_t spp : spps) {
+      RenderOverrides ov = base;
+      ov.override_with(config.overrides);
+      ov.spp = spp;
+      ov.origin = "--configs \"" + config.label + "\"";  // refusals name it, not a flag
+      try {
+        load_scene(cmd.scene, ov);
+      } catch (const InputError& e) {
+        throw InputError(std::string(e.what()) + " (at --spp " + std::to_string(spp) + ")");
+      }
+    }
   std::printf("tracer bench converge %s: %ux%u, %s\n", cmd.scene.c_str(), probe.settings.width, probe.settings.height,
               cmd.nee == "both" ? "NEE+MIS and the plain estimator" : "the scene's estimator");
   const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 8ull * max_spp, cmd.threads,

@@ -84,6 +84,25 @@ RenderOverrides combine(RenderOverrides base, const RenderOverrides& knob) {
   return base;
 }
 
+// The stratified sampler, the knob's or the scene's own, needs n x n samples.
+bool square_spp(const Scene& probe, const Knob& knob) {
+  return knob.square_spp || (!knob.overrides.sampler && probe.settings.sampler == SamplerKind::Stratified);
+}
+
+// A knob's overrides at the budget's spp, its scene loaded once to check it: InputError naming
+// the knob when the scene cannot take it.
+RenderOverrides knob_overrides(const BenchTradeCommand& cmd, const RenderOverrides& base, const Scene& probe,
+                               const Knob& knob) {
+  RenderOverrides ov = combine(base, knob.overrides);
+  ov.spp = square_spp(probe, knob) ? nearest_square(cmd.spp) : cmd.spp;
+  try {
+    load_scene(cmd.scene, ov);
+  } catch (const InputError& e) {
+    throw InputError("bench trade: knob " + std::string(knob.name) + " " + knob.setting + ": " + e.what());
+  }
+  return ov;
+}
+
 }  // namespace
 
 static int run_bench_trade(const BenchTradeCommand& cmd) {
@@ -97,6 +116,13 @@ static int run_bench_trade(const BenchTradeCommand& cmd) {
                      ": bench trade measures the path integrator's knobs; give a scene with \"integrator\": \"path\"");
   if (probe.settings.sampler == SamplerKind::Center || probe.settings.sampler == SamplerKind::Grid)
     base.sampler = SamplerKind::Stochastic;
+  const SceneView probe_view = probe.view();
+  const bool flat_mirrors = std::any_of(probe.primitives.begin(), probe.primitives.end(),
+                                        [&](const Primitive& p) { return is_planar_mirror(probe_view, p); });
+  const std::vector<Knob> all = knobs(samples_environment(probe.background.kind), flat_mirrors);
+  // Every knob's render is one the scene can make, checked before the reference renders (a
+  // knob refused after 36 renders wasted them).
+  for (const Knob& knob : all) knob_overrides(cmd, base, probe, knob);
   std::printf("tracer bench trade %s: %ux%u, %u spp budget; seconds are the median of %d renders\n", cmd.scene.c_str(),
               probe.settings.width, probe.settings.height, cmd.spp, kRepeats);
   const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 16ull * cmd.spp, cmd.threads,
@@ -105,15 +131,9 @@ static int run_bench_trade(const BenchTradeCommand& cmd) {
   std::printf("%-12s %-15s | %6s %9s %11s %11s | %14s %9s %11s\n", "knob", "setting", "spp", "seconds", "RMSE",
               "relMSE", "equal-time spp", "seconds", "RMSE");
   double baseline_seconds = 0;
-  const SceneView probe_view = probe.view();
-  const bool flat_mirrors = std::any_of(probe.primitives.begin(), probe.primitives.end(),
-                                        [&](const Primitive& p) { return is_planar_mirror(probe_view, p); });
-  for (const Knob& knob : knobs(samples_environment(probe.background.kind), flat_mirrors)) {
-    RenderOverrides ov = combine(base, knob.overrides);
-    // the stratified sampler, the knob's or the scene's own, needs n x n samples
-    const bool square =
-        knob.square_spp || (!knob.overrides.sampler && probe.settings.sampler == SamplerKind::Stratified);
-    ov.spp = square ? nearest_square(cmd.spp) : cmd.spp;
+  for (const Knob& knob : all) {
+    RenderOverrides ov = knob_overrides(cmd, base, probe, knob);
+    const bool square = square_spp(probe, knob);
     const TimedRender fixed = timed_render(load_scene(cmd.scene, ov), cmd.threads, kRepeats);
     const ImageError fixed_error = image_error(fixed.image, ref);
     if (baseline_seconds == 0) baseline_seconds = fixed.seconds;

@@ -26,6 +26,7 @@ struct Confinement {
   std::string refusal;
   std::string refused;  // the path refused
   std::set<std::string> files_read;
+  uint64_t bytes_read = 0;  // over every external file, against kMaxGltfExternalTotalBytes
 };
 
 // Whether `path`, with every symlink resolved, lies inside the folder; `why` says why not.
@@ -76,11 +77,16 @@ bool read_whole_file(std::vector<unsigned char>* out, std::string* err, const st
     return false;
   }
   const uint64_t size = fs::file_size(path, ec);
-  if (ec || size > kMaxGltfExternalBytes) {
-    *err = c.refusal = path + ": " + (ec ? ec.message() : "larger than 1 GiB, the limit for a buffer or image");
+  if (ec || size > kMaxGltfExternalBytes || c.bytes_read + size > kMaxGltfExternalTotalBytes) {
+    *err = c.refusal =
+        path + ": " +
+        (ec                             ? ec.message()
+         : size > kMaxGltfExternalBytes ? "larger than 1 GiB, the limit for a buffer or image"
+                                        : "past 4 GiB read from the files a glTF file names, their limit");
     c.refused = path;
     return false;
   }
+  c.bytes_read += size;
   std::ifstream in(path, std::ios::binary);
   out->resize(size);
   if (!in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
@@ -196,7 +202,7 @@ GltfFile read_gltf_file(const std::string& bytes, const std::string& path) {
   Json root = parse_json_text(json_text(bytes, binary, path), path);  // syntax, depth and duplicate keys first
   check_gltf_schema(root, path);
   check_external_uris(root, path);
-  const std::vector<int> viewless = normalize_gltf_json(root, binary, path);
+  const NormalizedGltf normalized_json = normalize_gltf_json(root, binary, path);
   const std::string normalized = binary ? glb_with_json(bytes, root.dump(), path) : root.dump();
   std::error_code ec;
   Confinement confinement;
@@ -221,11 +227,22 @@ GltfFile read_gltf_file(const std::string& bytes, const std::string& path) {
   if (!ok && !confinement.refusal.empty())
     throw InputError(path + ": " + uri_path_of(root, confinement.refused) + confinement.refusal);
   if (!ok) {  // past every check above: what the library itself says, marked as its words
-    const std::string why = trimmed(err.empty() ? warn : err);
+    std::string why = trimmed(err.empty() ? warn : err);
+    // tinygltf quotes a data URI it cannot decode whole (a 4 MB file, a 4 MB line): name it by
+    // its JSON path instead, and keep any other message to a line.
+    const std::string undecoded = first_uri(
+        root, [&](const std::string& uri) { return uri.rfind("data:", 0) == 0 && why.find(uri) != std::string::npos; });
+    if (!undecoded.empty())
+      throw InputError(path + ": " + undecoded + ": a data URI whose data does not decode (base64, RFC 4648)");
+    constexpr size_t kMaxQuoted = 400;
+    if (why.size() > kMaxQuoted) why = why.substr(0, kMaxQuoted) + "... (" + std::to_string(why.size()) + " bytes)";
     throw InputError(
         path + ": not a glTF 2.0 file the reader accepts (tinygltf: " + (why.empty() ? "no reason given" : why) + ")");
   }
-  for (const int a : viewless) file.model.accessors[static_cast<size_t>(a)].bufferView = -1;
+  for (const int a : normalized_json.viewless_index_accessors)
+    file.model.accessors[static_cast<size_t>(a)].bufferView = -1;
+  file.material_in_file = normalized_json.material_in_file;
+  file.materials_in_file = normalized_json.materials_in_file;
   if (!warn.empty()) file.notes.push_back(trimmed(warn));
   file.files_read = std::move(confinement.files_read);
   return file;

@@ -19,12 +19,18 @@ namespace tracer {
 constexpr uint64_t kMaxGltfFileBytes = 0xffffffffull;
 // The largest external buffer or image the reader follows.
 constexpr uint64_t kMaxGltfExternalBytes = 1ull << 30;
+// The most bytes read from all the external files one glTF file names, each read once.
+constexpr uint64_t kMaxGltfExternalTotalBytes = 4ull << 30;
 
 struct GltfFile {
   std::string path;                  // as the user named it
   tinygltf::Model model;             // images[i].image holds the encoded file's bytes
   std::vector<std::string> notes;    // tinygltf's warnings
   std::set<std::string> files_read;  // external buffers and images
+  // model.materials holds only those a primitive names (gltf_normalize.h): each one's index
+  // in the file, and the file's count, for messages.
+  std::vector<uint64_t> material_in_file;
+  uint64_t materials_in_file = 0;
 };
 
 // `bytes` are the file's contents (read by the caller, which checked it is a regular file).

@@ -82,7 +82,7 @@ void GltfUvTransform::apply(float uv[2]) const {
 }
 
 void GltfMaterials::ignore(const std::string& what) {
-  if (std::find(ignored_.begin(), ignored_.end(), what) == ignored_.end()) ignored_.push_back(what);
+  if (ignored_seen_.insert(what).second) ignored_.push_back(what);
 }
 
 GltfMaterials::Baked GltfMaterials::texture(int index, int tex_coord, Bake bake, Vec3 factor, const std::string& use) {
@@ -262,11 +262,13 @@ uint32_t GltfMaterials::material(int index, GltfUvTransform& uv) {
     uv = known->second.second;
     return known->second.first;
   }
-  if (index >= 0 && static_cast<size_t>(index) >= file_.model.materials.size())
+  const size_t kept = file_.model.materials.size();
+  if (index >= 0 && static_cast<size_t>(index) >= kept)  // past the kept ones by as much as past the file's
     fail(file_, "materials",
-         "material " + std::to_string(index) + " is named, but the file has " +
-             std::to_string(file_.model.materials.size()));
-  const std::string path = "materials[" + std::to_string(index) + "]";
+         "material " + std::to_string(file_.materials_in_file + (static_cast<size_t>(index) - kept)) +
+             " is named, but the file has " + std::to_string(file_.materials_in_file));
+  const std::string path =
+      "materials[" + (index < 0 ? std::string("-1") : std::to_string(file_.material_in_file[index])) + "]";
   // The specification's default material (3.9.1): base colour 1, metallic 1, roughness 1.
   const tinygltf::Material fallback;
   uv = GltfUvTransform{};

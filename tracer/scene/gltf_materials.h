@@ -9,6 +9,7 @@
 #pragma once
 #include <map>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "kernel/material/material.h"
@@ -54,6 +55,7 @@ class GltfMaterials {
   std::map<std::tuple<int, int, float, float, float>, Baked> textures_;
   std::map<int, ImagePixels> images_;
   std::vector<std::string> ignored_;
+  std::unordered_set<std::string> ignored_seen_;
 };
 
 }  // namespace tracer

@@ -10,8 +10,12 @@
 // - an index accessor without a buffer view (zeros, before any sparse substitution) is given
 //   a view of 4 zero bytes, which tinygltf insists on; the returned accessors are to have it
 //   taken away once tinygltf has read the file.
+// - every "extras" and the animations are dropped (the tracer reads neither), and the
+//   materials no mesh primitive names (the others renumbered; their indices in the file are
+//   returned, for messages): tinygltf keeps each element in hundreds of bytes to kilobytes.
 // Errors are InputErrors naming the file and the JSON path.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -19,7 +23,13 @@
 
 namespace tracer {
 
-std::vector<int> normalize_gltf_json(Json& root, bool binary, const std::string& file);
+struct NormalizedGltf {
+  std::vector<int> viewless_index_accessors;  // to have their buffer view taken away after loading
+  std::vector<uint64_t> material_in_file;     // per material kept: its index in the file
+  uint64_t materials_in_file = 0;             // the file's own count
+};
+
+NormalizedGltf normalize_gltf_json(Json& root, bool binary, const std::string& file);
 
 // The .glb `bytes` with its JSON chunk replaced by `json` (glTF 2.0, 4.4: padded with spaces
 // to 4 bytes, the header's length updated); the chunks after it are kept as they were.

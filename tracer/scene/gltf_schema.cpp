@@ -8,7 +8,22 @@
 namespace tracer {
 namespace {
 
-enum class Kind { String, Uint, Number, Bool, NumberArray, UintArray, StringArray, UintValues, Object, ObjectArray };
+// Uint: a whole number tinygltf keeps in an int (every index, enum and texCoord), so at most
+// 2^31 - 1 (4294967295 wrapped to -1, "none"); Size: one it keeps in a size_t (byte offsets,
+// lengths and strides, element counts).
+enum class Kind {
+  String,
+  Uint,
+  Size,
+  Number,
+  Bool,
+  NumberArray,
+  UintArray,
+  StringArray,
+  UintValues,
+  Object,
+  ObjectArray
+};
 
 struct Rule {
   const char* key;
@@ -78,10 +93,10 @@ const std::map<std::string, std::vector<Rule>>& rules() {
       {"textureInfo", texture_info},
       {"accessor",
        {{"bufferView", K::Uint},
-        {"byteOffset", K::Uint},
+        {"byteOffset", K::Size},
         {"componentType", K::Uint},
         {"normalized", K::Bool},
-        {"count", K::Uint},
+        {"count", K::Size},
         {"type", K::String},
         {"max", K::NumberArray},
         {"min", K::NumberArray},
@@ -90,11 +105,11 @@ const std::map<std::string, std::vector<Rule>>& rules() {
       {"sparsePart", {{"bufferView", K::Uint}, {"byteOffset", K::Uint}, {"componentType", K::Uint}}},
       {"bufferView",
        {{"buffer", K::Uint},
-        {"byteOffset", K::Uint},
-        {"byteLength", K::Uint},
-        {"byteStride", K::Uint},
+        {"byteOffset", K::Size},
+        {"byteLength", K::Size},
+        {"byteStride", K::Size},
         {"target", K::Uint}}},
-      {"buffer", {{"uri", K::String}, {"byteLength", K::Uint}}},
+      {"buffer", {{"uri", K::String}, {"byteLength", K::Size}}},
       {"texture", {{"sampler", K::Uint}, {"source", K::Uint}}},
       {"image", {{"uri", K::String}, {"mimeType", K::String}, {"bufferView", K::Uint}}},
       {"sampler", {{"magFilter", K::Uint}, {"minFilter", K::Uint}, {"wrapS", K::Uint}, {"wrapT", K::Uint}}},
@@ -136,32 +151,39 @@ const std::map<std::string, std::vector<const char*>>& required() {
   return table;
 }
 
+constexpr uint64_t kMaxIndex = 2147483647;       // tinygltf's int
+constexpr uint64_t kMaxSize = 9007199254740991;  // 2^53 - 1: what a double holds exactly
+
 template <class Test>
 bool every(Json& v, Test test) {
   return v.is_array() && std::all_of(v.begin(), v.end(), test);
 }
 
-// A whole number >= 0. JSON does not tell 12 from 12.0, and glTF's schema calls both an
-// integer: an integral float below 2^53 counts, and becomes an integer for tinygltf.
-bool whole(Json& v) {
-  if (v.is_number_unsigned()) return true;
+// A whole number from 0 to `most`. JSON does not tell 12 from 12.0, and glTF's schema calls
+// both an integer: an integral float counts, and becomes an integer for tinygltf.
+bool whole(Json& v, uint64_t most = kMaxSize) {
+  if (v.is_number_unsigned()) return v.get<uint64_t>() <= most;
   if (!v.is_number_float()) return false;
   const double d = v.get<double>();
-  if (!(d >= 0.0 && d < 9007199254740992.0 && d == static_cast<double>(static_cast<uint64_t>(d)))) return false;
+  if (!(d >= 0.0 && d <= static_cast<double>(most) && d == static_cast<double>(static_cast<uint64_t>(d)))) return false;
   v = static_cast<uint64_t>(d);
   return true;
 }
 
+bool index_number(Json& v) { return whole(v, kMaxIndex); }
+
 bool has_kind(Json& v, Kind kind) {
   switch (kind) {
     case Kind::String: return v.is_string();
-    case Kind::Uint: return whole(v);
+    case Kind::Uint: return index_number(v);
+    case Kind::Size: return whole(v);
     case Kind::Number: return v.is_number();
     case Kind::Bool: return v.is_boolean();
     case Kind::NumberArray: return every(v, [](const Json& e) { return e.is_number(); });
-    case Kind::UintArray: return every(v, [](Json& e) { return whole(e); });
+    case Kind::UintArray: return every(v, [](Json& e) { return index_number(e); });
     case Kind::StringArray: return every(v, [](const Json& e) { return e.is_string(); });
-    case Kind::UintValues: return v.is_object() && std::all_of(v.begin(), v.end(), [](Json& e) { return whole(e); });
+    case Kind::UintValues:
+      return v.is_object() && std::all_of(v.begin(), v.end(), [](Json& e) { return index_number(e); });
     case Kind::Object: return v.is_object();
     case Kind::ObjectArray: return every(v, [](const Json& e) { return e.is_object(); });
   }
@@ -171,13 +193,14 @@ bool has_kind(Json& v, Kind kind) {
 const char* kind_name(Kind kind) {
   switch (kind) {
     case Kind::String: return "a string";
-    case Kind::Uint: return "a whole number >= 0";
+    case Kind::Uint: return "a whole number from 0 to 2147483647";
+    case Kind::Size: return "a whole number >= 0";
     case Kind::Number: return "a number";
     case Kind::Bool: return "true or false";
     case Kind::NumberArray: return "an array of numbers";
-    case Kind::UintArray: return "an array of whole numbers >= 0";
+    case Kind::UintArray: return "an array of whole numbers from 0 to 2147483647";
     case Kind::StringArray: return "an array of strings";
-    case Kind::UintValues: return "an object of whole numbers >= 0";
+    case Kind::UintValues: return "an object of whole numbers from 0 to 2147483647";
     case Kind::Object: return "an object";
     case Kind::ObjectArray: return "an array of objects";
   }
@@ -200,11 +223,16 @@ void check_object(Json& object, const std::string& context, const std::string& p
       for (auto ext : v.items()) {
         if (!ext.value().is_object())
           fail_at(file, child(at, ext.key()), "expected an object, got " + describe(ext.value()));
-        // The texture references inside the extensions the tracer reads.
-        for (auto part : ext.value().items())
+        // The references inside the extensions the tracer reads: KHR_lights_punctual's light,
+        // KHR_texture_transform's texCoord (tinygltf keeps both in an int), texture infos.
+        for (auto part : ext.value().items()) {
+          if ((part.key() == "light" || part.key() == "texCoord") && !index_number(part.value()))
+            fail_at(file, child(child(at, ext.key()), part.key()),
+                    std::string("expected ") + kind_name(Kind::Uint) + ", got " + describe(part.value()));
           if (part.value().is_object() && part.key().size() > 7 &&
               part.key().compare(part.key().size() - 7, 7, "Texture") == 0)
             check_object(part.value(), "textureInfo", child(child(at, ext.key()), part.key()), file);
+        }
       }
     }
     const auto rule = std::find_if(table.begin(), table.end(), [&](const Rule& r) { return item.key() == r.key; });

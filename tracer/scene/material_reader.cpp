@@ -17,10 +17,19 @@ float unit_interval(JsonObject& obj, const std::string& key, float fallback) {
   return x;
 }
 
+// The range of an index of refraction (a dielectric's ior, a conductor's eta) and of a
+// conductor's extinction k. Real materials lie well inside (ior 1 to 4, relative indices 1/4
+// to 4; measured metals' eta 0.03 to 30, k under 100); outside, Fresnel's squares and 1 / ior
+// leave float's range (a denormal ior refracts rays of NaN direction; an eta or k past 4e9
+// gives NaN reflectance).
+constexpr float kMinIor = 0.01f, kMaxIor = 100.0f, kMaxExtinction = 1000.0f;
+
+bool ior_in_range(float x) { return x >= kMinIor && x <= kMaxIor; }
+
 // An index of refraction: required, or `fallback` when absent.
-float positive_ior(JsonObject& obj, std::optional<float> fallback) {
+float ranged_ior(JsonObject& obj, std::optional<float> fallback) {
   const float x = fallback ? obj.number_or("ior", *fallback) : obj.number("ior");
-  if (!(x > 0.0f)) obj.fail("ior", "must be > 0");
+  if (!ior_in_range(x)) obj.fail("ior", "must be in [0.01, 100]");
   return x;
 }
 
@@ -40,8 +49,10 @@ void read_conductor_fresnel(JsonObject& obj, TextureLoader& textures, Material& 
   m.fresnel = FresnelKind::Exact;
   m.eta = obj.vec3("eta");
   m.k = obj.vec3("k");
-  if (!(m.eta.x > 0.0f && m.eta.y > 0.0f && m.eta.z > 0.0f)) obj.fail("eta", "must be > 0");
-  if (!(m.k.x >= 0.0f && m.k.y >= 0.0f && m.k.z >= 0.0f)) obj.fail("k", "must be >= 0");
+  if (!(ior_in_range(m.eta.x) && ior_in_range(m.eta.y) && ior_in_range(m.eta.z)))
+    obj.fail("eta", "must be in [0.01, 100]");
+  if (!(m.k.x >= 0.0f && m.k.y >= 0.0f && m.k.z >= 0.0f && max_component(m.k) <= kMaxExtinction))
+    obj.fail("k", "must be in [0, 1000]");
   m.albedo = fresnel_conductor(1.0f, m.eta, m.k);  // what the albedo view shows
 }
 
@@ -79,7 +90,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.roughness = unit_interval(obj, "roughness", 0.0f);
   } else if (type == "dielectric") {
     m.kind = MaterialKind::Dielectric;
-    m.ior = positive_ior(obj, std::nullopt);
+    m.ior = ranged_ior(obj, std::nullopt);
     m.tint = textures.colour_or(obj, "tint", {1.0f, 1.0f, 1.0f}, m.texture[kSlotTint]);
     m.fresnel = parse_enum<FresnelKind>(obj.string_or("fresnel", "schlick"), file + ": " + obj.child("fresnel"));
   } else if (type == "phong") {
@@ -92,7 +103,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
     if (!(m.shininess >= 0.0f)) obj.fail("shininess", "must be >= 0");
     m.reflectivity = unit_interval(obj, "reflectivity", 0.0f);
     m.transparency = unit_interval(obj, "transparency", 0.0f);
-    m.ior = positive_ior(obj, 1.0f);
+    m.ior = ranged_ior(obj, 1.0f);
     m.factor_map = textures.data_map(obj, "specular_map");
   } else if (type == "conductor") {
     m.kind = MaterialKind::GgxConductor;
@@ -100,7 +111,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.roughness = unit_interval(obj, "roughness", 0.0f);
   } else if (type == "rough_dielectric") {
     m.kind = MaterialKind::GgxDielectric;
-    m.ior = positive_ior(obj, std::nullopt);
+    m.ior = ranged_ior(obj, std::nullopt);
     m.roughness = unit_interval(obj, "roughness", 0.0f);
     m.tint = textures.colour_or(obj, "tint", {1.0f, 1.0f, 1.0f}, m.texture[kSlotTint]);
     m.fresnel = parse_enum<FresnelKind>(obj.string_or("fresnel", "schlick"), file + ": " + obj.child("fresnel"));
@@ -111,7 +122,7 @@ Material read_material(const Json& value, const std::string& path, const std::st
     m.metallic = unit_interval(obj, "metallic", 0.0f);
     m.roughness = unit_interval(obj, "roughness", 1.0f);
     m.transmission = unit_interval(obj, "transmission", 0.0f);
-    m.ior = positive_ior(obj, 1.5f);
+    m.ior = ranged_ior(obj, 1.5f);
   } else if (type == "emissive") {
     m.kind = MaterialKind::Emissive;
     m.radiance = textures.colour(obj, "radiance", m.texture[kSlotRadiance]);

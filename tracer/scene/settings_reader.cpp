@@ -60,8 +60,12 @@ RenderSettings read_settings(const Json* render, const Json& film, const std::st
                      ": min_spp is adaptive sampling's minimum; it needs noise_threshold or "
                      "target_error");
   if (adaptive) {  // adaptive sampling (docs/path.md)
+    // The key to blame: the sampler where the command gave it, else the adaptive key set.
+    const char* key = overrides.has("sampler")    ? "sampler"
+                      : rs.noise_threshold > 0.0f ? "noise_threshold"
+                                                  : "target_error";
     if (rs.sampler == SamplerKind::Center || rs.sampler == SamplerKind::Grid || rs.sampler == SamplerKind::Stratified)
-      throw InputError(where("noise_threshold") +
+      throw InputError(where(key) +
                        ": adaptive sampling needs a sampler whose every prefix of samples "
                        "covers the whole pixel (stochastic or sobol), not " +
                        enum_name(rs.sampler));

@@ -1,10 +1,12 @@
 #include "scene/shape_reader.h"
 
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "scene/material_reader.h"
 #include "io/text_file.h"
+#include "scene/gltf_materials.h"
 #include "scene/gltf_scene.h"
 #include "scene/mesh.h"
 #include "scene/mesh_primitives.h"
@@ -154,8 +156,11 @@ class ShapeReader {
     const std::string file = (std::filesystem::path(dir_) / obj.string("file")).string();
     scene_.report.input_files.insert(file);
     try {
-      const GltfFile gltf = read_gltf_file(read_text_file(file, "glTF file", kMaxGltfFileBytes), file);
-      const GltfContents contents = add_gltf_file(gltf, xf, false, scene_);
+      std::error_code ec;
+      std::unique_ptr<PlacedGltf>& placed = gltf_files_[std::filesystem::weakly_canonical(file, ec).string()];
+      if (!placed) placed = std::make_unique<PlacedGltf>(
+                       read_gltf_file(read_text_file(file, "glTF file", kMaxGltfFileBytes), file), scene_);
+      const GltfContents contents = add_gltf_file(placed->file, xf, false, scene_, placed->materials);
       if (contents.triangles == 0) obj.fail("file", "its default scene places no triangles");
       for (const std::string& s : contents.ignored) scene_.report.gltf.push_back(file + ": ignored " + s);
     } catch (const InputError& e) {
@@ -265,9 +270,18 @@ class ShapeReader {
     if (kept == 0) obj.fail(obj.find("file") ? "file" : "indices", "every triangle of the mesh has zero area");
   }
 
+  // A glTF file the shapes place, read once with its materials and textures however many
+  // times it is placed; by its canonical path.
+  struct PlacedGltf {
+    PlacedGltf(GltfFile read, Scene& scene) : file(std::move(read)), materials(file, scene) {}
+    GltfFile file;
+    GltfMaterials materials;
+  };
+
   Scene& scene_;
   std::string dir_;
   TextureLoader& textures_;
+  std::map<std::string, std::unique_ptr<PlacedGltf>> gltf_files_;
 };
 
 }  // namespace

@@ -58,11 +58,14 @@ TRACER_HD void trace_into(const SceneView& scene, const Ray& ray, Hit& best, boo
 // The one query. With `any`, whether anything lies at t in (0, tmax), the shadow ray's
 // question: t <= the float just below tmax, so a hit exactly at the light does not occlude;
 // the answer is a property of the set of primitives, so the order of visits cannot change it.
-// Without, the closest hit with t in (0, tmax].
+// Without, the closest hit with t in (0, tmax]. A ray whose origin or direction is not finite
+// (a material's arithmetic gone to NaN) hits nothing on any structure: the box tests' min and
+// max drop a NaN, so a walk would otherwise enter every child, empty ones too.
 template <uint32_t kCode = kTraceAll>
 TRACER_HD Hit trace_query(const SceneView& scene, const Ray& ray, float tmax, bool any) {
   TRACER_TRACE_HOOK(ray, tmax, any);
   Hit best = {any ? float_of_bits(bits_of(tmax) - 1u) : tmax, kNoHit, 0.0f, 0.0f};
+  if (!is_finite(ray.origin) || !is_finite(ray.dir)) return best;
   trace_into<kCode>(scene, ray, best, any);
   return best;
 }

@@ -88,10 +88,11 @@ TRACER_HD float fresnel_conductor(float cos_i, float eta, float k) {
   const float a2b2 = det_sqrt(t0 * t0 + 4.0f * (eta * eta) * (k * k));
   const float a = det_sqrt(max_of(0.0f, 0.5f * (a2b2 + t0)));
   const float t1 = a2b2 + cos2, t2 = 2.0f * a * c;
-  const float rs = (t1 - t2) / (t1 + t2);
+  // t1 + t2 is 0 only at grazing incidence on eta 1, k 0, which is no interface: no reflection.
+  const float rs = t1 + t2 > 0.0f ? (t1 - t2) / (t1 + t2) : 0.0f;
   const float t3 = cos2 * a2b2 + sin2 * sin2, t4 = t2 * sin2;
   const float rp = rs * (t3 - t4) / (t3 + t4);
-  return 0.5f * (rs + rp);
+  return clamp_of(0.5f * (rs + rp), 0.0f, 1.0f);  // near eta 1, k 0 it rounds a few ulps below 0
 }
 
 TRACER_HD Vec3 fresnel_conductor(float cos_i, Vec3 eta, Vec3 k) {

@@ -74,11 +74,15 @@ TRACER_HD uint32_t find_cdf_interval(const Entry* entries, uint32_t count, float
   return base;
 }
 
-// Power heuristic with beta = 2 (Veach 1997): the weight of a sample drawn with pdf `a`
-// when the other strategy would have drawn it with pdf `b`.
+// Power heuristic with beta = 2 (Veach 1997, eq. 9.13): the weight of a sample drawn with pdf
+// `a` when the other strategy would have drawn it with pdf `b`, a^2 / (a^2 + b^2). Where the
+// squares overflow (a density past 1.8e19: a light under 5e-20 sr), the same weight from the
+// densities' ratio r <= 1: 1 / (1 + r^2) for the larger, r^2 / (1 + r^2) for the smaller.
 TRACER_HD float power_heuristic(float a, float b) {
-  const float a2 = a * a, b2 = b * b;
-  return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
+  const float a2 = a * a, b2 = b * b, sum = a2 + b2;
+  if (sum < kInfinity) return sum > 0.0f ? a2 / sum : 0.0f;
+  const float r = a >= b ? b / a : a / b, r2 = r * r;
+  return a >= b ? 1.0f / (1.0f + r2) : r2 / (1.0f + r2);
 }
 
 }  // namespace tracer
