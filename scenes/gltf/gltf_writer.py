@@ -15,11 +15,13 @@ def f32(x):
 
 
 def png(width, height, pixel):
-    """An 8-bit RGB PNG; pixel(x, y) returns (r, g, b) in 0..255, row 0 at the top."""
+    """An 8-bit RGB or RGBA PNG; pixel(x, y) returns (r, g, b) or (r, g, b, a) in 0..255, row 0 at
+    the top."""
     rows = b"".join(b"\0" + bytes(c for x in range(width) for c in pixel(x, y)) for y in range(height))
     def chunk(kind, data):
         return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
-    header = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)
+    colour_type = 6 if len(pixel(0, 0)) == 4 else 2
+    header = struct.pack(">IIBBBBB", width, height, 8, colour_type, 0, 0, 0)
     return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b"")
 
 

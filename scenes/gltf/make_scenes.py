@@ -10,6 +10,8 @@
   conventions.glb            a diffuse plane under a 10 cd point light 2 m above it, beside an
                              emissive quad of strength 2, seen from above: docs/gltf.md renders
                              it in Blender too (blender_compare.sh) to check camera and units
+  cutouts.glb                a lattice fence and a leaf card (alphaMode MASK, the texture's alpha) and
+                             a tinted pane (BLEND, alpha 0.4) before a sphere, under a low sun
 The files are committed; run this after changing it."""
 import json
 import math
@@ -194,9 +196,54 @@ def sun_and_spot():
     g.write_glb(os.path.join(HERE, "sun-and-spot.glb"))
 
 
+def cutouts():
+    """Cut-outs under a low sun: a lattice fence (MASK, alphaCutoff 0.5, its texture's alpha), a
+    leaf card (MASK, an ellipse of alpha), a tinted pane (BLEND, alpha 0.4) and a sphere behind
+    them on a floor; the shadows show the holes, and the pane passes 0.6 of the light."""
+    g = Gltf()
+    g.extensions.add("KHR_materials_specular")
+    diffuse = {"KHR_materials_specular": {"specularFactor": 0}}
+    grey = g.material("floor", pbrMetallicRoughness={"baseColorFactor": [0.6, 0.6, 0.6, 1], "metallicFactor": 0,
+                                                     "roughnessFactor": 1}, extensions=diffuse)
+    g.node(mesh=g.mesh("floor", [-4, 0, -4, -4, 0, 4, 4, 0, 4, 4, 0, -4], [0, 1, 2, 0, 2, 3], grey,
+                       normals=[0, 1, 0] * 4))
+    lattice = g.image(png(32, 32, lambda x, y: (200, 160, 90, 255 if x % 8 < 2 or y % 8 < 2 else 0)))
+    fence = g.material("fence", pbrMetallicRoughness={"baseColorTexture": {"index": lattice}, "metallicFactor": 0,
+                                                      "roughnessFactor": 1},
+                       alphaMode="MASK", alphaCutoff=0.5, doubleSided=True, extensions=diffuse)
+    quad = [0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0]
+    quad_uvs = [0, 1, 1, 1, 1, 0, 0, 0]
+    fence_mesh = g.mesh("fence", [c * 1.6 for c in quad], [0, 1, 2, 0, 2, 3], fence, normals=[0, 0, 1] * 4,
+                        uvs=quad_uvs)
+    g.node(name="fence", mesh=fence_mesh, translation=[-2.2, 0, 0.2])
+    leaf_alpha = lambda x, y: 255 if ((x - 15.5) / 9) ** 2 + ((y - 15.5) / 15) ** 2 < 1 else 0
+    leaf_png = g.image(png(32, 32, lambda x, y: (60, 150 + 2 * y, 50, leaf_alpha(x, y))))
+    leaf = g.material("leaf", pbrMetallicRoughness={"baseColorTexture": {"index": leaf_png}, "metallicFactor": 0,
+                                                    "roughnessFactor": 1},
+                      alphaMode="MASK", doubleSided=True, extensions=diffuse)
+    leaf_mesh = g.mesh("leaf", [c * 1.2 for c in quad], [0, 1, 2, 0, 2, 3], leaf, normals=[0, 0, 1] * 4, uvs=quad_uvs)
+    g.node(name="leaf", mesh=leaf_mesh, translation=[-0.45, 0.3, 0.6], rotation=[0, math.sin(-0.3), 0, math.cos(-0.3)])
+    pane = g.material("pane", pbrMetallicRoughness={"baseColorFactor": [0.3, 0.5, 0.9, 0.4], "metallicFactor": 0,
+                                                    "roughnessFactor": 1},
+                      alphaMode="BLEND", doubleSided=True, extensions=diffuse)
+    g.node(name="pane", mesh=g.mesh("pane", [c * 1.3 for c in quad], [0, 1, 2, 0, 2, 3], pane,
+                                    normals=[0, 0, 1] * 4), translation=[0.95, 0, 0.3])
+    clay = g.material("clay", pbrMetallicRoughness={"baseColorFactor": [0.8, 0.45, 0.3, 1], "metallicFactor": 0,
+                                                    "roughnessFactor": 1}, extensions=diffuse)
+    pos, nor, _, idx = uv_sphere(0.45, 32, 16)
+    g.node(mesh=g.mesh("sphere", pos, idx, clay, normals=nor), translation=[0.3, 0.45, -1.2])
+    sun = [-0.3, -0.55, -0.78]
+    n = math.sqrt(sum(c * c for c in sun))
+    g.light({"type": "directional", "color": [1, 0.97, 0.92], "intensity": 3.0},
+            rotation=rotation_to([c / n for c in sun]))
+    pitched_camera(g, 45, [-0.35, 2.2, 5.6], -18)
+    g.write_glb(os.path.join(HERE, "cutouts.glb"))
+
+
 if __name__ == "__main__":
     cornell_box()
     sphere_grid()
     textured()
     conventions()
     sun_and_spot()
+    cutouts()
