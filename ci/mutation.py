@@ -36,7 +36,8 @@ class Mutant:
         self.name, self.feature, self.file = name, "", ""
         self.sample = False
         self.equivalent = ""  # why it is unbiased; its own test must kill it
-        self.killer = ""  # for an equivalent mutant: the ctest -R pattern of its test
+        self.guard = ""  # why no golden shows it (it guards input no golden holds); its own test must kill it
+        self.killer = ""  # for an equivalent or guard mutant: the ctest -R pattern of its test
         self.first = ""  # tests run before the rest (ctest -R): those that killed it before
         self.before, self.after = [], []
 
@@ -56,7 +57,7 @@ def read_mutants(path):
                     mutants.append(current)
                 elif current is None:
                     sys.exit(f"{where}: '## {key}' before any '## name'")
-                elif key in ("feature", "file", "equivalent", "killer", "first"):
+                elif key in ("feature", "file", "equivalent", "guard", "killer", "first"):
                     setattr(current, key, value.strip())
                 elif key == "sample":
                     current.sample = value.strip() == "yes"
@@ -72,8 +73,9 @@ def read_mutants(path):
     for m in mutants:
         if not (m.feature and m.file and m.before):
             sys.exit(f"{path}: mutant {m.name} needs a feature, a file and '-' lines")
-        if m.equivalent and not m.killer:
-            sys.exit(f"{path}: equivalent mutant {m.name} needs the killer test that catches it")
+        if (m.equivalent or m.guard) and not m.killer:
+            sys.exit(f"{path}: {'equivalent' if m.equivalent else 'guard'} mutant {m.name} needs the killer test"
+                     " that catches it")
         if m.name in names:
             sys.exit(f"{path}: mutant {m.name} twice")
         names.add(m.name)
@@ -172,15 +174,15 @@ def campaign(mutants, scratch, jobs):
                 row["verdict"], row["by"] = "killed", "golden update refused it: " + refusal
             elif update.returncode != 0 or not rewritten:
                 row["verdict"] = "golden update failed: " + refusal
-            elif rewritten.group(1) == "0" and not m.equivalent:
+            elif rewritten.group(1) == "0" and not (m.equivalent or m.guard):
                 row["verdict"] = "unseen: no golden changed"
             else:
                 test = ["ctest", "--test-dir", build, "-LE", EXCLUDED_LABELS, "-j", str(jobs), "--timeout", "600",
                         "--stop-on-failure"]
-                # An equivalent mutant runs its killer alone; another runs the tests named by
-                # 'first' before the rest, which run only when none of those fails: the same
-                # verdict sooner.
-                if m.equivalent:
+                # An equivalent or guard mutant runs its killer alone; another runs the tests
+                # named by 'first' before the rest, which run only when none of those fails: the
+                # same verdict sooner.
+                if m.equivalent or m.guard:
                     passes = [test + ["-R", m.killer]]
                 elif m.first:  # a pattern that matches no test falls through to the rest
                     passes = [test + ["-R", m.first, "--no-tests=ignore"], test]
@@ -241,7 +243,8 @@ def main():
         return 1 if stale else 0
     if args.list:
         for m in mutants:
-            kind = f"equivalent ({m.equivalent}); killed by {m.killer}" if m.equivalent else "bug"
+            kind = (f"equivalent ({m.equivalent}); killed by {m.killer}" if m.equivalent
+                    else f"guard ({m.guard}); killed by {m.killer}" if m.guard else "bug")
             print(f"{m.name:40} {m.feature:32} {m.file}  {kind}{'  [sample]' if m.sample else ''}")
         return 0
     scratch = args.keep or tempfile.mkdtemp(prefix="tracer-mutation-")
@@ -253,13 +256,15 @@ def main():
     subprocess.run(["git", "-C", scratch, "checkout", "--quiet", "--force", "FETCH_HEAD"], check=True)
     print(f"mutation campaign: {len(mutants)} mutants of {MUTANTS} in {scratch}, labels but {EXCLUDED_LABELS}")
     rows = campaign(mutants, scratch, args.jobs)
-    bugs = [r for r in rows if not r["mutant"].equivalent]
+    bugs = [r for r in rows if not (r["mutant"].equivalent or r["mutant"].guard)]
     valid = [r for r in bugs if r["verdict"] in ("killed", "SURVIVED")]
     killed = sum(r["verdict"] == "killed" for r in valid)
     equivalent = [r for r in rows if r["mutant"].equivalent]
+    guards = [r for r in rows if r["mutant"].guard]
     print(f"score: {killed} of {len(valid)} mutants the goldens see killed"
           f" ({100.0 * killed / max(len(valid), 1):.0f} %); {len(bugs) - len(valid)} not run or unseen;"
-          f" equivalent: {sum(r['verdict'] == 'killed' for r in equivalent)} of {len(equivalent)} killed by their own test")
+          f" equivalent: {sum(r['verdict'] == 'killed' for r in equivalent)} of {len(equivalent)} killed by their own test;"
+          f" guards: {sum(r['verdict'] == 'killed' for r in guards)} of {len(guards)} killed by their own test")
     if not args.keep:
         shutil.rmtree(scratch, ignore_errors=True)
     return 0 if all(r["verdict"] == "killed" for r in rows) else 1
