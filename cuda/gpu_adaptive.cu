@@ -34,16 +34,28 @@ __device__ void adaptive_pass(const SceneView& scene, const uint32_t* running, s
   atomicAdd(&counters[kShadow], static_cast<unsigned long long>(counts.shadow));
 }
 
-// A pass kernel per integrator, named for it (as gpu_film.cu's render kernels).
+// A pass kernel per integrator and feature set, named for it (as gpu_film.cu's render kernels).
 __global__ void whitted_adaptive_pass_kernel(const SceneView scene, const uint32_t* running, size_t count,
                                              uint32_t begin, uint32_t end, FilmSum* even, FilmSum* odd,
                                              unsigned long long* counters) {
+  adaptive_pass<IntegratorKind::Whitted, kKernelWithoutAlpha>(scene, running, count, begin, end, even, odd, counters);
+}
+
+__global__ void whitted_alpha_adaptive_pass_kernel(const SceneView scene, const uint32_t* running, size_t count,
+                                                   uint32_t begin, uint32_t end, FilmSum* even, FilmSum* odd,
+                                                   unsigned long long* counters) {
   adaptive_pass<IntegratorKind::Whitted>(scene, running, count, begin, end, even, odd, counters);
 }
 
-// The path tracer without and with mirror images' code, as gpu_film.cu's.
 __global__ void path_adaptive_pass_kernel(const SceneView scene, const uint32_t* running, size_t count, uint32_t begin,
                                           uint32_t end, FilmSum* even, FilmSum* odd, unsigned long long* counters) {
+  adaptive_pass<IntegratorKind::Path, kKernelWithoutMirrorImagesOrAlpha>(scene, running, count, begin, end, even, odd,
+                                                                         counters);
+}
+
+__global__ void path_alpha_adaptive_pass_kernel(const SceneView scene, const uint32_t* running, size_t count,
+                                                uint32_t begin, uint32_t end, FilmSum* even, FilmSum* odd,
+                                                unsigned long long* counters) {
   adaptive_pass<IntegratorKind::Path, kKernelWithoutMirrorImages>(scene, running, count, begin, end, even, odd,
                                                                   counters);
 }
@@ -64,10 +76,13 @@ using AdaptivePassKernel = void (*)(const SceneView, const uint32_t*, size_t, ui
                                     unsigned long long*);
 
 AdaptivePassKernel adaptive_pass_kernel_for(const SceneView& view) {
+  const bool alpha = (view.features & kFeatureAlpha) != 0u;
   switch (view.settings.integrator) {
-    case IntegratorKind::Whitted: return whitted_adaptive_pass_kernel;
+    case IntegratorKind::Whitted: return alpha ? whitted_alpha_adaptive_pass_kernel : whitted_adaptive_pass_kernel;
     case IntegratorKind::Path:
-      return view.mirror_count > 0 ? path_mirror_images_adaptive_pass_kernel : path_adaptive_pass_kernel;
+      return view.mirror_count > 0 ? path_mirror_images_adaptive_pass_kernel
+             : alpha               ? path_alpha_adaptive_pass_kernel
+                                   : path_adaptive_pass_kernel;
     default: return view_adaptive_pass_kernel;
   }
 }
@@ -171,9 +186,10 @@ GpuAdaptiveFilm render_adaptive_on_gpu(const SceneArrays& arrays, const SceneVie
   const RenderSettings& rs = view.settings;
   const size_t pixels = static_cast<size_t>(rs.width) * rs.height;
   const bool stream = rs.schedule == Schedule::Stream;
-  r.run.device_bytes =
-      DeviceScene::bytes(arrays, device_bvh_of(view)) + pixels * (2 * sizeof(FilmSum) + sizeof(uint32_t) + 2) +
-      kCounterCount * sizeof(unsigned long long) + GpuStream::device_bytes(view, GpuBackend::stream_samples(rs, pixels));
+  r.run.device_bytes = DeviceScene::bytes(arrays, device_bvh_of(view)) +
+                       pixels * (2 * sizeof(FilmSum) + sizeof(uint32_t) + 2) +
+                       kCounterCount * sizeof(unsigned long long) +
+                       GpuStream::device_bytes(view, GpuBackend::stream_samples(rs, pixels));
   require_free_device_memory(r.run.device_bytes,
                              stream ? label + " (--stream-width " + std::to_string(rs.stream_width) + ")" : label,
                              r.run.device);

@@ -31,16 +31,26 @@ __device__ void render_pixels(const SceneView& scene, SampleRange range, FilmSum
 }
 
 // The megakernel, one per integrator and named for it, so that none holds another's registers
-// and stack (docs/cuda.md, "Resource budgets").
+// and stack (docs/cuda.md, "Resource budgets"), each without the code of a feature a scene
+// lacks where it costs the most (kernel/base/features.h): Whitted without and with cut-outs;
+// the path tracer without mirror images and cut-outs, with cut-outs alone, and with both.
 __global__ void whitted_render_kernel(const SceneView scene, SampleRange range, FilmSum* film,
                                       unsigned long long* counters) {
+  render_pixels<IntegratorKind::Whitted, kKernelWithoutAlpha>(scene, range, film, counters);
+}
+
+__global__ void whitted_alpha_render_kernel(const SceneView scene, SampleRange range, FilmSum* film,
+                                            unsigned long long* counters) {
   render_pixels<IntegratorKind::Whitted>(scene, range, film, counters);
 }
 
-// The path tracer without mirror images' code (kernel/base/features.h), for scenes without a flat
-// mirror to sample through, and with it.
 __global__ void path_render_kernel(const SceneView scene, SampleRange range, FilmSum* film,
                                    unsigned long long* counters) {
+  render_pixels<IntegratorKind::Path, kKernelWithoutMirrorImagesOrAlpha>(scene, range, film, counters);
+}
+
+__global__ void path_alpha_render_kernel(const SceneView scene, SampleRange range, FilmSum* film,
+                                         unsigned long long* counters) {
   render_pixels<IntegratorKind::Path, kKernelWithoutMirrorImages>(scene, range, film, counters);
 }
 
@@ -58,9 +68,13 @@ __global__ void view_render_kernel(const SceneView scene, SampleRange range, Fil
 using RenderKernel = void (*)(const SceneView, SampleRange, FilmSum*, unsigned long long*);
 
 RenderKernel render_kernel_for(const SceneView& view) {
+  const bool alpha = (view.features & kFeatureAlpha) != 0u;
   switch (view.settings.integrator) {
-    case IntegratorKind::Whitted: return whitted_render_kernel;
-    case IntegratorKind::Path: return view.mirror_count > 0 ? path_mirror_images_render_kernel : path_render_kernel;
+    case IntegratorKind::Whitted: return alpha ? whitted_alpha_render_kernel : whitted_render_kernel;
+    case IntegratorKind::Path:
+      return view.mirror_count > 0 ? path_mirror_images_render_kernel
+             : alpha               ? path_alpha_render_kernel
+                                   : path_render_kernel;
     default: return view_render_kernel;
   }
 }
@@ -96,7 +110,9 @@ double seconds_since(std::chrono::steady_clock::time_point t) {
 std::string describe_render_kernel() {
   const cudaDeviceProp prop = select_cuda_device();
   return describe_render_kernel("whitted_render_kernel", whitted_render_kernel, prop) + "\n" +
+         describe_render_kernel("whitted_alpha_render_kernel", whitted_alpha_render_kernel, prop) + "\n" +
          describe_render_kernel("path_render_kernel", path_render_kernel, prop) + "\n" +
+         describe_render_kernel("path_alpha_render_kernel", path_alpha_render_kernel, prop) + "\n" +
          describe_render_kernel("path_mirror_images_render_kernel", path_mirror_images_render_kernel, prop) + "\n" +
          describe_render_kernel("view_render_kernel", view_render_kernel, prop);
 }
@@ -111,7 +127,8 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
   const bool stream = rs.schedule == Schedule::Stream;
   const uint64_t samples = static_cast<uint64_t>(pixels) * (range.end - range.begin);
   r.run.device_bytes = DeviceScene::bytes(arrays, device_bvh_of(view)) + pixels * sizeof(FilmSum) +
-                       kCounterCount * sizeof(unsigned long long) + (stream ? GpuStream::device_bytes(view, samples) : 0);
+                       kCounterCount * sizeof(unsigned long long) +
+                       (stream ? GpuStream::device_bytes(view, samples) : 0);
   require_free_device_memory(r.run.device_bytes,
                              stream ? label + " (--stream-width " + std::to_string(rs.stream_width) + ")" : label,
                              r.run.device);

@@ -52,6 +52,20 @@ TRACER_HD constexpr bool traces(uint32_t bits) {
   return (kCode & bits) != 0;
 }
 
+// Whether kCode is the full code (every shape, test and structure: the CPU's and the
+// megakernels'), with or without the alpha test; a variant holds one structure.
+template <uint32_t kCode>
+TRACER_HD constexpr bool is_full_code() {
+  return (kCode | kTraceAlpha) == kTraceAll;
+}
+
+// The full code of a kernel compiled for the feature mask kFeatures: without the alpha test
+// where kFeatures has no cut-outs.
+template <uint32_t kFeatures>
+TRACER_HD constexpr uint32_t full_trace_code() {
+  return (kFeatures & kFeatureAlpha) != 0u ? kTraceAll : kTraceAll & ~kTraceAlpha;
+}
+
 // Whether code kCode tests triangles watertight under `test` (else Moller-Trumbore).
 template <uint32_t kCode>
 TRACER_HD constexpr bool tests_watertight(TriangleTest test) {
@@ -63,7 +77,7 @@ TRACER_HD constexpr bool tests_watertight(TriangleTest test) {
 template <uint32_t kCode>
 TRACER_HD constexpr bool walks_wide_bvh() {
 #if defined(__CUDA_ARCH__)
-  return kCode != kTraceAll && traces<kCode>(kTraceWideBvh);
+  return !is_full_code<kCode>() && traces<kCode>(kTraceWideBvh);
 #else
   return traces<kCode>(kTraceWideBvh);
 #endif
@@ -77,7 +91,7 @@ template <uint32_t kCode>
 TRACER_HD constexpr bool walks_bvh_pairs() {
 #if defined(__CUDA_ARCH__)
   return traces<kCode>(kTraceBvh) && traces<kCode>(kFeatureTriangle) &&
-         (kCode == kTraceAll || !traces<kCode>(kTraceWideBvh));
+         (is_full_code<kCode>() || !traces<kCode>(kTraceWideBvh));
 #else
   return traces<kCode>(kTraceBvh) && traces<kCode>(kFeatureTriangle);
 #endif

@@ -21,7 +21,7 @@ constexpr int kWideVariantStackSize = 64;
 
 template <uint32_t kCode>
 constexpr int wide_stack_size() {
-  return kCode == kTraceAll ? kWideStackSize : kWideVariantStackSize;
+  return is_full_code<kCode>() ? kWideStackSize : kWideVariantStackSize;
 }
 
 template <uint32_t kCode = kTraceAll, int kStackSize = wide_stack_size<kCode>()>

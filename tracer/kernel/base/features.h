@@ -35,6 +35,9 @@ enum FeatureBit : uint32_t {
 
 // This compilation's features less mirror images: the path kernels for scenes without a flat mirror.
 constexpr uint32_t kKernelWithoutMirrorImages = TRACER_KERNEL_FEATURES & ~uint32_t{kFeatureMirrorImages};
+// Less cut-outs: the megakernels for scenes without one (their traversal keeps every hit).
+constexpr uint32_t kKernelWithoutAlpha = TRACER_KERNEL_FEATURES & ~uint32_t{kFeatureAlpha};
+constexpr uint32_t kKernelWithoutMirrorImagesOrAlpha = kKernelWithoutMirrorImages & kKernelWithoutAlpha;
 
 // Whether this compilation of the kernel has code for `feature`.
 TRACER_HD constexpr bool compiled_in(uint32_t feature) { return (TRACER_KERNEL_FEATURES & feature) != 0; }

@@ -197,15 +197,16 @@ TRACER_HD_STEP PathStep path_shade(const SceneView& scene, uint32_t pixel, uint3
 template <uint32_t kFeatures = TRACER_KERNEL_FEATURES>
 TRACER_HD Vec3 path_radiance(const SceneView& scene, const Ray& camera_ray, uint32_t pixel, uint32_t sample,
                              RayCounts& counts) {
+  constexpr uint32_t kCode = full_trace_code<kFeatures>();
   PathState st = path_start(camera_ray);
   for (;;) {
-    const Hit hit = trace_closest(scene, st.ray, kInfinity);
+    const Hit hit = trace_closest<kCode>(scene, st.ray, kInfinity);
     ShadowQuery shadow;
     MirrorQuery image;
     const PathStep step = path_shade<kFeatures>(scene, pixel, sample, hit, st, shadow, image, counts);
     const uint8_t kinds = static_cast<uint8_t>((step.shadow ? unsigned{kShadowLight} : 0u) |
                                                (step.mirror ? unsigned{kShadowMirror} : 0u));
-    const uint8_t clear = trace_shadows(scene, kinds, shadow, &image);
+    const uint8_t clear = trace_shadows<kCode>(scene, kinds, shadow, &image);
     if (clear & kShadowLight) st.radiance += shadow.contribution;
     if (clear & kShadowMirror) st.radiance += image.to_mirror.contribution;
     if (!step.alive) return st.radiance;

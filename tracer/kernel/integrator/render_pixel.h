@@ -30,7 +30,7 @@ template <IntegratorKind kKind, uint32_t kFeatures = TRACER_KERNEL_FEATURES>
 TRACER_HD Vec3 render_sample_as(const SceneView& scene, uint32_t px, uint32_t py, uint32_t s, RayCounts& counts) {
   const Ray ray = sample_camera_ray(scene, px, py, s, counts);
   if constexpr (kKind == IntegratorKind::Whitted)
-    return whitted_radiance(scene, ray, counts);
+    return whitted_radiance<kFeatures>(scene, ray, counts);
   else if constexpr (kKind == IntegratorKind::Path)
     return path_radiance<kFeatures>(scene, ray, py * scene.settings.width + px, s, counts);
   else

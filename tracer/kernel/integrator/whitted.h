@@ -134,7 +134,10 @@ TRACER_HD_STEP void whitted_finish(const SceneView& scene, const WhittedVertex& 
 TRACER_HD uint32_t whitted_stack_size(uint32_t max_depth) { return max_depth + 2u; }
 
 // The megakernel: the whole sample in one call, each shadow ray traced where it is drawn.
+// kFeatures without cut-outs traces without the alpha test (trace_code.h).
+template <uint32_t kFeatures = TRACER_KERNEL_FEATURES>
 TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, RayCounts& counts) {
+  constexpr uint32_t kCode = full_trace_code<kFeatures>();
   WhittedTask stack[kMaxDepth + 2];
   int top = 0;
   stack[top++] = {camera_ray, {1.0f, 1.0f, 1.0f}, 0};
@@ -142,11 +145,11 @@ TRACER_HD Vec3 whitted_radiance(const SceneView& scene, const Ray& camera_ray, R
   while (top > 0) {
     const WhittedTask task = stack[--top];
     WhittedVertex v;
-    if (!whitted_begin(scene, task, trace_closest(scene, task.ray, kInfinity), v, radiance)) continue;
+    if (!whitted_begin(scene, task, trace_closest<kCode>(scene, task.ray, kInfinity), v, radiance)) continue;
     Ray shadow;
     float tmax;
     while (whitted_next_light(scene, v, shadow, tmax, counts))
-      if (!trace_any(scene, shadow, tmax)) whitted_add_light(scene, v);
+      if (!trace_any<kCode>(scene, shadow, tmax)) whitted_add_light(scene, v);
     whitted_finish(scene, v, radiance, stack, 1, top, counts);
   }
   return radiance;
