@@ -89,18 +89,21 @@ bool square_spp(const Scene& probe, const Knob& knob) {
   return knob.square_spp || (!knob.overrides.sampler && probe.settings.sampler == SamplerKind::Stratified);
 }
 
-// A knob's overrides at the budget's spp, its scene loaded once to check it: InputError naming
-// the knob when the scene cannot take it.
+// A knob's overrides at the budget's spp.
 RenderOverrides knob_overrides(const BenchTradeCommand& cmd, const RenderOverrides& base, const Scene& probe,
                                const Knob& knob) {
   RenderOverrides ov = combine(base, knob.overrides);
   ov.spp = square_spp(probe, knob) ? nearest_square(cmd.spp) : cmd.spp;
+  return ov;
+}
+
+// Loads the scene under a knob's overrides: InputError naming the knob when it cannot take them.
+void check_knob(const BenchTradeCommand& cmd, const RenderOverrides& base, const Scene& probe, const Knob& knob) {
   try {
-    load_scene(cmd.scene, ov);
+    load_scene(cmd.scene, knob_overrides(cmd, base, probe, knob));
   } catch (const InputError& e) {
     throw InputError("bench trade: knob " + std::string(knob.name) + " " + knob.setting + ": " + e.what());
   }
-  return ov;
 }
 
 }  // namespace
@@ -122,7 +125,7 @@ static int run_bench_trade(const BenchTradeCommand& cmd) {
   const std::vector<Knob> all = knobs(samples_environment(probe.background.kind), flat_mirrors);
   // Every knob's render is one the scene can make, checked before the reference renders (a
   // knob refused after 36 renders wasted them).
-  for (const Knob& knob : all) knob_overrides(cmd, base, probe, knob);
+  for (const Knob& knob : all) check_knob(cmd, base, probe, knob);
   std::printf("tracer bench trade %s: %ux%u, %u spp budget; seconds are the median of %d renders\n", cmd.scene.c_str(),
               probe.settings.width, probe.settings.height, cmd.spp, kRepeats);
   const Image ref = reference_image(cmd.scene, base, cmd.ref, cmd.ref_spp ? cmd.ref_spp : 16ull * cmd.spp, cmd.threads,
