@@ -124,8 +124,9 @@ TEST(Optics, FresnelAndRefractionStayFiniteOverTheAcceptedIndices) {
         }
         Vec3 t;
         float cos_t;
-        if (refract(incident(theta), n, eta, t, cos_t))
+        if (refract(incident(theta), n, eta, t, cos_t)) {
           EXPECT_NEAR(length(t), 1.0, 1e-5) << "eta " << eta << " theta " << theta;
+        }
       }
   for (const float eta : {0.01f, 0.2f, 1.0f, 100.0f})
     for (const float k : {0.0f, 0.01f, 3.0f, 1000.0f})

@@ -1,7 +1,8 @@
 // glTF textures (docs/gltf.md): the metallic-roughness texture scales the factors (G the
 // roughness, B the metallic) exactly: a white texture leaves the material as its factors, a
-// zero channel zeroes its factor; the base colour texture's texels are sRGB-decoded and
-// multiplied by the factor; the normal map's scale is baked into its texels; alphaMode MASK
+// zero channel zeroes its factor; the base colour texture's texels are sRGB-decoded and, once
+// filtered, multiplied by the factor, so one image under many tints is stored once; the normal
+// map's scale applies to the filtered normal; alphaMode MASK
 // cuts the quad out where its base colour texture's alpha is below the cutoff, BLEND of alpha
 // 0 leaves nothing to hit.
 #include <gtest/gtest.h>
@@ -98,20 +99,62 @@ TEST_F(GltfTextures, BaseColourTexelsAreDecodedAndMultipliedByTheFactor) {
   const Material& m = s.materials[0];
   ASSERT_NE(m.texture[kSlotAlbedo], kNoTexture);
   const Texture& t = s.textures[m.texture[kSlotAlbedo]];
-  EXPECT_EQ(s.texels[t.offset], 0.8f);  // 1 (sRGB 255) x the factor
-  EXPECT_EQ(s.texels[t.offset + 1], 0.6f);
-  EXPECT_EQ(s.texels[t.offset + 2], 0.4f);
+  EXPECT_EQ(s.texels[t.offset], 1.0f);  // sRGB 255
+  // 1 x the factor, wherever it is read.
+  for (const float u : {0.1f, 0.5f, 0.93f}) {
+    const Vec3 c = sample_texture(s.textures.data(), s.texels.data(), m.texture[kSlotAlbedo], u, 0.3f);
+    EXPECT_EQ(c, Vec3(0.8f, 0.6f, 0.4f));
+  }
+  EXPECT_EQ(m.albedo, Vec3(0.8f, 0.6f, 0.4f));  // the texture's mean
   // A white texture equals no texture, bit for bit.
   EXPECT_TRUE(same(render(textured_quad()), render(with_texture(textured_quad(), "baseColorTexture", "white.png"))));
 }
 
-TEST_F(GltfTextures, TheNormalMapsScaleIsBakedIntoItsTexels) {
+// 24 materials tint one image 24 ways: its texels are stored once, and each material reads
+// its own factor times the texel (a grey, its 8-bit sRGB value decoded).
+TEST_F(GltfTextures, OneImageUnderManyTintsIsStoredOnce) {
+  write_png("grey.png", {0.5f, 0.5f, 0.5f});
+  json doc = with_texture(textured_quad(), "baseColorTexture", "grey.png");
+  const json first = doc["materials"][0];
+  constexpr int kTints = 24;
+  doc["materials"] = json::array();
+  for (int i = 0; i < kTints; ++i) {
+    json m = first;
+    m["pbrMetallicRoughness"]["baseColorFactor"] = {1.0, i / 24.0, 0.25, 1.0};
+    doc["materials"].push_back(m);
+  }
+  doc["meshes"][0]["primitives"] = json::array();
+  for (int i = 0; i < kTints; ++i) {
+    doc["meshes"][0]["primitives"].push_back(
+        {{"attributes", {{"POSITION", 0}, {"TEXCOORD_0", 1}}}, {"indices", 2}, {"material", i}});
+  }
+  const Scene s = load_scene(test::write_gltf(dir_ / "t.gltf", doc));
+  EXPECT_EQ(s.texels.size(), 2u * 2u * 3u);
+  const float grey = s.texels[0];
+  EXPECT_NEAR(grey, 0.5f, 4e-3f);  // within the 8-bit sRGB step
+  size_t tinted = 0;
+  for (const Material& m : s.materials) {
+    if (m.texture[kSlotAlbedo] == kNoTexture) continue;
+    const Vec3 c = sample_texture(s.textures.data(), s.texels.data(), m.texture[kSlotAlbedo], 0.4f, 0.6f);
+    const Vec3 factor = s.textures[m.texture[kSlotAlbedo]].times;
+    EXPECT_EQ(factor.x, 1.0f);
+    EXPECT_EQ(factor.z, 0.25f);
+    EXPECT_EQ(c, grey * factor);
+    EXPECT_EQ(m.albedo, grey * factor);
+    ++tinted;
+  }
+  EXPECT_EQ(tinted, size_t{kTints});
+}
+
+TEST_F(GltfTextures, TheNormalMapsScaleAppliesToTheFilteredNormal) {
   write_png("tilted.png", {1, 0.5f, 1});  // x = +1 before the scale
   const Scene s =
       load_scene(test::write_gltf(dir_ / "t.gltf", with_texture(textured_quad(), "normalTexture", "tilted.png")));
-  const Texture& t = s.textures[s.materials[0].normal_map];
-  EXPECT_EQ(s.texels[t.offset], 0.75f);     // ((2 x 1 - 1) x 0.5 + 1) / 2
-  EXPECT_EQ(s.texels[t.offset + 2], 1.0f);  // z keeps its value
+  const uint32_t map = s.materials[0].normal_map;
+  EXPECT_EQ(s.texels[s.textures[map].offset], 1.0f);  // stored as decoded
+  const Vec3 c = sample_texture(s.textures.data(), s.texels.data(), map, 0.5f, 0.5f);
+  EXPECT_EQ(c.x, 0.75f);  // ((2 x 1 - 1) x 0.5 + 1) / 2
+  EXPECT_EQ(c.z, 1.0f);   // z keeps its value
 }
 
 // A 2 x 1 RGBA image: the left texel white and transparent, the right one white and opaque.
@@ -138,7 +181,9 @@ TEST_F(GltfTextures, AlphaModeMaskCutsTheQuadOutByTheBaseColoursAlpha) {
   const Texture& a = s.textures[m.alpha_map];
   EXPECT_EQ(s.texels[a.offset], 0.0f);
   EXPECT_EQ(s.texels[a.offset + 3], 1.0f);
-  EXPECT_EQ(s.texels[s.textures[m.texture[kSlotAlbedo]].offset + 3], 0.8f) << "the opaque texel's colour, straight";
+  // The opaque texel's colour is read straight (1, white), times the factor's 0.8.
+  EXPECT_EQ(s.texels[s.textures[m.texture[kSlotAlbedo]].offset + 3], 1.0f);
+  EXPECT_EQ(s.textures[m.texture[kSlotAlbedo]].times.x, 0.8f);
   const Image img = render(doc);
   const auto pixel = [&](uint32_t x, uint32_t y) { return img.rgb[3 * (size_t(y) * img.width + x)]; };
   EXPECT_EQ(pixel(5, 3), 1.0f) << "the open half shows the sky";
@@ -169,7 +214,8 @@ TEST_F(GltfTextures, AFilePlacedManyTimesStoresItsTexturesOnce) {
       << R"({"format": "tracer-scene/1", "camera": {"from": [0, 0, 5], "to": [0, 0, 0], "vfov": 40},
             "film": {"width": 4, "height": 3}, "materials": {}, "shapes": [)" +
              shapes + "]}";
-  const Scene once = load_scene(test::write_gltf(dir_ / "once.gltf", with_texture(textured_quad(), "baseColorTexture", "t.png")));
+  const Scene once =
+      load_scene(test::write_gltf(dir_ / "once.gltf", with_texture(textured_quad(), "baseColorTexture", "t.png")));
   const Scene placed = load_scene((dir_ / "placed.json").string());
   EXPECT_EQ(placed.textures.size(), once.textures.size());
   EXPECT_EQ(placed.texels.size(), once.texels.size());

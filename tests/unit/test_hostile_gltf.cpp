@@ -1,7 +1,8 @@
 // Hostile glTF files and images whose cost was out of proportion to their size: one external
 // file read once per buffer naming it, triangles of zero area escaping the triangle limit, a
 // quadratic list of the parts left out, image headers declaring more pixels than their data
-// can hold, a JPEG cut short accepted as grey, an undecodable data URI echoed whole.
+// can hold, a JPEG cut short accepted as grey, an undecodable data URI echoed whole, bare
+// nodes that the glTF reader holds in 456 bytes each.
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
@@ -10,6 +11,7 @@
 #include "hostile_input.h"
 #include "image/image_io.h"
 #include "sanitizer.h"
+#include "scene/gltf_reader_memory.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
@@ -93,6 +95,30 @@ TEST_F(HostileInput, AnUndecodableDataUriIsNamedByItsPath) {
     EXPECT_NE(what.find("buffers[0].uri: a data URI whose data does not decode"), std::string::npos)
         << what.substr(0, 1000);
   }
+}
+
+// Bare nodes cost the reader a struct each (sizeof(tinygltf::Node)), 20-50 times what the file
+// writes for them; a file whose bound passes half the memory limit is refused before the
+// reader runs, naming the array. Here a limit of 4 MB against 10,000 nodes (the bound: 10,000
+// x 456 x 3 bytes).
+TEST_F(HostileInput, ElementsTheReaderCannotHoldAreRefusedByTheirArray) {
+  json doc = test::triangle_gltf();
+  for (int i = 0; i < 10000; ++i) doc["nodes"].push_back(json::object());
+  const GltfReaderBytes bytes = gltf_reader_bytes(doc);
+  EXPECT_EQ(bytes.largest, "nodes");
+  EXPECT_EQ(bytes.largest_count, doc["nodes"].size());
+  EXPECT_GE(bytes.total, 10000u * 456u);
+  try {
+    check_gltf_reader_memory(doc, {4u << 20, "a test's limit"}, "many.gltf");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("many.gltf: nodes: 10002 elements"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("more than half of a test's limit"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(check_gltf_reader_memory(doc, {64u << 20, "a test's limit"}, "many.gltf"));
+  // A real file's bound: the Cornell box (two buffers' bytes and a few dozen elements).
+  const Json box = parse_json_text(test::read_file(test::source_path("scenes/gltf/cornell-box.gltf")), "box");
+  EXPECT_LT(gltf_reader_bytes(box).total, 1u << 20);
 }
 
 std::string encoded(const std::string& format) {

@@ -55,6 +55,12 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // 152 -> 144 and 176 -> 168 (Whitted's 12.5 % -> 18.75 % occupancy). With this change ptxas
     // spills more in two shadow variants at their 64-register cap: the binary tree's 0 -> 12
     // bytes, the 8-wide tree's 12 -> 72 (80 before this round's NaN-ray check).
+    // An image texture's times and plus (kernel/shading/texture.h, 2026-11-28: a use's factor
+    // applied after filtering, so one image under many tints is stored once) in every lookup:
+    // the stream's path shade stage 122 -> 128 and views' 46 -> 48, the sphere shadow stages
+    // 57-60 -> 61 (a mirror image's textured light), the closest-hit stage's spills 28 -> 36
+    // bytes (its alpha test, at the cap of 72); every kernel in its occupancy step, the
+    // megakernels unchanged.
     {"path_render_kernel",               156, 1120, 0, 0, 256},
     {"path_alpha_render_kernel",         160, 1120, 0, 0, 256},
     {"path_mirror_images_render_kernel", 193, 1120, 0, 0, 256},
@@ -75,20 +81,20 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // the stream schedule (cuda/gpu_stream.cu)
     {"begin_batch_kernel",                20,    0, 0, 0, 128},
     {"generate_stage_kernel",             24,    0, 0, 0, 128},
-    {"closest_hit_stage_kernel",          72,  608, 28, 0, 128},
+    {"closest_hit_stage_kernel",          72,  608, 36, 0, 128},
     // one register more for render.light_sampling's solid-angle branch, one for Russian
     // roulette's first-vertex throughput and five for spherical triangles (Arvo's sample), in
     // the same occupancy step (25 %); 43 more and a stack frame for mirror images (25 % -> 18.75 %);
     // three more when lights went through one dispatch (kernel/light/light.h: a light sample
     // carries its delta flag and emitter), one more for the materials' dispatch, in the same
     // occupancy step. Without mirror images' code 124 (25 %); with it 149 (18.75 %)
-    {"path_shade_stage_kernel",          122,  760, 0, 0, 128},
+    {"path_shade_stage_kernel",          128,  760, 0, 0, 128},
     {"path_mirror_images_shade_stage_kernel", 163, 760, 0, 0, 128},
     // Whitted and views: seven and one more for emission from any material (glTF's), the
     // normal map's bitangent sign and per-axis texture wrap; both within the 8-register
     // allocation step they were in (96 and 48), so occupancy is unchanged
     {"whitted_shade_stage_kernel",        96,    0, 0, 0, 128},
-    {"view_shade_stage_kernel",           46,    0, 0, 0, 128},
+    {"view_shade_stage_kernel",           48,    0, 0, 0, 128},
     {"shadow_any_hit_stage_kernel",       72,  576, 0, 0, 128},
     // the trace variants' stages (kernel/accel/trace_variants.h), held to 64 registers; each shadow
     // stage traces a mirror image's two ways too (trace_shadows: one traversal call site), two to
@@ -102,16 +108,16 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     {"closest_hit_wide_bvh_triangles_kernel", 64, 1104, 76, 0, 128},
     {"shadow_any_hit_wide_bvh_triangles_kernel", 64, 1120, 72, 0, 128},
     {"closest_hit_bvh_spheres_kernel",    50,  272, 0, 0, 128},
-    {"shadow_any_hit_bvh_spheres_kernel", 60,  272, 0, 0, 128},
+    {"shadow_any_hit_bvh_spheres_kernel", 61,  272, 0, 0, 128},
     {"closest_hit_kdtree_triangles_kernel", 64,  0, 0, 0, 128},
     {"shadow_any_hit_kdtree_triangles_kernel", 64, 0, 0, 0, 128},
     {"closest_hit_kdtree_spheres_kernel", 47,    0, 0, 0, 128},
-    {"shadow_any_hit_kdtree_spheres_kernel", 57,  0, 0, 0, 128},
+    {"shadow_any_hit_kdtree_spheres_kernel", 61,  0, 0, 0, 128},
     {"closest_hit_grid_triangles_kernel", 64,   32, 4, 0, 128},
     {"shadow_any_hit_grid_triangles_kernel", 63, 24, 0, 0, 128},  // +1: per-axis texture wrap (a mirror image's
                                                                    // textured light), in the same step of 8
     {"closest_hit_grid_spheres_kernel",   53,   24, 0, 0, 128},
-    {"shadow_any_hit_grid_spheres_kernel", 58,  24, 0, 0, 128},
+    {"shadow_any_hit_grid_spheres_kernel", 61,  24, 0, 0, 128},
     {"split_kernel",                      17,    0, 0, 0, 128},
     {"end_batch_kernel",                  28,    0, 0, 0, 128},
     // the LBVH build (cuda/lbvh_gpu.cu)

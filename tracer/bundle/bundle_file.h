@@ -17,7 +17,8 @@ namespace tracer {
 // 2: TriangleShading gained bitangent_sign; 3: Light gained its kind; 4: its direction, cone and disc.
 // 6: SceneView's environment cells by columns and rows; Background's equirectangular map.
 // 7: Material gained its cut-out (alpha_mode, alpha, alpha_cutoff, alpha_map).
-constexpr uint32_t kBundleVersion = 7;
+// 8: Texture gained times and plus (a use's factor, applied after filtering).
+constexpr uint32_t kBundleVersion = 8;
 constexpr uint64_t kBundleMaxBytes = 1ull << 30;  // what a reader accepts
 
 struct BundleSection {

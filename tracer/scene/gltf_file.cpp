@@ -12,6 +12,7 @@
 #include "io/json_reader.h"
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_normalize.h"
+#include "scene/gltf_reader_memory.h"
 #include "scene/gltf_schema.h"
 
 namespace tracer {
@@ -203,6 +204,8 @@ GltfFile read_gltf_file(const std::string& bytes, const std::string& path) {
   check_gltf_schema(root, path);
   check_external_uris(root, path);
   const NormalizedGltf normalized_json = normalize_gltf_json(root, binary, path);
+  static const MemoryLimit limit = memory_limit();
+  check_gltf_reader_memory(root, limit, path);
   const std::string normalized = binary ? glb_with_json(bytes, root.dump(), path) : root.dump();
   std::error_code ec;
   Confinement confinement;

@@ -85,6 +85,27 @@ void GltfMaterials::ignore(const std::string& what) {
   if (ignored_seen_.insert(what).second) ignored_.push_back(what);
 }
 
+uint32_t GltfMaterials::texels(int source, Decode decode, const std::string& path) {
+  const auto key = std::make_pair(source, static_cast<int>(decode));
+  if (const auto known = texels_.find(key); known != texels_.end()) return known->second;
+  auto image = images_.find(source);
+  if (image == images_.end()) image = images_.emplace(source, decode_gltf_image(file_, source, path)).first;
+  const ImagePixels& pixels = image->second;
+  const uint32_t offset = static_cast<uint32_t>(scene_.texels.size());
+  const bool srgb = decode == Decode::Colour && !pixels.float_format;
+  for (size_t p = 0; p < size_t{pixels.width} * pixels.height; ++p)
+    for (int c = 0; c < 3; ++c) {
+      float v = decode == Decode::Alpha ? (pixels.channels_read == 4 ? pixels.values[p * 4 + 3] : 1.0f)
+                                        : pixels.values[p * pixels.channels_read + (pixels.channels_read < 3 ? 0 : c)];
+      if (!std::isfinite(v)) fail(file_, path, "its image holds a texel that is not finite");
+      if (srgb) v = srgb_to_linear(v);
+      if (decode == Decode::Colour) v = std::max(v, 0.0f);
+      scene_.texels.push_back(v);
+    }
+  texels_.emplace(key, offset);
+  return offset;
+}
+
 GltfMaterials::Baked GltfMaterials::texture(int index, int tex_coord, Bake bake, Vec3 factor, const std::string& use) {
   if (index < 0 || static_cast<size_t>(index) >= file_.model.textures.size())
     fail(file_, use + ".index",
@@ -98,12 +119,7 @@ GltfMaterials::Baked GltfMaterials::texture(int index, int tex_coord, Bake bake,
   const tinygltf::Texture& t = file_.model.textures[index];
   const std::string path = "textures[" + std::to_string(index) + "]";
   if (t.source < 0) fail(file_, path + ".source", "missing: the texture names no image");
-  auto image = images_.find(t.source);
-  if (image == images_.end()) image = images_.emplace(t.source, decode_gltf_image(file_, t.source, path)).first;
-  const ImagePixels& pixels = image->second;
-  Texture tex{};
-  tex.kind = TextureKind::Image;
-  tex.wrap_u = tex.wrap_v = TextureWrap::Repeat;
+  TextureWrap wrap_u = TextureWrap::Repeat, wrap_v = TextureWrap::Repeat;
   if (t.sampler >= 0) {
     if (static_cast<size_t>(t.sampler) >= file_.model.samplers.size())
       fail(file_, path + ".sampler",
@@ -115,28 +131,27 @@ GltfMaterials::Baked GltfMaterials::texture(int index, int tex_coord, Bake bake,
              : mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT ? TextureWrap::Mirror
                                                              : TextureWrap::Repeat;
     };
-    tex.wrap_u = wrap(s.wrapS);
-    tex.wrap_v = wrap(s.wrapT);
+    wrap_u = wrap(s.wrapS);
+    wrap_v = wrap(s.wrapT);
   }
-  tex.width = pixels.width;
-  tex.height = pixels.height;
-  tex.offset = static_cast<uint32_t>(scene_.texels.size());
-  const bool srgb = bake == Bake::SrgbTimes && !pixels.float_format;
-  const float factors[3] = {factor.x, factor.y, factor.z};
+  // Each image's texels once per decoding; each use's factor applied after filtering.
+  const Decode decode = bake == Bake::SrgbTimes ? Decode::Colour : bake == Bake::Alpha ? Decode::Alpha : Decode::Data;
+  const uint32_t offset = texels(t.source, decode, path);
+  const ImagePixels& pixels = images_.at(t.source);
+  Texture tex = image_texture(pixels.width, pixels.height, offset, wrap_u, wrap_v);
+  if (bake == Bake::SrgbTimes) tex.times = factor;
+  // The normal map's scale multiplies x and y of the unpacked normal 2c - 1 (glTF 2.0, 3.9.3):
+  // c s + (1 - s) / 2.
+  if (bake == Bake::LinearNormal && factor.x != 1.0f) {
+    tex.times = {factor.x, factor.x, 1.0f};
+    tex.plus = {(1.0f - factor.x) * 0.5f, (1.0f - factor.x) * 0.5f, 0.0f};
+  }
+  // The mean of the values the kernel reads at texel centres: a textured colour's stand-in.
   double sum[3] = {0, 0, 0};
-  for (size_t p = 0; p < size_t{pixels.width} * pixels.height; ++p)
-    for (int c = 0; c < 3; ++c) {
-      float v = bake == Bake::Alpha ? (pixels.channels_read == 4 ? pixels.values[p * 4 + 3] : 1.0f)
-                                    : pixels.values[p * pixels.channels_read + (pixels.channels_read < 3 ? 0 : c)];
-      if (!std::isfinite(v)) fail(file_, path, "its image holds a texel that is not finite");
-      if (srgb) v = srgb_to_linear(v);
-      if (bake == Bake::SrgbTimes) v = std::max(v, 0.0f) * factors[c];
-      // The normal map's scale multiplies x and y of the unpacked normal (glTF 2.0, 3.9.3).
-      if (bake == Bake::LinearNormal && c < 2 && factors[0] != 1.0f) v = ((v * 2.0f - 1.0f) * factors[0] + 1.0f) * 0.5f;
-      scene_.texels.push_back(v);
-      sum[c] += v;
-    }
-  const double n = double(pixels.width) * pixels.height;
+  const size_t count = size_t{pixels.width} * pixels.height;
+  for (size_t p = 0; p < count; ++p)
+    for (int c = 0; c < 3; ++c) sum[c] += scene_.texels[offset + p * 3 + c] * tex.times[c] + tex.plus[c];
+  const double n = static_cast<double>(count);
   const Baked baked{static_cast<uint32_t>(scene_.textures.size()),
                     {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)}};
   scene_.textures.push_back(tex);

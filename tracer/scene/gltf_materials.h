@@ -2,8 +2,9 @@
 // (glTF 2.0 appendix B) with KHR_materials_ior and KHR_materials_transmission (and, with
 // KHR_materials_specular factor 0 on a dielectric, Lambert's diffuse surface); a material
 // that emits (emissiveFactor x KHR_materials_emissive_strength) becomes an emissive area
-// light. Textures are baked into the scene's texels with their factors multiplied in (the
-// kernel's textures replace a colour): base colour and emission sRGB-decoded, the normal map
+// light. Each image's texels are stored once per decoding (colour: sRGB-decoded; data; alpha),
+// and each use is a texture over them with its factor applied after filtering (the kernel's
+// textures replace a colour): base colour and emission times their factors, the normal map
 // with its scale, metallicRoughnessTexture as the material's factor map. KHR_texture_transform
 // is baked into the mesh's uvs (GltfUvTransform), so it must be one per material.
 #pragma once
@@ -43,9 +44,13 @@ class GltfMaterials {
     uint32_t texture;
     Vec3 mean;
   };
-  // texels = bake(decoded texel) of the texture glTF's `textures[index]` names.
-  enum class Bake { SrgbTimes, LinearNormal, Linear, Alpha };  // Alpha: the image's alpha channel
+  // How a use reads the texture glTF's `textures[index]` names: a colour times `factor`, a
+  // normal map of scale factor.x, data as it is, the alpha channel.
+  enum class Bake { SrgbTimes, LinearNormal, Linear, Alpha };
   Baked texture(int index, int tex_coord, Bake bake, Vec3 factor, const std::string& use);
+  // The offset of image `source`'s texels decoded so, stored on first use.
+  enum class Decode { Colour, Data, Alpha };
+  uint32_t texels(int source, Decode decode, const std::string& path);
   void ignore(const std::string& what);
   Material convert(const tinygltf::Material& m, const std::string& path, GltfUvTransform& uv);
 
@@ -53,6 +58,7 @@ class GltfMaterials {
   Scene& scene_;
   std::map<int, std::pair<uint32_t, GltfUvTransform>> materials_;
   std::map<std::tuple<int, int, float, float, float>, Baked> textures_;
+  std::map<std::pair<int, int>, uint32_t> texels_;
   std::map<int, ImagePixels> images_;
   std::vector<std::string> ignored_;
   std::unordered_set<std::string> ignored_seen_;

@@ -134,13 +134,8 @@ uint32_t TextureLoader::image(const std::string& where, const std::string& path,
   if (channels != 1 && channels != 3 && channels != 4)
     fail_at(scene_file, where, path + ": expected 1, 3 or 4 channels, got " + std::to_string(channels));
   const bool srgb = !data && !pixels.float_format;
-  Texture t{};
-  t.kind = TextureKind::Image;
-  t.wrap_u = wrap_u;
-  t.wrap_v = wrap_v;
-  t.width = pixels.width;
-  t.height = pixels.height;
-  t.offset = static_cast<uint32_t>(scene_.texels.size());
+  const Texture t =
+      image_texture(pixels.width, pixels.height, static_cast<uint32_t>(scene_.texels.size()), wrap_u, wrap_v);
   double sum[3] = {0, 0, 0};
   for (size_t p = 0; p < size_t{pixels.width} * pixels.height; ++p)
     for (int c = 0; c < 3; ++c) {

@@ -18,10 +18,24 @@ struct Texture {
   TextureKind kind;
   TextureWrap wrap_u, wrap_v;  // along u (the image's x) and v (its y)
   uint32_t width, height;
-  uint32_t offset;  // image: its texels start at texels[offset], 3 floats each, row by row
-  Vec3 even, odd;   // checker: colour where floor(u s) + floor(v s) is even / odd
-  float scale;      // checker: squares per unit of u and v
+  uint32_t offset;   // image: its texels start at texels[offset], 3 floats each, row by row
+  Vec3 times, plus;  // image: its filtered value times `times` plus `plus`, so images tinted or
+                     // scaled differently share their texels (glTF's factors, a normal map's scale)
+  Vec3 even, odd;    // checker: colour where floor(u s) + floor(v s) is even / odd
+  float scale;       // checker: squares per unit of u and v
 };
+
+// An image texture of width x height texels from texels[offset], read as they are.
+TRACER_HD Texture image_texture(uint32_t width, uint32_t height, uint32_t offset, TextureWrap wrap_u,
+                                TextureWrap wrap_v) {
+  Texture t{};
+  t.kind = TextureKind::Image;
+  t.wrap_u = wrap_u, t.wrap_v = wrap_v;
+  t.width = width, t.height = height;
+  t.offset = offset;
+  t.times = {1.0f, 1.0f, 1.0f};
+  return t;
+}
 
 // The bilinear filter's texel index, in [-1, n] once its coordinate is wrapped into [0, 1]:
 // past an edge, repeat reads the opposite edge; clamp and mirror read the edge texel itself
@@ -49,8 +63,9 @@ TRACER_HD float wrap_coordinate(float c, TextureWrap wrap) {
   return f > 1.0f ? 2.0f - f : f;
 }
 
-// Bilinear filter as two linear interpolations along x, then one along y, each a + (b - a) f:
-// a constant texture returns its value exactly, and a texel centre (f = 0) its texel.
+// Bilinear filter as two linear interpolations along x, then one along y, each a + (b - a) f,
+// then the image's times and plus: a constant texture returns its value exactly, and a texel
+// centre (f = 0) its texel, each times 1 plus 0 unless the texture says otherwise.
 TRACER_HD Vec3 sample_texture(const Texture* textures, const float* texels, uint32_t index, float u, float v) {
   const Texture& t = textures[index];
   if (t.kind == TextureKind::Checker) {
@@ -70,7 +85,7 @@ TRACER_HD Vec3 sample_texture(const Texture* textures, const float* texels, uint
   const Vec3 t00 = texel_at(texels, t, ix, iy), t10 = texel_at(texels, t, ix + 1, iy);
   const Vec3 t01 = texel_at(texels, t, ix, iy + 1), t11 = texel_at(texels, t, ix + 1, iy + 1);
   const Vec3 top = t00 + (t10 - t00) * fx, bottom = t01 + (t11 - t01) * fx;
-  return top + (bottom - top) * fy;
+  return (top + (bottom - top) * fy) * t.times + t.plus;
 }
 
 }  // namespace tracer
