@@ -26,6 +26,8 @@ struct LobeHistory {
 
 }  // namespace
 
+const char* path_estimator_name(PathEstimator e) { return kEstimatorNames[static_cast<uint32_t>(e)]; }
+
 uint32_t path_class(PathEstimator estimator, uint32_t vertices, const VertexLobe* last_two) {
   const uint32_t bounce = vertices < kSplitBounceClasses ? vertices : kSplitBounceClasses - 1;
   const uint32_t a = static_cast<uint32_t>(last_two[0]), b = static_cast<uint32_t>(last_two[1]);
@@ -41,7 +43,7 @@ uint32_t path_class_vertices(uint32_t c) { return c / kSplitLobeCodes % kSplitBo
 
 std::string path_class_name(uint32_t c) {
   const uint32_t vertices = path_class_vertices(c), lobes = c % kSplitLobeCodes;
-  std::string name = std::string(kEstimatorNames[static_cast<uint32_t>(path_class_estimator(c))]) + ", " +
+  std::string name = std::string(path_estimator_name(path_class_estimator(c))) + ", " +
                      std::to_string(vertices) + (vertices == kSplitBounceClasses - 1 ? "+" : "") + " vertices";
   if (lobes >= 4) name += std::string(", ") + kLobeNames[(lobes - 4) / 3] + " > " + kLobeNames[(lobes - 4) % 3];
   if (lobes >= 1 && lobes < 4) name += std::string(", ") + kLobeNames[lobes - 1];

@@ -27,6 +27,7 @@ constexpr uint32_t kPathClasses = static_cast<uint32_t>(PathEstimator::kCount) *
 // A class's index below kPathClasses, and its name ("light sample, 2 vertices, diffuse > specular").
 uint32_t path_class(PathEstimator estimator, uint32_t vertices, const VertexLobe* last_two);
 std::string path_class_name(uint32_t path_class);
+const char* path_estimator_name(PathEstimator estimator);  // "light sample"
 PathEstimator path_class_estimator(uint32_t path_class);
 uint32_t path_class_vertices(uint32_t path_class);  // 4 stands for four or more
 

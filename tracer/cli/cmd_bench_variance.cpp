@@ -113,8 +113,7 @@ static int run_bench_variance(const BenchVarianceCommand& cmd) {
     double l = 0, se = 0;
     for (const ClassError& ce : classes)
       if (static_cast<uint32_t>(path_class_estimator(ce.path_class)) == e) l += ce.light, se += ce.squared_error;
-    const char* names[] = {"emission hit", "escape", "light sample", "mirror image"};
-    print_row(names[e], l, light, se / n, class_error / n);
+    print_row(path_estimator_name(static_cast<PathEstimator>(e)), l, light, se / n, class_error / n);
   }
   std::printf("\nby vertices before the light\n");
   for (uint32_t v = 0; v < kSplitBounceClasses; ++v) {
