@@ -43,8 +43,8 @@ uint32_t path_class_vertices(uint32_t c) { return c / kSplitLobeCodes % kSplitBo
 
 std::string path_class_name(uint32_t c) {
   const uint32_t vertices = path_class_vertices(c), lobes = c % kSplitLobeCodes;
-  std::string name = std::string(path_estimator_name(path_class_estimator(c))) + ", " +
-                     std::to_string(vertices) + (vertices == kSplitBounceClasses - 1 ? "+" : "") + " vertices";
+  std::string name = std::string(path_estimator_name(path_class_estimator(c))) + ", " + std::to_string(vertices) +
+                     (vertices == kSplitBounceClasses - 1 ? "+" : "") + " vertices";
   if (lobes >= 4) name += std::string(", ") + kLobeNames[(lobes - 4) / 3] + " > " + kLobeNames[(lobes - 4) % 3];
   if (lobes >= 1 && lobes < 4) name += std::string(", ") + kLobeNames[lobes - 1];
   return name;
