@@ -104,5 +104,22 @@ TEST(VarianceSplit, ClassNamesSayWhatTheyHold) {
   EXPECT_EQ(path_class_name(path_class(PathEstimator::MirrorImage, 0, ds)), "mirror image, 0 vertices");
 }
 
+// What the command refuses, exit 2 naming the key: a Whitted scene (nothing to split), a
+// reference of no more samples than the measurement.
+TEST(VarianceSplit, TheCommandRefusesWhatItCannotSplit) {
+  std::string out;
+  EXPECT_EQ(
+      test::run_tracer("bench variance " + test::source_path("scenes/cornell-box.json") + " --spp 1 --ref-spp 2", &out),
+      2);
+  EXPECT_NE(out.find("cornell-box.json: render.integrator: bench variance splits the path integrator"),
+            std::string::npos)
+      << out;
+  EXPECT_EQ(test::run_tracer("bench variance " + test::source_path("scenes/cornell-box-path.json") +
+                                 " --spp 16 --ref-spp 16 --width 4 --height 3",
+                             &out),
+            2);
+  EXPECT_NE(out.find("--ref-spp 16: must exceed --spp"), std::string::npos) << out;
+}
+
 }  // namespace
 }  // namespace tracer
