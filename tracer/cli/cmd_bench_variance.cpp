@@ -48,19 +48,18 @@ void print_row(const std::string& name, double light, double total_light, double
 }  // namespace
 
 static int run_bench_variance(const BenchVarianceCommand& cmd) {
+  if (cmd.ref_spp <= cmd.spp) throw InputError("--ref-spp " + std::to_string(cmd.ref_spp) + ": must exceed --spp");
   RenderOverrides ov;
   if (cmd.width) ov.width = cmd.width;
   if (cmd.height) ov.height = cmd.height;
   const Scene scene = load_scene(cmd.scene, ov);
   if (scene.settings.integrator != IntegratorKind::Path)
     throw InputError(cmd.scene + ": render.integrator: bench variance splits the path integrator's samples");
-  if (cmd.ref_spp <= cmd.spp) throw InputError("--ref-spp " + std::to_string(cmd.ref_spp) + ": must exceed --spp");
   const SceneView view = scene.view();
   SceneView ref_view = view;
   ref_view.settings.seed = view.settings.seed ^ 0x5eed5eed5eed5eedull;  // an independent reference
-  const int threads = cmd.threads > 0 ? cmd.threads : 0;
-  const SplitImages measured = render_split_with_bar(view, cmd.spp, threads, "measured");
-  const SplitImages reference = render_split_with_bar(ref_view, cmd.ref_spp, threads, "reference");
+  const SplitImages measured = render_split_with_bar(view, cmd.spp, cmd.threads, "measured");
+  const SplitImages reference = render_split_with_bar(ref_view, cmd.ref_spp, cmd.threads, "reference");
   const size_t floats = size_t{measured.width} * measured.height * 3;
   std::vector<double> total_estimate(floats, 0.0), total_reference(floats, 0.0);
   std::vector<ClassError> classes;

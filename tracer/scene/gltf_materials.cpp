@@ -146,14 +146,17 @@ GltfMaterials::Baked GltfMaterials::texture(int index, int tex_coord, Bake bake,
     tex.times = {factor.x, factor.x, 1.0f};
     tex.plus = {(1.0f - factor.x) * 0.5f, (1.0f - factor.x) * 0.5f, 0.0f};
   }
-  // The mean of the values the kernel reads at texel centres: a textured colour's stand-in.
-  double sum[3] = {0, 0, 0};
-  const size_t count = size_t{pixels.width} * pixels.height;
-  for (size_t p = 0; p < count; ++p)
-    for (int c = 0; c < 3; ++c) sum[c] += scene_.texels[offset + p * 3 + c] * tex.times[c] + tex.plus[c];
-  const double n = static_cast<double>(count);
-  const Baked baked{static_cast<uint32_t>(scene_.textures.size()),
-                    {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)}};
+  // A colour's mean at texel centres, its stand-in where the material keeps one colour (the
+  // other uses read the texture alone).
+  Baked baked{static_cast<uint32_t>(scene_.textures.size()), factor};
+  if (bake == Bake::SrgbTimes) {
+    double sum[3] = {0, 0, 0};
+    const size_t count = size_t{pixels.width} * pixels.height;
+    for (size_t p = 0; p < count; ++p)
+      for (int c = 0; c < 3; ++c) sum[c] += scene_.texels[offset + p * 3 + c] * tex.times[c];
+    const double n = static_cast<double>(count);
+    baked.mean = {float(sum[0] / n), float(sum[1] / n), float(sum[2] / n)};
+  }
   scene_.textures.push_back(tex);
   scene_.features |= kFeatureTextures;
   scene_.report.used_types.insert(bake == Bake::SrgbTimes      ? "texture:image"

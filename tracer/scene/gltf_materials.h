@@ -42,7 +42,7 @@ class GltfMaterials {
  private:
   struct Baked {
     uint32_t texture;
-    Vec3 mean;
+    Vec3 mean;  // a colour's mean texel times its factor; other uses: the factor
   };
   // How a use reads the texture glTF's `textures[index]` names: a colour times `factor`, a
   // normal map of scale factor.x, data as it is, the alpha channel.
