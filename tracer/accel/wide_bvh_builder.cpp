@@ -60,17 +60,19 @@ class WideBvhCollapser {
   // Makes the wide node for binary interior node `b`; returns its index.
   uint32_t collapse_node(uint32_t b) {
     uint32_t children[kWideBvhWidth] = {binary_[b].first, binary_[b].first + 1};
+    float areas[kWideBvhWidth];  // an interior child's area; -1 for a leaf, never expanded
+    const auto area_of = [&](uint32_t c) { return binary_[c].count == 0 ? area(binary_[c]) : -1.0f; };
+    areas[0] = area_of(children[0]), areas[1] = area_of(children[1]);
     int count = 2;
     while (count < kWideBvhWidth) {
       int widest = -1;
       for (int i = 0; i < count; ++i)
-        if (binary_[children[i]].count == 0 &&
-            (widest < 0 || area(binary_[children[i]]) > area(binary_[children[widest]])))
-          widest = i;
+        if (areas[i] >= 0.0f && (widest < 0 || areas[i] > areas[widest])) widest = i;
       if (widest < 0) break;
       const uint32_t first = binary_[children[widest]].first;
-      children[widest] = first;
-      children[count++] = first + 1;
+      children[widest] = first, areas[widest] = area_of(first);
+      children[count] = first + 1, areas[count] = area_of(first + 1);
+      ++count;
     }
     const uint32_t index = static_cast<uint32_t>(wide_.nodes.size());
     wide_.nodes.push_back(empty_node());
