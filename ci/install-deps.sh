@@ -12,6 +12,7 @@ build_packages=(
   libglm-dev                              # the kernel's vectors and matrices
   nlohmann-json3-dev                      # scene files
   libcli11-dev                            # the command line
+  libcpp-httplib-dev pkg-config          # tracer view's HTTP server (found through pkg-config)
   libgtest-dev                            # the test suite (configuring the build asks for it)
   git                                     # the commit `tracer --version` names; golden update's check for uncommitted edits
 )

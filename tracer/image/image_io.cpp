@@ -39,7 +39,7 @@ bool is_float_format(const std::string& path) {
 // OpenImageIO encodes into memory and our own writer puts the bytes on disk: its file writers
 // report success when a write fails as the file is closed (OpenEXR on a full disk), which would
 // rename an empty file over the old image.
-void add_image(OutputBatch& batch, const Image& image, const std::string& path) {
+std::string encode_image(const Image& image, const std::string& path) {
   if (std::filesystem::path(path).extension().empty())
     throw InputError(path + ": output needs a file extension (.exr, .png, ...)");
   auto out = OIIO::ImageOutput::create(path);
@@ -65,7 +65,11 @@ void add_image(OutputBatch& batch, const Image& image, const std::string& path) 
   ok = out->close() && ok;
   if (!ok) throw InputError(path + ": cannot encode image: " + out->geterror());
   const std::vector<unsigned char>& encoded = memory.buffer();
-  batch.add(path, std::string(encoded.begin(), encoded.end()));
+  return std::string(encoded.begin(), encoded.end());
+}
+
+void add_image(OutputBatch& batch, const Image& image, const std::string& path) {
+  batch.add(path, encode_image(image, path));
 }
 
 void write_image(const Image& image, const std::string& path) {

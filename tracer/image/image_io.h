@@ -35,6 +35,8 @@ ImagePixels read_image_pixels(const std::string& path, int max_channels_read, in
 ImagePixels read_image_pixels_from_memory(const std::vector<unsigned char>& bytes, const std::string& format,
                                           const std::string& name, int max_channels_read);
 
+// The bytes of the file `path` would hold: the format from its extension, as add_image writes it.
+std::string encode_image(const Image& image, const std::string& path);
 void add_image(OutputBatch& batch, const Image& image, const std::string& path);  // written on commit
 void write_image(const Image& image, const std::string& path);                    // a batch of one
 Image read_image(const std::string& path);  // RGB float; InputError when unreadable

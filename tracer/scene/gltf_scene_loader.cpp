@@ -121,6 +121,7 @@ Scene load_gltf_scene(const std::string& bytes, const std::string& path, const R
   CameraSpec spec =
       camera ? camera->spec : framing_camera(scene, double(scene.settings.width) / double(scene.settings.height));
   spec.focus_distance = length(spec.to - spec.from);
+  scene.camera_spec = spec;
   scene.camera = make_camera(spec, scene.settings.width, scene.settings.height);
 
   // A white sky of radiance 1 lights it as a viewer's neutral environment does, whatever

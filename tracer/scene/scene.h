@@ -8,6 +8,7 @@
 
 #include "accel/accel_summary.h"
 #include "options/render_options.h"
+#include "scene/camera_setup.h"
 #include "scene/scene_arrays.h"
 
 namespace tracer {
@@ -38,6 +39,7 @@ struct Scene : SceneArrays {
   Background background{};
   Vec3 ambient{0.0f, 0.0f, 0.0f};
   Camera camera{};
+  CameraSpec camera_spec{};  // the look-at description `camera` was made from
   RenderSettings settings{};
   uint32_t features = 0;
   LoadReport report;

@@ -80,6 +80,7 @@ Scene load_scene_unguarded(const std::string& text, const std::string& path, con
                      ": for glTF files; a JSON scene has its own camera and background keys");
   scene.settings = read_settings(top.find("render"), top.get("film"), path, overrides, scene.report.used_types);
   const CameraSpec camera = read_camera_spec(top.get("camera"), path);
+  scene.camera_spec = camera;
   scene.camera = make_camera(camera, scene.settings.width, scene.settings.height);
   if (camera.aperture > 0.0f) scene.features |= kFeatureThinLens;
   TextureLoader textures(scene, std::filesystem::path(path).parent_path().string());
@@ -147,6 +148,12 @@ void finish_scene(Scene& scene, const RenderOverrides& overrides) {
   scene.report.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - build_start).count();
 }
 
+void place_camera(Scene& scene, const CameraSpec& spec) {
+  scene.camera_spec = spec;
+  scene.camera = make_camera(spec, scene.settings.width, scene.settings.height);
+  scene.offset_scale = ray_offset_scale(scene);
+}
+
 Scene load_scene_text(const std::string& text, const std::string& path, const RenderOverrides& overrides) {
   return naming_file_when_out_of_memory(path, "loading the scene, its meshes and textures and building its accelerator",
                                         [&] {
@@ -161,9 +168,10 @@ Scene load_scene(const std::string& path, const RenderOverrides& overrides) {
 }
 
 std::vector<std::string> feature_names(uint32_t features) {
-  static const char* names[] = {"sphere",    "plane",           "triangle", "quad",       "lambert",
-                                "metal",     "dielectric",      "phong",    "emissive",   "declared-lights",
-                                "thin-lens", "shading-normals", "textures", "microfacet", "mirror-images", "alpha"};
+  static const char* names[] = {"sphere",   "plane",           "triangle",      "quad",
+                                "lambert",  "metal",           "dielectric",    "phong",
+                                "emissive", "declared-lights", "thin-lens",     "shading-normals",
+                                "textures", "microfacet",      "mirror-images", "alpha"};
   std::vector<std::string> out;
   for (uint32_t i = 0; i < sizeof names / sizeof names[0]; ++i)
     if (features & (1u << i)) out.push_back(names[i]);

@@ -22,6 +22,10 @@ Scene load_gltf_scene(const std::string& bytes, const std::string& path, const R
 // table and the acceleration structure.
 void finish_scene(Scene& scene, const RenderOverrides& overrides);
 
+// Places the camera as loading does: the kernel camera from `spec` at the film's size, and
+// the ray offset scale, which counts the camera's position. For a camera moved after loading.
+void place_camera(Scene& scene, const CameraSpec& spec);
+
 // Names of feature bits set in a mask, for `tracer info` and the stats file.
 std::vector<std::string> feature_names(uint32_t features);
 
