@@ -1,7 +1,7 @@
 // The source folders' layers (README, "Layout"): a file of tracer/F includes headers of F and
 // of the folders below it only, and kernel code includes kernel headers only (it compiles for
 // CUDA). Lowest first: kernel, io, options, accel, image, scene, bundle, render, then the tools
-// (golden, bench, audit, cluster), then cli.
+// (golden, bench, audit, cluster, view), then cli.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 const std::map<std::string, int> kLayer = {{"kernel", 0}, {"io", 1},      {"options", 2}, {"accel", 3},  {"image", 4},
                                            {"scene", 5},  {"bundle", 6},  {"render", 7},  {"golden", 8}, {"bench", 8},
-                                           {"audit", 8},  {"cluster", 8}, {"cli", 9}};
+                                           {"audit", 8},  {"cluster", 8}, {"view", 8}, {"cli", 9}};
 
 // Every `#include "FOLDER/..."` of the files under tracer/, as (file, its folder, included folder).
 struct Include {

@@ -85,6 +85,21 @@ function walk(key) {
   return true;
 }
 
+// #drag-check, for a headless browser: once the first frame has all its samples, drag across
+// it through the page's own handlers; when a finished frame shows another camera, mark the page.
+const check = location.hash === "#drag-check" ? { first: null } : null;
+function dragCheck(st) {
+  if (!check || st.preview || st.spp !== st.target_spp) return;
+  if (check.first === null) {
+    check.first = JSON.stringify(st.camera);
+    const r = canvas.getBoundingClientRect();
+    const at = (type, x) => canvas.dispatchEvent(new MouseEvent(type, { clientX: r.left + x, clientY: r.top + 10, bubbles: true }));
+    at("mousedown", 10); at("mousemove", 50); at("mouseup", 50);
+  } else if (JSON.stringify(st.camera) !== check.first) {
+    document.body.dataset.check = "camera moved";
+  }
+}
+
 let drag = null;
 canvas.addEventListener("contextmenu", (e) => e.preventDefault());
 canvas.addEventListener("mousedown", (e) => { if (cam) { drag = { x: e.clientX, y: e.clientY, pan: e.button === 2 || e.shiftKey }; interacting = true; } });
@@ -133,6 +148,7 @@ async function poll() {
       shown = st.frame;
       canvas.dataset.frame = st.frame;
       canvas.dataset.camera = JSON.stringify(st.camera);
+      dragCheck(st);
     }
   } catch (e) { say("viewer unreachable: " + e.message); }
   setTimeout(poll, 100);

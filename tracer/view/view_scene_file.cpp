@@ -4,18 +4,24 @@
 #include <nlohmann/json.hpp>
 
 #include "io/input_error.h"
+#include "options/number_text.h"
 #include "options/render_options.h"
 
 namespace tracer {
 namespace {
 
-Json vec3_json(Vec3 v) { return Json::array({v.x, v.y, v.z}); }  // floats widen to doubles exactly
+// Each float as the shortest decimal that reads back to it (1.2, not 1.2000000476837158).
+Json vec3_json(Vec3 v) { return Json::array({shortest_decimal(v.x), shortest_decimal(v.y), shortest_decimal(v.z)}); }
 
 }  // namespace
 
 Json camera_block(const CameraSpec& camera) {
-  return {{"from", vec3_json(camera.from)}, {"to", vec3_json(camera.to)},  {"up", vec3_json(camera.up)},
-          {"vfov", camera.vfov_degrees},    {"aperture", camera.aperture}, {"focus_distance", camera.focus_distance}};
+  return {{"from", vec3_json(camera.from)},
+          {"to", vec3_json(camera.to)},
+          {"up", vec3_json(camera.up)},
+          {"vfov", shortest_decimal(camera.vfov_degrees)},
+          {"aperture", shortest_decimal(camera.aperture)},
+          {"focus_distance", shortest_decimal(camera.focus_distance)}};
 }
 
 std::string camera_block_text(const CameraSpec& camera) { return "\"camera\": " + camera_block(camera).dump(); }

@@ -1,0 +1,193 @@
+// `tracer view` as a client sees it: the token, Host and Origin checks, 4xx for bad requests, a
+// camera move making a new frame, and the saved scene rendering the viewer's image bit for bit.
+#include <gtest/gtest.h>
+#include <httplib.h>
+
+#include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "image/image_io.h"
+#include "render/render_cpu.h"
+#include "scene/scene_loader.h"
+#include "test_util.h"
+#include "view/view_server.h"
+#include "view/view_session.h"
+
+namespace tracer {
+namespace {
+
+using nlohmann::json;
+
+const char* kScene = R"({
+  "format": "tracer-scene/1",
+  "camera": {"from": [0, 0.05, 0.2], "to": [0, 0.025, 0], "vfov": 45},
+  "film": {"width": 48, "height": 36},
+  "render": {"integrator": "path", "spp": 4, "sampler": "sobol", "max_depth": 4},
+  "background": {"type": "constant", "radiance": [0.2, 0.2, 0.3]},
+  "materials": {"white": {"type": "lambert", "albedo": [0.7, 0.7, 0.7]},
+                "lamp": {"type": "emissive", "radiance": [8, 8, 8]}},
+  "shapes": [
+    {"type": "quad", "material": "white", "corner": [-0.15, 0, 0.15], "u": [0.3, 0, 0], "v": [0, 0, -0.3]},
+    {"type": "sphere", "center": [0, 0.025, 0], "radius": 0.025, "material": "white"},
+    {"type": "quad", "material": "lamp", "corner": [-0.025, 0.125, -0.025], "u": [0.05, 0, 0], "v": [0, 0, 0.05]}
+  ]
+})";
+
+class View : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = test::temp_dir("view");
+    scene_path_ = (dir_ / "scene.json").string();
+    std::ofstream(scene_path_) << kScene;
+    ViewOptions options;
+    options.scene_path = scene_path_;
+    options.scene_text = kScene;
+    options.threads = 1;
+    options.save_prefix = (dir_ / "scene-view").string();
+    session_ = std::make_unique<ViewSession>(options);
+    server_ = std::make_unique<ViewServer>(*session_, "127.0.0.1", 0);
+    session_->start();
+    serving_ = std::thread([this] { server_->serve(); });
+    client_ = std::make_unique<httplib::Client>("127.0.0.1", server_->port());
+    client_->set_read_timeout(60, 0);
+  }
+  void TearDown() override {
+    server_->stop();
+    serving_.join();
+    session_->stop();
+    std::filesystem::remove_all(dir_);
+  }
+  std::string with_token(const std::string& path) const { return path + "?token=" + server_->token(); }
+  json state() {
+    const auto res = client_->Get(with_token("/state").c_str());
+    EXPECT_TRUE(res && res->status == 200);
+    return res ? json::parse(res->body) : json{};
+  }
+  // Polls the state until `done` holds (at most 60 s).
+  json wait_for(const std::function<bool(const json&)>& done) {
+    for (int i = 0; i < 600; ++i) {
+      const json s = state();
+      if (done(s)) return s;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    ADD_FAILURE() << "the viewer did not get there in 60 s: " << state().dump();
+    return state();
+  }
+  int post(const std::string& path, const std::string& body, std::string* reply = nullptr) {
+    const auto res = client_->Post(with_token(path).c_str(), body, "application/json");
+    if (reply && res) *reply = res->body;
+    return res ? res->status : -1;
+  }
+
+  std::filesystem::path dir_;
+  std::string scene_path_;
+  std::unique_ptr<ViewSession> session_;
+  std::unique_ptr<ViewServer> server_;
+  std::thread serving_;
+  std::unique_ptr<httplib::Client> client_;
+};
+
+const json kMoved = {{"from", {0.075, 0.06, 0.15}}, {"to", {0.0, 0.02, 0.0}}, {"up", {0, 1, 0}}, {"vfov", 40}};
+// Far enough that the scene with the camera grows past half a unit: the ray offset scale, which
+// counts the camera's position, doubles from 0.5 to 1 (kernel/geom/ray_offset.h).
+const json kFar = {{"from", {0.1, 0.15, 0.5}}, {"to", {0.0, 0.02, 0.0}}, {"up", {0, 1, 0}}, {"vfov", 40}};
+
+TEST_F(View, EveryRequestNeedsTheTokenAndThisServersHostAndOrigin) {
+  EXPECT_EQ(client_->Get("/state")->status, 403);
+  EXPECT_EQ(client_->Get("/?token=0123")->status, 403);
+  EXPECT_EQ(client_->Get(("/?token=" + server_->token() + "x").c_str())->status, 403);
+  EXPECT_EQ(client_->Get(with_token("/").c_str())->status, 200);
+  const std::string port = std::to_string(server_->port());
+  EXPECT_EQ(client_->Get(with_token("/state").c_str(), {{"Host", "attacker.example:" + port}})->status, 403)
+      << "a DNS name rebound to 127.0.0.1 is not this viewer";
+  EXPECT_EQ(client_->Get(with_token("/state").c_str(), {{"Origin", "http://attacker.example"}})->status, 403);
+  EXPECT_EQ(client_->Get(with_token("/state").c_str(), {{"Origin", "http://127.0.0.1:" + port}})->status, 200);
+  EXPECT_EQ(client_->Get(with_token("/state").c_str(), {{"Host", "localhost:" + port}})->status, 200);
+}
+
+TEST_F(View, BadRequestsGet4xxWithAMessage) {
+  std::string reply;
+  EXPECT_EQ(post("/camera", "{not json", &reply), 400);
+  EXPECT_NE(reply.find("not JSON"), std::string::npos) << reply;
+  EXPECT_EQ(post("/camera", R"({"camera": {"from": [0, 1, 4], "vfov": 45}})", &reply), 400);
+  EXPECT_NE(reply.find("to"), std::string::npos) << reply;
+  EXPECT_EQ(post("/camera", R"({"camera": {"from": [0, 1, 4], "to": [0, 1, 4], "vfov": 45}})"), 400);
+  EXPECT_EQ(post("/camera", R"({"camera": {"from": [0, 1, 4], "to": [0, 0, 0], "vfov": 200}})"), 400);
+  EXPECT_EQ(post("/camera", R"({"camera": {"from": [0, 1e999, 4], "to": [0, 0, 0], "vfov": 40}})"), 400);
+  EXPECT_EQ(post("/settings", R"({"spp": "many"})", &reply), 400);
+  EXPECT_NE(reply.find("spp"), std::string::npos) << reply;
+  EXPECT_EQ(post("/settings", R"({"integrator": "raymarch"})"), 400);
+  EXPECT_EQ(post("/settings", R"({"max_depth": 3})"), 400) << "the viewer sets integrator and spp only";
+  EXPECT_EQ(post("/camera", std::string(100000, ' ')), 413);
+  EXPECT_EQ(client_->Get(with_token("/scene.json").c_str())->status, 404) << "no request reaches a file";
+  EXPECT_EQ(state()["camera"]["from"], json({0.0, 0.05, 0.2})) << "a refused request changed the camera";
+}
+
+TEST_F(View, ACameraMoveMakesANewFrameWithThatCamera) {
+  const json first = wait_for([](const json& s) { return s["spp"] == 4 && !s["preview"].get<bool>(); });
+  ASSERT_EQ(post("/camera", json{{"camera", kMoved}, {"moving", true}}.dump()), 200);
+  const json moving = wait_for([&](const json& s) { return s["frame"] > first["frame"] && s["preview"].get<bool>(); });
+  EXPECT_EQ(moving["camera"]["from"], kMoved["from"]);
+  EXPECT_EQ(moving["width"], 12) << "a moving camera is drawn at a quarter of the size";
+  ASSERT_EQ(post("/camera", json{{"camera", kMoved}, {"moving", false}}.dump()), 200);
+  const json rest = wait_for([](const json& s) { return s["spp"] == 4 && !s["preview"].get<bool>(); });
+  EXPECT_EQ(rest["camera"]["from"], kMoved["from"]);
+  EXPECT_EQ(rest["width"], 48);
+  const auto frame = client_->Get(with_token("/frame").c_str());
+  ASSERT_TRUE(frame && frame->status == 200);
+  EXPECT_EQ(frame->get_header_value("Content-Type"), "image/png");
+  const ImagePixels png = read_image_pixels_from_memory(
+      std::vector<unsigned char>(frame->body.begin(), frame->body.end()), "png", "frame", 3);
+  EXPECT_EQ(png.width, 48u);
+  EXPECT_EQ(png.height, 36u);
+}
+
+// Item 2 of the viewer's promise: the frame of camera C at N samples is `tracer render`'s image
+// of the saved scene (camera C, spp N), bit for bit.
+TEST_F(View, TheSavedSceneRendersTheViewersImageBitForBit) {
+  ASSERT_EQ(post("/settings", R"({"spp": 3})"), 200);
+  ASSERT_EQ(post("/camera", json{{"camera", kFar}, {"moving", false}}.dump()), 200);
+  wait_for([](const json& s) {
+    return s["spp"] == 3 && s["target_spp"] == 3 && !s["preview"].get<bool>() && s["camera"]["vfov"] == 40.0;
+  });
+  std::string reply;
+  ASSERT_EQ(post("/save", "{}", &reply), 200) << reply;
+  const json files = json::parse(reply)["files"];
+  ASSERT_EQ(files.size(), 3u);
+  const std::string exr = files[0], saved_scene = files[2];
+  const Scene scene = load_scene(saved_scene);
+  EXPECT_EQ(scene.settings.spp, 3u);
+  EXPECT_EQ(scene.offset_scale, 1.0f);
+  RenderStats stats;
+  const Image rendered = render_cpu(scene, 1, stats);
+  const Image viewed = read_image(exr);
+  ASSERT_EQ(rendered.rgb.size(), viewed.rgb.size());
+  EXPECT_TRUE(rendered.rgb == viewed.rgb) << "the saved scene renders another image than the viewer showed";
+  // And a second save never overwrites the first.
+  ASSERT_EQ(post("/save", "{}", &reply), 200) << reply;
+  EXPECT_NE(json::parse(reply)["files"][0], exr);
+}
+
+// The page in headless Chromium: it shows a frame, a drag over it moves the camera through the
+// page's own mouse handlers (its #drag-check), and a finished frame shows the moved camera.
+TEST_F(View, ThePageInABrowserShowsAFrameAndADragMovesTheCamera) {
+  if (test::run_command("command -v chromium") != 0)
+    GTEST_SKIP() << "chromium is not installed; ci/install-deps.sh installs it";
+  const std::string url =
+      "http://127.0.0.1:" + std::to_string(server_->port()) + "/?token=" + server_->token() + "#drag-check";
+  std::string dom;
+  ASSERT_EQ(test::run_command("timeout 120 chromium --headless --no-sandbox --disable-gpu --user-data-dir=" +
+                                  (dir_ / "profile").string() + " --virtual-time-budget=30000 --dump-dom '" + url +
+                                  "' 2>/dev/null",
+                              &dom),
+            0);
+  EXPECT_NE(dom.find("data-frame="), std::string::npos) << "the page never drew a frame:\n" << dom.substr(0, 2000);
+  EXPECT_NE(dom.find("data-check=\"camera moved\""), std::string::npos) << "the drag did not move the camera:\n"
+                                                                        << dom.substr(0, 2000);
+  EXPECT_NE(state()["camera"]["from"], json({0.0, 0.05, 0.2})) << "the server's camera did not move";
+}
+
+}  // namespace
+}  // namespace tracer
