@@ -1,7 +1,11 @@
 // `tracer view` as a client sees it: the token, Host and Origin checks, 4xx for bad requests, a
 // camera move making a new frame, and the saved scene rendering the viewer's image bit for bit.
+#include <arpa/inet.h>
 #include <gtest/gtest.h>
 #include <httplib.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <fstream>
@@ -187,6 +191,57 @@ TEST_F(View, ThePageInABrowserShowsAFrameAndADragMovesTheCamera) {
   EXPECT_NE(dom.find("data-check=\"camera moved\""), std::string::npos) << "the drag did not move the camera:\n"
                                                                         << dom.substr(0, 2000);
   EXPECT_NE(state()["camera"]["from"], json({0.0, 0.05, 0.2})) << "the server's camera did not move";
+}
+
+// Clients that connect and never finish a request (more of them than the server has workers)
+// cannot stall the render, and once their read timeout drops them the page is served again.
+TEST_F(View, StalledClientsNeitherStallTheRenderNorKeepThePageAway) {
+  const uint64_t before = session_->frame().id;
+  std::vector<int> sockets;
+  for (int i = 0; i < 8; ++i) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<uint16_t>(server_->port()));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    const char partial[] = "GET /state?token=";
+    ASSERT_GT(::send(fd, partial, sizeof partial - 1, 0), 0);
+    sockets.push_back(fd);
+  }
+  session_->set_option("spp", "64");  // work for the render while the clients hang
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  EXPECT_GT(session_->frame().id, before) << "the render waited for the clients";
+  const json s = wait_for([](const json& st) { return st["target_spp"] == 64; });  // served once they time out
+  EXPECT_EQ(s["target_spp"], 64);
+  for (const int fd : sockets) ::close(fd);
+}
+
+// The command as a user runs it: the URL on stdout, Ctrl-C (SIGINT) ends it with status 0; and
+// what it cannot serve is refused with exit 2 naming the file or option, before it listens.
+TEST_F(View, TheCommandPrintsItsUrlStopsOnCtrlCAndRefusesBadInput) {
+  const std::string tracer = TRACER_BINARY, out = (dir_ / "url.txt").string();
+  std::string output;
+  EXPECT_EQ(test::run_command("timeout 60 sh -c '" + tracer + " view " + scene_path_ + " --threads 1 > " + out +
+                                  " & pid=$!; sleep 2; kill -INT $pid; wait $pid'",
+                              &output),
+            0)
+      << output;
+  std::ifstream url_file(out);
+  std::string url;
+  std::getline(url_file, url);
+  EXPECT_EQ(url.rfind("http://127.0.0.1:", 0), 0u) << url;
+  EXPECT_NE(url.find("/?token="), std::string::npos) << url;
+  EXPECT_EQ(test::run_tracer("view " + (dir_ / "missing.json").string(), &output), 2);
+  EXPECT_NE(output.find("missing.json"), std::string::npos) << output;
+  EXPECT_EQ(test::run_tracer("view " + scene_path_ + " --port 70000", &output), 2);
+  EXPECT_NE(output.find("--port"), std::string::npos) << output;
+  EXPECT_EQ(test::run_tracer("view " + scene_path_ + " --save-prefix /nonexistent-dir/x", &output), 2);
+  EXPECT_NE(output.find("--save-prefix"), std::string::npos) << output;
+  EXPECT_EQ(test::run_tracer("view " + scene_path_ + " --noise-threshold 0.1", &output), 2);
+  EXPECT_NE(output.find("noise_threshold"), std::string::npos) << output;
+  EXPECT_EQ(test::run_tracer("view " + scene_path_ + " --samples 0:2", &output), 2);
+  EXPECT_NE(output.find("--samples"), std::string::npos) << output;
 }
 
 }  // namespace
