@@ -36,7 +36,7 @@ class Mutant:
         self.name, self.feature, self.file = name, "", ""
         self.sample = False
         self.equivalent = ""  # why it is unbiased; its own test must kill it
-        self.guard = ""  # why no golden shows it (it guards input no golden holds); its own test must kill it
+        self.guard = ""  # why no golden shows it (input no golden holds, code no golden runs); its own test must kill it
         self.killer = ""  # for an equivalent or guard mutant: the ctest -R pattern of its test
         self.first = ""  # tests run before the rest (ctest -R): those that killed it before
         self.before, self.after = [], []
