@@ -50,6 +50,7 @@ ViewSession::ViewSession(ViewOptions options) : options_(std::move(options)) {
                      ": noise_threshold, target_error: the viewer refines every pixel alike; set them off (0) "
                      "or use tracer render");
   full_width_ = scene_.settings.width, full_height_ = scene_.settings.height;
+  scene_camera_ = scene_.camera_spec;
   request_.camera = scene_.camera_spec;
   request_.overrides = options_.overrides;
   frame_.target_spp = scene_.settings.spp;
@@ -75,7 +76,7 @@ void ViewSession::stop() {
 void ViewSession::move_camera(const CameraSpec& camera, bool moving) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    request_.camera = with_lens_of(scene_.camera_spec, camera);
+    request_.camera = with_lens_of(scene_camera_, camera);
     request_.moving = moving;
     ++request_.generation;
   }
@@ -222,7 +223,15 @@ void ViewSession::run() {
         preview ? SampleRange{0, 1} : SampleRange{done, std::min(scene_.settings.spp, done + batch)};
     RenderStats stats;
     const auto start = Clock::now();
-    FilmBuffer part = render_range(range, stats);
+    FilmBuffer part;
+    try {
+      part = render_range(range, stats);
+    } catch (const std::exception& e) {  // the page shows why; the next request tries again
+      std::lock_guard<std::mutex> lock(mutex_);
+      frame_.error = e.what();
+      done = scene_.settings.spp, preview_shown = true;
+      continue;
+    }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     if (preview) {
       preview_shown = true;

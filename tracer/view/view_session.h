@@ -73,7 +73,8 @@ class ViewSession {
   std::vector<std::string> write_saved(const FilmBuffer& film, uint32_t spp) const;
 
   ViewOptions options_;
-  Scene scene_;  // the render thread's alone once started
+  Scene scene_;                // the render thread's alone once started
+  CameraSpec scene_camera_{};  // the scene file's camera, whose lens a moved camera keeps
   uint32_t full_width_ = 0, full_height_ = 0;
 
   mutable std::mutex mutex_;
