@@ -61,18 +61,10 @@ static int run_merge(const MergeCommand& cmd) {
   total.range = {0, spp};
   uint64_t nonfinite = 0, overflow = 0;
   for (size_t k = 1; k < parts.size(); ++k) {
-    const FilmBuffer& f = parts[k].second.film;
-    for (size_t i = 0; i < total.pixels.size(); ++i) {
-      FilmSum& s = total.pixels[i];
-      for (int c = 0; c < 3; ++c) {
-        s.rgb[c] += f.pixels[i].rgb[c];  // each part below 2^62 in magnitude: no int64 overflow for two
-        if (s.rgb[c] > kFilmSumLimit || s.rgb[c] < -kFilmSumLimit)
-          throw InputError(parts[k].first + ": pixel " + std::to_string(i) +
-                           " overflows the film when the parts are added; render fewer, brighter-clamped samples");
-      }
-      s.nonfinite += f.pixels[i].nonfinite;
-      s.overflow += f.pixels[i].overflow;
-    }
+    const size_t overflowing = add_film_sums(total, parts[k].second.film);
+    if (overflowing < total.pixels.size())
+      throw InputError(parts[k].first + ": pixel " + std::to_string(overflowing) +
+                       " overflows the film when the parts are added; render fewer, brighter-clamped samples");
   }
   for (const FilmSum& s : total.pixels) nonfinite += s.nonfinite, overflow += s.overflow;
   naming_file_when_out_of_memory(cmd.output, "writing the merged image",

@@ -2,9 +2,9 @@
 
 #include <cstring>
 
-#include "io/sha1.h"
 #include "io/input_error.h"
 #include "io/out_of_memory.h"
+#include "io/sha1.h"
 #include "io/text_file.h"
 #include "options/number_text.h"
 #include "options/work_limits.h"
@@ -109,6 +109,20 @@ SampleRange parse_sample_range(const std::string& text, uint32_t spp) {
   if (!a || !b) throw bad("expected A:B, each " + count_range(0, UINT32_MAX));
   if (!(*a < *b && *b <= spp)) throw bad("expected 0 <= A < B <= spp (" + std::to_string(spp) + ")");
   return {static_cast<uint32_t>(*a), static_cast<uint32_t>(*b)};
+}
+
+size_t add_film_sums(FilmBuffer& total, const FilmBuffer& part) {
+  for (size_t i = 0; i < total.pixels.size(); ++i) {
+    FilmSum& s = total.pixels[i];
+    for (int c = 0; c < 3; ++c) {
+      const int64_t sum = s.rgb[c] + part.pixels[i].rgb[c];  // each below 2^62 in magnitude: no int64 overflow
+      if (sum > kFilmSumLimit || sum < -kFilmSumLimit) return i;
+    }
+    for (int c = 0; c < 3; ++c) s.rgb[c] += part.pixels[i].rgb[c];
+    s.nonfinite += part.pixels[i].nonfinite;
+    s.overflow += part.pixels[i].overflow;
+  }
+  return total.pixels.size();
 }
 
 }  // namespace tracer

@@ -31,6 +31,11 @@ struct Partial {
 std::string encode_partial(const Partial& partial);  // the file's bytes
 Partial read_partial(const std::string& path);       // InputError naming the file
 
+// Adds part's film sums into total's (the same size), pixel by pixel, as `tracer merge` adds
+// parts and the viewer its passes. Returns the first pixel whose sum would leave the film's
+// range (kFilmSumLimit), stopping there, or total.pixels.size() when every pixel fits.
+size_t add_film_sums(FilmBuffer& total, const FilmBuffer& part);
+
 // "A:B" with 0 <= A < B <= spp.
 SampleRange parse_sample_range(const std::string& text, uint32_t spp);
 

@@ -9,6 +9,7 @@
 #include "io/input_error.h"
 #include "io/output_batch.h"
 #include "options/enum_names.h"
+#include "render/partial_file.h"
 #include "render/render_adaptive.h"
 #include "render/render_cuda.h"
 #include "scene/gltf_file.h"
@@ -21,16 +22,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr double kPassSeconds = 0.25;    // a refining pass takes about this long, then a frame is shown
 constexpr uint32_t kPreviewDivisor = 4;  // a moving camera is drawn at a quarter of the width and height
-
-void add_into(FilmBuffer& total, const FilmBuffer& part) {
-  for (size_t i = 0; i < total.pixels.size(); ++i) {
-    FilmSum& s = total.pixels[i];
-    for (int c = 0; c < 3; ++c) s.rgb[c] += part.pixels[i].rgb[c];  // each part below 2^62: no overflow
-    s.nonfinite += part.pixels[i].nonfinite;
-    s.overflow += part.pixels[i].overflow;
-  }
-  total.range.end = part.range.end;
-}
 
 // The camera a moved look-at keeps: the scene's lens, focused at the new target unless the
 // scene focused elsewhere.
@@ -167,6 +158,7 @@ void ViewSession::run() {
   uint32_t done = 0;
   uint64_t generation = UINT64_MAX, reload = 0;
   bool preview_shown = false;
+  bool stopped = false;             // this camera's image refines no further: a pass failed
   double seconds_per_sample = 0.0;  // of the last refining pass
   for (;;) {
     Request request;
@@ -175,7 +167,7 @@ void ViewSession::run() {
       std::unique_lock<std::mutex> lock(mutex_);
       wake_.wait(lock, [&] {
         return stopping_ || !saves_.empty() || request_.generation != generation ||
-               (!request_.moving && done < scene_.settings.spp) || (request_.moving && !preview_shown);
+               (!request_.moving && !stopped && done < scene_.settings.spp) || (request_.moving && !preview_shown);
       });
       if (stopping_) {
         for (auto& s : saves_) s.set_exception(std::make_exception_ptr(InputError("the viewer is stopping")));
@@ -207,14 +199,14 @@ void ViewSession::run() {
     }
     if (request.generation != generation) {
       generation = request.generation;
-      done = 0, preview_shown = false;
+      done = 0, preview_shown = false, stopped = false;
     }
     const bool preview = request.moving;
     if (preview && preview_shown) continue;
     scene_.settings.width = preview ? std::max(1u, full_width_ / kPreviewDivisor) : full_width_;
     scene_.settings.height = preview ? std::max(1u, full_height_ / kPreviewDivisor) : full_height_;
     place_camera(scene_, request.camera);
-    if (!preview && done >= scene_.settings.spp) continue;
+    if (!preview && (stopped || done >= scene_.settings.spp)) continue;
     // One sample first, then as many as fill a pass of about kPassSeconds.
     uint32_t batch = 1;
     if (!preview && done > 0 && seconds_per_sample > 0.0)
@@ -229,7 +221,7 @@ void ViewSession::run() {
     } catch (const std::exception& e) {  // the page shows why; the next request tries again
       std::lock_guard<std::mutex> lock(mutex_);
       frame_.error = e.what();
-      done = scene_.settings.spp, preview_shown = true;
+      stopped = preview_shown = true;
       continue;
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -239,10 +231,16 @@ void ViewSession::run() {
       continue;
     }
     seconds_per_sample = seconds / (range.end - range.begin);
-    if (done == 0)
+    if (done == 0) {
       film = std::move(part);
-    else
-      add_into(film, part);
+    } else if (const size_t pixel = add_film_sums(film, part); pixel < film.pixels.size()) {
+      std::lock_guard<std::mutex> lock(mutex_);
+      frame_.error = "pixel " + std::to_string(pixel) + " would pass the film's range with samples [" +
+                     std::to_string(range.begin) + ", " + std::to_string(range.end) + "): the image stops at " +
+                     std::to_string(done) + " samples";
+      stopped = true;
+      continue;
+    }
     done = range.end;
     publish(film, done, false, seconds, stats);
   }
