@@ -8,6 +8,7 @@
 #include <random>
 
 #include "kernel/base/film.h"
+#include "render/partial_file.h"
 
 using namespace tracer;
 
@@ -61,4 +62,20 @@ TEST(Film, ARejectedSampleAddsToNoChannelAndIsCounted) {
   EXPECT_FALSE(film_add(sum, {1.0f, 1.0f, 1.0f}));
   EXPECT_EQ(sum.rgb[0], before.rgb[0]);
   EXPECT_EQ(sum.overflow, 2u);
+}
+
+// Parts' sums add exactly, counts included, and a pixel whose sum would leave the film's range
+// stops the addition there, that pixel and those after it untouched (merge and the viewer).
+TEST(Film, PartsAddExactlyAndAnOverflowingPixelStopsTheAddition) {
+  FilmBuffer total{2, 1, {0, 3}, {FilmSum{{5, -7, 1}, 1u, 0u}, FilmSum{{kFilmSumLimit - 1, 0, 0}, 0u, 0u}}};
+  const FilmBuffer part{2, 1, {3, 4}, {FilmSum{{10, 7, -1}, 0u, 2u}, FilmSum{{1, 0, 0}, 0u, 0u}}};
+  EXPECT_EQ(add_film_sums(total, part), 2u);
+  EXPECT_EQ(total.pixels[0].rgb[0], 15);
+  EXPECT_EQ(total.pixels[0].rgb[1], 0);
+  EXPECT_EQ(total.pixels[0].rgb[2], 0);
+  EXPECT_EQ(total.pixels[0].nonfinite, 1u);
+  EXPECT_EQ(total.pixels[0].overflow, 2u);
+  EXPECT_EQ(total.pixels[1].rgb[0], kFilmSumLimit);
+  EXPECT_EQ(add_film_sums(total, part), 1u) << "kFilmSumLimit + 1 is past the range";
+  EXPECT_EQ(total.pixels[1].rgb[0], kFilmSumLimit) << "the overflowing pixel was changed";
 }
