@@ -111,6 +111,23 @@ TEST_F(View, EveryRequestNeedsTheTokenAndThisServersHostAndOrigin) {
   EXPECT_EQ(client_->Get(with_token("/state").c_str(), {{"Host", "localhost:" + port}})->status, 200);
 }
 
+// Listening on every address (--bind 0.0.0.0) the machine's names are unknown: any Host on the
+// port passes, an Origin only when it is the Host's own, and the token is still required.
+TEST_F(View, OnEveryAddressAnyHostPassesButOnlyItsOwnOriginAndTheToken) {
+  ViewServer wide(*session_, "0.0.0.0", 0);
+  std::thread serving([&] { wide.serve(); });
+  httplib::Client client("127.0.0.1", wide.port());
+  const std::string host = "render-box.example:" + std::to_string(wide.port());
+  const std::string state = "/state?token=" + wide.token();
+  EXPECT_EQ(client.Get(state.c_str(), {{"Host", host}})->status, 200);
+  EXPECT_EQ(client.Get(state.c_str(), {{"Host", host}, {"Origin", "http://" + host}})->status, 200);
+  EXPECT_EQ(client.Get(state.c_str(), {{"Host", host}, {"Origin", "http://attacker.example"}})->status, 403);
+  EXPECT_EQ(client.Get(state.c_str(), {{"Host", "render-box.example:1"}})->status, 403);
+  EXPECT_EQ(client.Get("/state", {{"Host", host}})->status, 403);
+  wide.stop();
+  serving.join();
+}
+
 TEST_F(View, BadRequestsGet4xxWithAMessage) {
   std::string reply;
   EXPECT_EQ(post("/camera", "{not json", &reply), 400);

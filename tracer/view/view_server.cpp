@@ -4,8 +4,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cstdio>
 #include <random>
+#include <thread>
 
 #include "io/input_error.h"
 #include "view/view_page.h"
@@ -140,6 +142,11 @@ std::string ViewServer::url() const {
 
 bool ViewServer::allowed(const std::string& host_header, const std::string& origin_header) const {
   const std::string port = ":" + std::to_string(port_);
+  // Listening on every address, the machine's names are not known: any Host on this port, and
+  // the page's own origin; the token is then what keeps a rebound name out.
+  if (address_ == "0.0.0.0" || address_ == "::")
+    return host_header.size() > port.size() && host_header.ends_with(port) &&
+           (origin_header.empty() || origin_header == "http://" + host_header);
   const std::string names[] = {"127.0.0.1" + port, "localhost" + port, "[::1]" + port,
                                (address_.find(':') != std::string::npos ? "[" + address_ + "]" : address_) + port};
   bool host_ok = false, origin_ok = origin_header.empty();
@@ -147,10 +154,21 @@ bool ViewServer::allowed(const std::string& host_header, const std::string& orig
   return host_ok && origin_ok;
 }
 
-void ViewServer::serve() { server_->listen_after_bind(); }
+void ViewServer::serve() {
+  serving_ = true;
+  if (!stop_requested_) server_->listen_after_bind();
+  serving_ = false;
+}
 
+// httplib's stop() does nothing before the listening loop has started, so a stop that comes
+// first is seen by serve() instead, and one that comes while it starts waits until it can stop it.
 void ViewServer::stop() {
-  if (server_) server_->stop();
+  stop_requested_ = true;
+  bool stopped = false;
+  while (serving_) {
+    if (!stopped && server_->is_running()) server_->stop(), stopped = true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
 }
 
 }  // namespace tracer

@@ -3,6 +3,7 @@
 // and in its Origin header when it has one (a page of another site, or a DNS name rebound to
 // this address, is refused); no request names a file. Bad requests get 4xx with a message.
 #pragma once
+#include <atomic>
 #include <memory>
 #include <string>
 
@@ -23,7 +24,7 @@ class ViewServer {
   const std::string& token() const { return token_; }
   std::string url() const;  // http://ADDRESS:PORT/?token=TOKEN
   void serve();             // until stop(); from one thread
-  void stop();
+  void stop();              // from any thread, before, during or after serve()
 
  private:
   bool allowed(const std::string& host_header, const std::string& origin_header) const;
@@ -32,6 +33,7 @@ class ViewServer {
   std::string address_, token_;
   int port_ = 0;
   std::unique_ptr<httplib::Server> server_;
+  std::atomic<bool> serving_{false}, stop_requested_{false};
 };
 
 // 128 random bits from the system's generator, as 32 hex digits.
