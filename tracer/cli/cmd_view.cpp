@@ -74,6 +74,9 @@ int run_view(const ViewCommand& cmd) {
                "tracer view: open the URL above (from another machine: ssh -L %d:127.0.0.1:%d HOST, then the same "
                "URL); Ctrl-C stops\n",
                server.port(), server.port());
+  if (cmd.bind == "0.0.0.0" || cmd.bind == "::")
+    std::fprintf(stderr, "tracer view: listening on every address: put this machine's name in the URL in place of %s\n",
+                 cmd.bind.c_str());
   while (!stop_requested) std::this_thread::sleep_for(std::chrono::milliseconds(100));
   server.stop();
   serving.join();
