@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <thread>
@@ -148,6 +149,8 @@ TEST_F(View, BadRequestsGet4xxWithAMessage) {
 
 TEST_F(View, ACameraMoveMakesANewFrameWithThatCamera) {
   const json first = wait_for([](const json& s) { return s["spp"] == 4 && !s["preview"].get<bool>(); });
+  // The page's unit of movement: the diagonal of the floor (0.3 x 0.3) and the lamp above it (0.125 up).
+  EXPECT_NEAR(first["scene_size"].get<double>(), std::sqrt(0.3 * 0.3 * 2 + 0.125 * 0.125), 1e-5);
   ASSERT_EQ(post("/camera", json{{"camera", kMoved}, {"moving", true}}.dump()), 200);
   const json moving = wait_for([&](const json& s) { return s["frame"] > first["frame"] && s["preview"].get<bool>(); });
   EXPECT_EQ(moving["camera"]["from"], kMoved["from"]);

@@ -4,7 +4,8 @@ namespace tracer {
 
 // Drag: orbit about the target; right-drag or shift-drag: pan; wheel: dolly; W/S forward and
 // back, A/D left and right, Q/E down and up. Moves post {"moving": true}; 250 ms after the
-// last one the camera is posted at rest and the image refines at full size.
+// last one the camera is posted at rest and the image refines at full size. Pan and walk steps
+// follow the distance to the target, at least a tenth of the scene's size.
 const char* view_page_html() {
   return R"PAGE(<!doctype html>
 <html><head><meta charset="utf-8"><title>tracer view</title>
@@ -30,7 +31,7 @@ body { margin: 0; background: #202020; color: #ddd; font: 13px sans-serif; }
 const q = "?token=" + encodeURIComponent(new URLSearchParams(location.search).get("token") || "");
 const canvas = document.getElementById("view"), ctx = canvas.getContext("2d");
 const $ = (id) => document.getElementById(id);
-let cam = null, shown = 0, interacting = false, sending = false, queued = null, restTimer = null;
+let cam = null, shown = 0, interacting = false, sending = false, queued = null, restTimer = null, sceneSize = 0;
 
 const add = (a, b) => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
 const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
@@ -70,15 +71,18 @@ function orbit(dx, dy) {
   if (Math.abs(dot(norm(pitched), up)) < 0.995) offset = pitched;
   cam.from = add(cam.to, offset);
 }
+// Steps scale with the distance to the target, but never below a tenth of the scene's size: a
+// camera whose target is just ahead of it (a glTF camera's) still crosses the scene.
+const reach = () => Math.max(Math.hypot(...sub(cam.from, cam.to)), 0.1 * sceneSize);
 function pan(dx, dy) {
   const forward = norm(sub(cam.to, cam.from)), right = norm(cross(forward, cam.up)), up = cross(right, forward);
-  const r = Math.hypot(...sub(cam.from, cam.to)) * 0.002;
+  const r = reach() * 0.002;
   const d = add(mul(right, -dx * r), mul(up, dy * r));
   cam.from = add(cam.from, d); cam.to = add(cam.to, d);
 }
 function walk(key) {
   const forward = norm(sub(cam.to, cam.from)), right = norm(cross(forward, cam.up)), up = norm(cam.up);
-  const step = Math.hypot(...sub(cam.from, cam.to)) * 0.05;
+  const step = reach() * 0.05;
   const d = { w: forward, s: mul(forward, -1), d: right, a: mul(right, -1), e: up, q: mul(up, -1) }[key];
   if (!d) return false;
   cam.from = add(cam.from, mul(d, step)); cam.to = add(cam.to, mul(d, step));
@@ -132,6 +136,7 @@ async function poll() {
   try {
     const st = await (await fetch("/state" + q)).json();
     if (!interacting) cam = st.camera;
+    sceneSize = st.scene_size;
     $("spp").textContent = st.spp + " / " + st.target_spp + " spp" + (st.preview ? " (moving)" : "");
     $("rate").textContent = (st.rays_per_second / 1e6).toFixed(2) + " Mrays/s";
     $("ms").textContent = (st.pass_seconds * 1000).toFixed(0) + " ms/frame";

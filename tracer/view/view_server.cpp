@@ -46,7 +46,8 @@ nlohmann::json state_json(const ViewFrame& f) {
           {"rays_per_second", f.rays_per_second},
           {"integrator", f.integrator},
           {"camera", camera_block(f.camera)},
-          {"error", f.error}};
+          {"error", f.error},
+          {"scene_size", f.scene_size}};
 }
 
 Json request_body(const httplib::Request& req) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+#include "accel/bounds.h"
 #include "image/image_io.h"
 #include "io/input_error.h"
 #include "io/output_batch.h"
@@ -47,6 +48,9 @@ ViewSession::ViewSession(ViewOptions options) : options_(std::move(options)) {
   frame_.target_spp = scene_.settings.spp;
   frame_.camera = scene_.camera_spec;
   frame_.integrator = enum_name(scene_.settings.integrator);
+  Bounds bounds;
+  for (const Primitive& p : scene_.primitives) bounds.grow(primitive_bounds(p));  // planes add nothing
+  frame_.scene_size = bounds.lo.x <= bounds.hi.x ? length(bounds.hi - bounds.lo) : 0.0f;
 }
 
 ViewSession::~ViewSession() { stop(); }

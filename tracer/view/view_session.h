@@ -29,7 +29,8 @@ struct ViewFrame {
   double pass_seconds = 0.0, rays_per_second = 0.0;
   std::string integrator;
   CameraSpec camera{};
-  std::string error;  // the last request the render could not apply
+  std::string error;        // the last request the render could not apply
+  float scene_size = 0.0f;  // the diagonal of the bounded shapes' box: the page's unit of movement
 };
 
 struct ViewOptions {
