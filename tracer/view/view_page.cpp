@@ -152,7 +152,6 @@ async function poll() {
       ctx.drawImage(img, 0, 0, canvas.width, canvas.height);
       shown = st.frame;
       canvas.dataset.frame = st.frame;
-      canvas.dataset.camera = JSON.stringify(st.camera);
       dragCheck(st);
     }
   } catch (e) { say("viewer unreachable: " + e.message); }

@@ -101,9 +101,9 @@ ViewServer::ViewServer(ViewSession& session, const std::string& address, int por
   s.Get("/", [](const httplib::Request&, httplib::Response& res) { res.set_content(view_page_html(), "text/html"); });
   s.Get("/frame", [this](const httplib::Request&, httplib::Response& res) {
     const ViewFrame f = session_.frame();
-    if (f.png.empty()) return reply_error(res, 503, "no frame yet");
+    if (!f.png) return reply_error(res, 503, "no frame yet");
     res.set_header("X-Frame", std::to_string(f.id));
-    res.set_content(f.png, "image/png");
+    res.set_content(*f.png, "image/png");
   });
   s.Get("/state", [this](const httplib::Request&, httplib::Response& res) {
     reply_json(res, 200, state_json(session_.frame()));

@@ -124,11 +124,11 @@ FilmBuffer ViewSession::render_range(SampleRange range, RenderStats& stats) {
 
 void ViewSession::publish(const FilmBuffer& film, uint32_t spp, bool preview, double seconds,
                           const RenderStats& stats) {
-  const std::string png = encode_image(resolve_film(film, spp), "frame.png");
+  auto png = std::make_shared<const std::string>(encode_image(resolve_film(film, spp), "frame.png"));
   const uint64_t rays = stats.rays.camera + stats.rays.secondary + stats.rays.shadow;
   std::lock_guard<std::mutex> lock(mutex_);
   frame_.id += 1;
-  frame_.png = png;
+  frame_.png = std::move(png);
   frame_.width = film.width, frame_.height = film.height;
   frame_.spp = spp, frame_.target_spp = scene_.settings.spp;
   frame_.preview = preview;
@@ -148,11 +148,10 @@ std::vector<std::string> ViewSession::write_saved(const FilmBuffer& film, uint32
   std::vector<std::string> written{names.exr, names.png};
   if (!is_gltf_path(options_.scene_path)) {
     outputs.add(names.json, scene_file_with_view(options_.scene_text, scene_.settings, scene_.camera_spec, spp));
-    written.push_back(names.json);
   } else {
     outputs.add(names.json, camera_block_text(scene_.camera_spec) + "\n");
-    written.push_back(names.json);
   }
+  written.push_back(names.json);
   outputs.commit();
   return written;
 }
@@ -161,6 +160,8 @@ void ViewSession::run() {
   FilmBuffer film;
   uint32_t done = 0;
   uint64_t generation = UINT64_MAX, reload = 0;
+  uint64_t placed_generation = UINT64_MAX;  // the camera and film size the scene holds
+  bool placed_preview = false;
   bool preview_shown = false;
   bool stopped = false;             // this camera's image refines no further: a pass failed
   double seconds_per_sample = 0.0;  // of the last refining pass
@@ -207,9 +208,12 @@ void ViewSession::run() {
     }
     const bool preview = request.moving;
     if (preview && preview_shown) continue;
-    scene_.settings.width = preview ? std::max(1u, full_width_ / kPreviewDivisor) : full_width_;
-    scene_.settings.height = preview ? std::max(1u, full_height_ / kPreviewDivisor) : full_height_;
-    place_camera(scene_, request.camera);
+    if (generation != placed_generation || preview != placed_preview) {  // the offset scale walks every shape
+      scene_.settings.width = preview ? std::max(1u, full_width_ / kPreviewDivisor) : full_width_;
+      scene_.settings.height = preview ? std::max(1u, full_height_ / kPreviewDivisor) : full_height_;
+      place_camera(scene_, request.camera);
+      placed_generation = generation, placed_preview = preview;
+    }
     if (!preview && (stopped || done >= scene_.settings.spp)) continue;
     // One sample first, then as many as fill a pass of about kPassSeconds.
     uint32_t batch = 1;

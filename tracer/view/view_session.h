@@ -7,6 +7,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <future>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -21,8 +22,8 @@
 namespace tracer {
 
 struct ViewFrame {
-  uint64_t id = 0;  // grows with every frame drawn
-  std::string png;  // the frame, encoded
+  uint64_t id = 0;                         // grows with every frame drawn
+  std::shared_ptr<const std::string> png;  // the frame, encoded; shared, so a state read copies no image
   uint32_t width = 0, height = 0;
   uint32_t spp = 0, target_spp = 0;
   bool preview = false;  // drawn while the camera moves: a quarter of the size, one sample
