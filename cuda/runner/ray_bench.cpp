@@ -75,17 +75,11 @@ SceneBundle with_generated_mesh(SceneBundle bundle, const std::string& kind, uin
   if (bundle.arrays.materials.empty()) throw InputError("the bundle has no material for the mesh");
   SceneArrays& a = bundle.arrays;
   a.primitives.clear();
-  std::vector<BuildItem> items;
-  for (const MeshTriangle& t : mesh) {
-    const Primitive p = {ShapeKind::Triangle, 0, -1, 0.0f, t.p[0], t.p[1], t.p[2]};
-    const Bounds b = primitive_bounds(p);
-    items.push_back({b, (b.lo + b.hi) * 0.5f, static_cast<uint32_t>(a.primitives.size())});
-    a.primitives.push_back(p);
-  }
+  for (const MeshTriangle& t : mesh) a.primitives.push_back({ShapeKind::Triangle, 0, -1, 0.0f, t.p[0], t.p[1], t.p[2]});
   a.triangle_shading.clear();
   a.unbounded.clear();
   a.bounded.clear();
-  a.bvh_nodes = build_sah_bvh(items, a.bounded);
+  a.bvh_nodes = build_sah_bvh(a.primitives, a.bounded);
   a.wide_nodes.clear();
   a.triangle_blocks.clear();
   a.light_table.clear();

@@ -16,11 +16,12 @@ float structure_pad(Vec3 lo, Vec3 hi) {
   return max_of(magnitude, max_component(hi - lo)) * 0x1p-18f + 0x1p-100f;
 }
 
-Acceleration build_acceleration(AccelKind kind, std::span<const Primitive> primitives, uint32_t grid_resolution) {
-  Acceleration a;
-  // An item per bounded primitive, in primitive order (planes have no box): fixed chunks of
-  // primitives count theirs, then each fills its items from its offset, so the items are the
-  // same for any thread count.
+namespace {
+
+// An item per bounded primitive, in primitive order (planes have no box): fixed chunks of
+// primitives count theirs, then each fills its items from its offset, so the items are the
+// same for any thread count.
+std::vector<BuildItem> bounded_items(std::span<const Primitive> primitives) {
   constexpr uint32_t kChunk = 1u << 16;
   const uint32_t n = static_cast<uint32_t>(primitives.size()), chunks = (n + kChunk - 1) / kChunk;
   std::vector<uint32_t> offset(size_t{chunks} + 1, 0);
@@ -45,22 +46,33 @@ Acceleration build_acceleration(AccelKind kind, std::span<const Primitive> primi
       items[k++] = {b, (b.lo + b.hi) * 0.5f, id};
     }
   }
-  if (offset[chunks] < n)
-    for (uint32_t id = 0; id < n; ++id)
-      if (primitives[id].kind == ShapeKind::Plane) a.unbounded.push_back(id);
-  switch (kind) {
-    case AccelKind::Bvh: a.bvh_nodes = build_sah_bvh(items, a.bounded); break;
-    case AccelKind::Lbvh: a.bvh_nodes = build_lbvh(items); break;
-    case AccelKind::Kdtree: a.kd = build_kdtree(items, KdSplit::Sah); break;
-    case AccelKind::KdtreeMedian: a.kd = build_kdtree(items, KdSplit::Median); break;
-    case AccelKind::Grid: a.grid = build_grid(items, grid_resolution); break;
-    case AccelKind::None: break;
-  }
-  if (kind != AccelKind::Bvh) {  // the other builders reorder `items` into the order their leaves index
+  return items;
+}
+
+}  // namespace
+
+Acceleration build_acceleration(AccelKind kind, std::span<const Primitive> primitives, uint32_t grid_resolution) {
+  Acceleration a;
+  if (kind == AccelKind::Bvh) {  // the SAH builder makes its own compact boxes of the primitives
+    a.bvh_nodes = build_sah_bvh(primitives, a.bounded);
+    a.wide = collapse_to_wide_bvh(a.bvh_nodes, a.bounded, primitives);
+  } else {
+    std::vector<BuildItem> items = bounded_items(primitives);
+    switch (kind) {
+      case AccelKind::Lbvh: a.bvh_nodes = build_lbvh(items); break;
+      case AccelKind::Kdtree: a.kd = build_kdtree(items, KdSplit::Sah); break;
+      case AccelKind::KdtreeMedian: a.kd = build_kdtree(items, KdSplit::Median); break;
+      case AccelKind::Grid: a.grid = build_grid(items, grid_resolution); break;
+      case AccelKind::Bvh:
+      case AccelKind::None: break;
+    }
+    // These builders reorder `items` into the order their leaves index.
     reserve_on_huge_pages(a.bounded, items.size());
     for (const BuildItem& it : items) a.bounded.push_back(it.id);
   }
-  if (kind == AccelKind::Bvh) a.wide = collapse_to_wide_bvh(a.bvh_nodes, a.bounded, primitives);
+  if (a.bounded.size() < primitives.size())
+    for (uint32_t id = 0; id < primitives.size(); ++id)
+      if (primitives[id].kind == ShapeKind::Plane) a.unbounded.push_back(id);
   return a;
 }
 

@@ -3,6 +3,7 @@
 #include <emmintrin.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -15,16 +16,19 @@ namespace {
 
 constexpr int kBins = 16;
 constexpr uint32_t kMaxLeafSize = 4;
-constexpr int kMaxBuildDepth = 60;         // traversal stacks hold 64 entries
-constexpr uint32_t kTaskItems = 1u << 15;  // ranges at least this large build their halves as OpenMP tasks
+constexpr int kMaxBuildDepth = 60;  // traversal stacks hold 64 entries
+// Ranges of at least task_items(n) items build their halves as OpenMP tasks: about 32 task
+// ranges per build, of 2^10 to 2^15 items (a small mesh is still built by every thread).
+constexpr uint32_t kMinTaskItems = 1u << 10, kMaxTaskItems = 1u << 15;
+uint32_t task_items(uint32_t n) { return std::clamp(n / 32, kMinTaskItems, kMaxTaskItems); }
 constexpr uint32_t kTaskNodes = 1u << 14;  // subtrees at least this large are numbered as OpenMP tasks
 // Work over many items is split into chunks of kChunkItems fixed by the items alone, each
 // chunk's result combined in chunk order: the same result for any thread count.
 constexpr uint32_t kChunkItems = 1u << 16;
 constexpr uint32_t kParallelBinItems = 1u << 18;  // ranges at least this large are binned in chunks
 
-// One item in 32 bytes, as Embree's PrimRef: its box in SSE lanes x, y, z; lane 3 of `lo`
-// holds the item's index in `items` (bits), lane 3 of `hi` is 0, so lo + hi masked to
+// One primitive in 32 bytes, as Embree's PrimRef: its box in SSE lanes x, y, z; lane 3 of `lo`
+// holds the primitive's id (bits), lane 3 of `hi` is 0, so lo + hi masked to
 // x, y, z is twice the centroid.
 struct alignas(16) Ref {
   __m128 lo, hi;
@@ -62,10 +66,12 @@ struct Binner {
       if (h[a] - l[a] > 0.0f) s[a] = static_cast<float>(count) * 0.99999f / (h[a] - l[a]);
     scale = _mm_loadu_ps(s);
   }
-  __m128i bins(__m128 c) const {
+  // The bin coordinate per axis, clamped to [0, count - 1] (a NaN lane to 0); its integer part is the bin.
+  __m128 position(__m128 c) const {
     const __m128 f = _mm_mul_ps(_mm_sub_ps(c, lo), scale);
-    return _mm_cvttps_epi32(_mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), _mm_set1_ps(static_cast<float>(count - 1))));
+    return _mm_min_ps(_mm_max_ps(f, _mm_setzero_ps()), _mm_set1_ps(static_cast<float>(count - 1)));
   }
+  __m128i bins(__m128 c) const { return _mm_cvttps_epi32(position(c)); }
 };
 
 struct Split {
@@ -133,40 +139,55 @@ struct Bins {
   }
 };
 
+// Slots [next, end) taken by one thread's subtree and not yet handed out.
+struct SlotBlock {
+  uint32_t next = 0, end = 0;
+};
+
 // A range of refs with its box and its centroids' box (both known before it is visited).
 struct Range {
   uint32_t begin, end;
   Box bounds, centroids;
 };
 
-// Nodes are first written to slots fixed by item ranges, so that threads never share a
-// counter: the subtree over m items has at most 2m - 1 nodes, its root in the slot its parent
-// chose and its other nodes in the 2m - 2 slots from `below`, its children's pair first. Then
-// the used slots are numbered in depth-first order, both children of a node before the first's
-// subtree, so the nodes and their order do not depend on which thread built what.
+// Nodes are first written to slots in the order the build makes them: a node over at least
+// task_items(n) items takes its children's pair from a shared counter, and a smaller subtree (one
+// thread builds it) takes blocks of kSlotBlock slots from it and hands out pairs from its block,
+// so the slots touched (and faulted in) are about the nodes made. Then the used slots are
+// numbered in depth-first order, both children of a node before the first's subtree, so the
+// nodes and their order do not depend on which thread built what.
 class BvhBuilder {
  public:
-  BvhBuilder(std::vector<Ref>& refs, BvhNode* slots, uint32_t* subtree_nodes)
-      : refs_(refs), slots_(slots), subtree_nodes_(subtree_nodes) {}
+  static constexpr uint32_t kSlotBlock = 1024;
+  // Pairs take at most 2n - 2 slots; each subtree below task_items(n) leaves less than a block
+  // unused, and there are at most 4n / task_items(n) + 2 of them (two per node at least that large).
+  static size_t slot_capacity(uint32_t n) { return 2 * size_t{n} + (4 * size_t{n} / task_items(n) + 2) * kSlotBlock; }
 
-  // Builds the subtree over `range` into `slot` and the slots from `below`; returns its node count.
-  uint32_t build(uint32_t slot, const Range& range, uint32_t below, int depth) {
+  BvhBuilder(Ref* refs, uint32_t n, BvhNode* slots, uint32_t* subtree_nodes)
+      : refs_(refs), task_items_(task_items(n)), slots_(slots), subtree_nodes_(subtree_nodes) {}
+
+  // Builds the subtree over `range` into `slot` and slots it takes; returns its node count.
+  // `block` is the slot block of the one-thread subtree this node is in (null above them).
+  uint32_t build(uint32_t slot, const Range& range, int depth, SlotBlock* block) {
+    SlotBlock own;
+    const bool tasks = range.end - range.begin >= task_items_;
+    if (!tasks && !block) block = &own;
     Range left, right;
     BvhNode& node = slots_[slot];
     uint32_t nodes = 1;
     if (split_or_leaf(node, range, depth, left, right)) {
+      const uint32_t below = take_pair(block);
       node.first = below;
       node.count = 0;
-      const uint32_t left_below = below + 2, right_below = left_below + 2 * (left.end - left.begin) - 2;
       uint32_t left_nodes = 0, right_nodes = 0;
-      if (range.end - range.begin >= kTaskItems) {
-#pragma omp task shared(left_nodes) firstprivate(below, left, left_below, depth)
-        left_nodes = build(below, left, left_below, depth + 1);
-        right_nodes = build(below + 1, right, right_below, depth + 1);
+      if (tasks) {
+#pragma omp task shared(left_nodes) firstprivate(below, left, depth)
+        left_nodes = build(below, left, depth + 1, nullptr);
+        right_nodes = build(below + 1, right, depth + 1, nullptr);
 #pragma omp taskwait
       } else {
-        left_nodes = build(below, left, left_below, depth + 1);
-        right_nodes = build(below + 1, right, right_below, depth + 1);
+        left_nodes = build(below, left, depth + 1, block);
+        right_nodes = build(below + 1, right, depth + 1, block);
       }
       nodes += left_nodes + right_nodes;
     }
@@ -254,27 +275,42 @@ class BvhBuilder {
     return bins.cheapest_split();
   }
 
-  // Refs in bins below split.bin first, the others after; each side's boxes grown on the way.
+  // Refs in bins below split.bin first, the others after (Hoare's two-pointer partition: runs
+  // already on their side are skipped from both ends, then the two refs that stopped the runs
+  // swap); each side's boxes grow in registers on the way.
   void partition(const Range& range, const Binner& binner, const Split& split, Range& left, Range& right) {
-    alignas(16) int32_t bin[4];
+    const int axis_bit = 1 << split.axis;
+    const __m128 split_bin = _mm_set1_ps(static_cast<float>(split.bin));
+    const auto goes_left = [&](__m128 c) {
+      return (_mm_movemask_ps(_mm_cmplt_ps(binner.position(c), split_bin)) & axis_bit) != 0;
+    };
+    Box left_bounds, left_centroids, right_bounds, right_centroids;
     uint32_t i = range.begin, j = range.end;
-    left = right = Range{};
-    while (i < j) {
-      const Ref r = refs_[i];
-      const __m128 c = twice_centroid(r);
-      _mm_store_si128(reinterpret_cast<__m128i*>(bin), binner.bins(c));
-      Range& side = bin[split.axis] < split.bin ? left : right;
-      side.bounds.grow(r.lo, r.hi);
-      side.centroids.grow(c);
-      if (&side == &left) {
-        ++i;
-      } else {
-        refs_[i] = refs_[--j];
-        refs_[j] = r;
+    while (true) {
+      for (; i < j; ++i) {
+        const Ref& r = refs_[i];
+        const __m128 c = twice_centroid(r);
+        if (!goes_left(c)) break;
+        left_bounds.grow(r.lo, r.hi);
+        left_centroids.grow(c);
       }
+      for (; i < j; --j) {
+        const Ref& r = refs_[j - 1];
+        const __m128 c = twice_centroid(r);
+        if (goes_left(c)) break;
+        right_bounds.grow(r.lo, r.hi);
+        right_centroids.grow(c);
+      }
+      if (i == j) break;
+      std::swap(refs_[i], refs_[j - 1]);  // refs_[i] went right, refs_[j - 1] left
+      left_bounds.grow(refs_[i].lo, refs_[i].hi);
+      left_centroids.grow(twice_centroid(refs_[i]));
+      right_bounds.grow(refs_[j - 1].lo, refs_[j - 1].hi);
+      right_centroids.grow(twice_centroid(refs_[j - 1]));
+      ++i, --j;
     }
-    left.begin = range.begin, left.end = i;
-    right.begin = i, right.end = range.end;
+    left = {range.begin, i, left_bounds, left_centroids};
+    right = {i, range.end, right_bounds, right_centroids};
   }
 
   void halve(const Range& range, Range& left, Range& right) const {
@@ -289,7 +325,20 @@ class BvhBuilder {
       }
   }
 
-  std::vector<Ref>& refs_;
+  uint32_t take_pair(SlotBlock* block) {
+    if (!block) return next_slot_.fetch_add(2, std::memory_order_relaxed);
+    if (block->next == block->end) {
+      block->next = next_slot_.fetch_add(kSlotBlock, std::memory_order_relaxed);
+      block->end = block->next + kSlotBlock;
+    }
+    const uint32_t pair = block->next;
+    block->next += 2;
+    return pair;
+  }
+
+  Ref* refs_;
+  const uint32_t task_items_;
+  std::atomic<uint32_t> next_slot_{1};  // slot 0 is the root's
   BvhNode* slots_;
   uint32_t* subtree_nodes_;  // per used slot: the nodes of its subtree, itself included
 };
@@ -302,54 +351,59 @@ std::unique_ptr<T, decltype(&std::free)> allocate_on_huge_pages(size_t count) {
   return p;
 }
 
-uint32_t ref_index(const Ref& r) {
-  uint32_t index;
+uint32_t ref_id(const Ref& r) {
+  uint32_t id;
   const float lane = _mm_cvtss_f32(_mm_shuffle_ps(r.lo, r.lo, _MM_SHUFFLE(3, 3, 3, 3)));
-  std::memcpy(&index, &lane, sizeof index);
-  return index;
+  std::memcpy(&id, &lane, sizeof id);
+  return id;
 }
 
 }  // namespace
 
-std::vector<BvhNode> build_sah_bvh(std::span<const BuildItem> items, std::vector<uint32_t>& leaf_ids) {
-  if (items.empty()) return {};
-  const uint32_t n = static_cast<uint32_t>(items.size());
-  std::vector<Ref> refs;
-  reserve_on_huge_pages(refs, n);
-  refs.resize(n);
-  const uint32_t chunks = (n + kChunkItems - 1) / kChunkItems;
+std::vector<BvhNode> build_sah_bvh(std::span<const Primitive> primitives, std::vector<uint32_t>& leaf_ids) {
+  leaf_ids.clear();
+  const uint32_t total = static_cast<uint32_t>(primitives.size());
+  const uint32_t chunks = (total + kChunkItems - 1) / kChunkItems;
+  // Each chunk of primitives writes its bounded ones' refs from its own first position; where
+  // planes left gaps the chunks move down after, in order.
+  const auto refs = allocate_on_huge_pages<Ref>(std::max<size_t>(total, 1));
   std::vector<Range> chunk_ranges(chunks);
-#pragma omp parallel for schedule(static) if (n >= kTaskItems)
+#pragma omp parallel for schedule(static) if (chunks > 1)
   for (int64_t c = 0; c < static_cast<int64_t>(chunks); ++c) {
     Range& chunk = chunk_ranges[static_cast<size_t>(c)];
-    chunk.begin = static_cast<uint32_t>(c) * kChunkItems;
-    chunk.end = std::min<uint32_t>(n, chunk.begin + kChunkItems);
-    for (uint32_t i = chunk.begin; i < chunk.end; ++i) {
-      const Bounds& b = items[i].bounds;
-      float index;
-      std::memcpy(&index, &i, sizeof index);
-      const Ref r = {_mm_setr_ps(b.lo.x, b.lo.y, b.lo.z, index), _mm_setr_ps(b.hi.x, b.hi.y, b.hi.z, 0.0f)};
-      refs[i] = r;
+    chunk.begin = chunk.end = static_cast<uint32_t>(c) * kChunkItems;
+    for (uint32_t id = chunk.begin; id < std::min(total, chunk.begin + kChunkItems); ++id) {
+      if (primitives[id].kind == ShapeKind::Plane) continue;  // unbounded: never in the BVH
+      const Bounds b = primitive_bounds(primitives[id]);
+      float id_bits;
+      std::memcpy(&id_bits, &id, sizeof id_bits);
+      const Ref r = {_mm_setr_ps(b.lo.x, b.lo.y, b.lo.z, id_bits), _mm_setr_ps(b.hi.x, b.hi.y, b.hi.z, 0.0f)};
+      refs.get()[chunk.end++] = r;
       chunk.bounds.grow(r.lo, r.hi);
       chunk.centroids.grow(twice_centroid(r));
     }
   }
-  Range root{0, n, {}, {}};
-  for (const Range& chunk : chunk_ranges) root.bounds.grow(chunk.bounds), root.centroids.grow(chunk.centroids);
-  const size_t slot_count = 2 * size_t{n} - 1;  // BvhNode is an aggregate: malloc'd storage holds nodes
+  Range root{0, 0, {}, {}};
+  for (const Range& chunk : chunk_ranges) {
+    if (chunk.begin != root.end)
+      std::memmove(refs.get() + root.end, refs.get() + chunk.begin, (chunk.end - chunk.begin) * sizeof(Ref));
+    root.end += chunk.end - chunk.begin;
+    root.bounds.grow(chunk.bounds), root.centroids.grow(chunk.centroids);
+  }
+  const uint32_t n = root.end;
+  if (n == 0) return {};
+  const size_t slot_count = BvhBuilder::slot_capacity(n);  // BvhNode is an aggregate: malloc'd storage holds nodes
   const auto slots = allocate_on_huge_pages<BvhNode>(slot_count);
   const auto subtree_nodes = allocate_on_huge_pages<uint32_t>(slot_count);
-  BvhBuilder builder(refs, slots.get(), subtree_nodes.get());
-#pragma omp parallel if (n >= kTaskItems)
+  BvhBuilder builder(refs.get(), n, slots.get(), subtree_nodes.get());
+#pragma omp parallel if (n >= 2 * kMinTaskItems)
 #pragma omp single
-  builder.build(0, root, 1, 0);
+  builder.build(0, root, 0, nullptr);
   std::vector<BvhNode> nodes = builder.numbered();
-  leaf_ids.clear();
   reserve_on_huge_pages(leaf_ids, n);
   leaf_ids.resize(n);
-#pragma omp parallel for schedule(static) if (n >= kTaskItems)
-  for (int64_t i = 0; i < static_cast<int64_t>(n); ++i)
-    leaf_ids[static_cast<size_t>(i)] = items[ref_index(refs[static_cast<size_t>(i)])].id;
+#pragma omp parallel for schedule(static) if (n >= kChunkItems)
+  for (int64_t i = 0; i < static_cast<int64_t>(n); ++i) leaf_ids[static_cast<size_t>(i)] = ref_id(refs.get()[i]);
   return nodes;
 }
 

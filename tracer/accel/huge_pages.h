@@ -9,7 +9,7 @@
 namespace tracer {
 
 // Advises the 2 MiB-aligned pages inside [p, p + bytes); a no-op where unsupported.
-void advise_huge_pages(const void* p, size_t bytes);
+void advise_huge_pages(void* p, size_t bytes);
 
 // v.reserve(n), with the reserved storage advised before anything touches it.
 template <class T>
