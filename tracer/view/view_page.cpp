@@ -90,7 +90,8 @@ function walk(key) {
 }
 
 // #drag-check, for a headless browser: once the first frame has all its samples, drag across
-// it through the page's own handlers; when a finished frame shows another camera, mark the page.
+// it through the page's own handlers; when a finished frame shows another camera, mark the page
+// and stop polling.
 const check = location.hash === "#drag-check" ? { first: null } : null;
 function dragCheck(st) {
   if (!check || st.preview || st.spp !== st.target_spp) return;
@@ -155,6 +156,7 @@ async function poll() {
       dragCheck(st);
     }
   } catch (e) { say("viewer unreachable: " + e.message); }
+  if (check && document.body.dataset.check) return;  // checked: idle, so a headless browser's virtual clock ends
   setTimeout(poll, 100);
 }
 poll();
