@@ -202,8 +202,8 @@ TEST_F(View, ThePageInABrowserShowsAFrameAndADragMovesTheCamera) {
   const std::string url =
       "http://127.0.0.1:" + std::to_string(server_->port()) + "/?token=" + server_->token() + "#drag-check";
   // The page polls every 100 ms of the browser's virtual clock, which runs ahead of real time
-  // while the server renders (30 s of it once ran out on a loaded machine before the first
-  // frame was done); the page stops polling once checked, and an idle page ends the clock.
+  // while the server renders (30 s of it once ran out on a loaded machine before the dragged
+  // camera's frame was done); the page stops polling once checked, and an idle page ends the clock.
   std::string dom;
   ASSERT_EQ(test::run_command("timeout 120 chromium --headless --no-sandbox --disable-gpu --user-data-dir=" +
                                   (dir_ / "profile").string() + " --virtual-time-budget=100000 --dump-dom '" + url +
