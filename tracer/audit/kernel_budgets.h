@@ -61,27 +61,33 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // 57-60 -> 61 (a mirror image's textured light), the closest-hit stage's spills 28 -> 36
     // bytes (its alpha test, at the cap of 72); every kernel in its occupancy step, the
     // megakernels unchanged.
+    // The grid's walk without its step array (kernel/accel/traverse_grid.h, 2026-11-28: a step is
+    // the direction's sign where it is used): the grid variants 53 -> 46 (spheres) and 64 -> 62
+    // registers, their stacks 24-32 -> 0-16 bytes and closest_hit_grid_triangles' 4 spilled bytes
+    // gone; the full-code stages' spills 36 -> 12; the Whitted megakernels 6 fewer, the alpha
+    // path kernels 4-5 fewer; two adaptive path passes 1 and 4 more (145, 185), each in its
+    // occupancy step.
     {"path_render_kernel",               156, 1120, 0, 0, 256},
-    {"path_alpha_render_kernel",         160, 1120, 0, 0, 256},
+    {"path_alpha_render_kernel",         156, 1120, 0, 0, 256},
     {"path_mirror_images_render_kernel", 193, 1120, 0, 0, 256},
-    {"whitted_render_kernel",            179, 3760, 0, 0, 256},
-    {"whitted_alpha_render_kernel",      190, 3760, 0, 0, 256},
-    {"view_render_kernel",                88,  576, 0, 0, 256},
+    {"whitted_render_kernel",            173, 3760, 0, 0, 256},
+    {"whitted_alpha_render_kernel",      184, 3760, 0, 0, 256},
+    {"view_render_kernel",                88,  560, 0, 0, 256},
     // adaptive sampling (cuda/gpu_adaptive.cu)
     // path: mirror images, as the megakernel (18.75 % occupancy -> 12.5 %)
     // without mirror images 145 (18.75 %), with them 171 (12.5 %); 146 with spot lights and suns
-    {"path_adaptive_pass_kernel",        144, 1120, 0, 0, 128},
-    {"path_alpha_adaptive_pass_kernel",  152, 1120, 0, 0, 128},
-    {"path_mirror_images_adaptive_pass_kernel", 181, 1120, 0, 0, 128},
+    {"path_adaptive_pass_kernel",        145, 1120, 0, 0, 128},
+    {"path_alpha_adaptive_pass_kernel",  147, 1120, 0, 0, 128},
+    {"path_mirror_images_adaptive_pass_kernel", 185, 1120, 0, 0, 128},
     {"whitted_adaptive_pass_kernel",     168, 3760, 0, 0, 128},
-    {"whitted_alpha_adaptive_pass_kernel", 176, 3760, 0, 0, 128},
-    {"view_adaptive_pass_kernel",         80,  576, 0, 0, 128},
+    {"whitted_alpha_adaptive_pass_kernel", 172, 3760, 0, 0, 128},
+    {"view_adaptive_pass_kernel",         80,  560, 0, 0, 128},
     {"mark_unconverged_kernel",           40,    0, 0, 0, 128},
     {"keep_kernel",                       16,    0, 0, 0, 128},
     // the stream schedule (cuda/gpu_stream.cu)
     {"begin_batch_kernel",                20,    0, 0, 0, 128},
     {"generate_stage_kernel",             24,    0, 0, 0, 128},
-    {"closest_hit_stage_kernel",          72,  608, 36, 0, 128},
+    {"closest_hit_stage_kernel",          72,  576, 12, 0, 128},
     // one register more for render.light_sampling's solid-angle branch, one for Russian
     // roulette's first-vertex throughput and five for spherical triangles (Arvo's sample), in
     // the same occupancy step (25 %); 43 more and a stack frame for mirror images (25 % -> 18.75 %);
@@ -95,7 +101,7 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // allocation step they were in (96 and 48), so occupancy is unchanged
     {"whitted_shade_stage_kernel",        96,    0, 0, 0, 128},
     {"view_shade_stage_kernel",           48,    0, 0, 0, 128},
-    {"shadow_any_hit_stage_kernel",       72,  576, 0, 0, 128},
+    {"shadow_any_hit_stage_kernel",       72,  560, 0, 0, 128},
     // the trace variants' stages (kernel/accel/trace_variants.h), held to 64 registers; each shadow
     // stage traces a mirror image's two ways too (trace_shadows: one traversal call site), two to
     // four registers more for the sphere variants, 80 bytes of spills for the 8-wide tree's
@@ -113,11 +119,10 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     {"shadow_any_hit_kdtree_triangles_kernel", 64, 0, 0, 0, 128},
     {"closest_hit_kdtree_spheres_kernel", 47,    0, 0, 0, 128},
     {"shadow_any_hit_kdtree_spheres_kernel", 61,  0, 0, 0, 128},
-    {"closest_hit_grid_triangles_kernel", 64,   32, 4, 0, 128},
-    {"shadow_any_hit_grid_triangles_kernel", 63, 24, 0, 0, 128},  // +1: per-axis texture wrap (a mirror image's
-                                                                   // textured light), in the same step of 8
-    {"closest_hit_grid_spheres_kernel",   53,   24, 0, 0, 128},
-    {"shadow_any_hit_grid_spheres_kernel", 61,  24, 0, 0, 128},
+    {"closest_hit_grid_triangles_kernel", 62,   16, 0, 0, 128},
+    {"shadow_any_hit_grid_triangles_kernel", 62, 16, 0, 0, 128},
+    {"closest_hit_grid_spheres_kernel",   46,   16, 0, 0, 128},
+    {"shadow_any_hit_grid_spheres_kernel", 61,   0, 0, 0, 128},
     {"split_kernel",                      17,    0, 0, 0, 128},
     {"end_batch_kernel",                  28,    0, 0, 0, 128},
     // the LBVH build (cuda/lbvh_gpu.cu)

@@ -16,12 +16,11 @@ TRACER_HD void traverse_grid(const SceneView& scene, const Ray& ray, const RaySh
   const Vec3 inv = inverse_direction(ray.dir);
   float t_enter;
   if (!ray_box(g.lo, g.hi, ray.origin, inv, 0.0f, best.t, t_enter)) return;
-  int cell[3], step[3];
+  int cell[3];
   for (int a = 0; a < 3; ++a) {
     const float p = ray.origin[a] + ray.dir[a] * t_enter;
     const int c = trunc_to_int32((p - g.lo[a]) / g.cell[a]);
     cell[a] = c < 0 ? 0 : (c >= static_cast<int>(g.n[a]) ? static_cast<int>(g.n[a]) - 1 : c);
-    step[a] = ray.dir[a] > 0.0f ? 1 : (ray.dir[a] < 0.0f ? -1 : 0);
   }
   for (;;) {
     const uint32_t c = static_cast<uint32_t>(cell[0]) +
@@ -34,13 +33,13 @@ TRACER_HD void traverse_grid(const SceneView& scene, const Ray& ray, const RaySh
     int axis = -1;
     float t_exit = kInfinity;
     for (int a = 0; a < 3; ++a) {
-      if (step[a] == 0) continue;
-      const float boundary = g.lo[a] + static_cast<float>(cell[a] + (step[a] > 0 ? 1 : 0)) * g.cell[a];
+      if (!(ray.dir[a] > 0.0f) && !(ray.dir[a] < 0.0f)) continue;  // parallel to the axis's boundaries
+      const float boundary = g.lo[a] + static_cast<float>(cell[a] + (ray.dir[a] > 0.0f ? 1 : 0)) * g.cell[a];
       const float t = (boundary - ray.origin[a]) * inv[a];
       if (t < t_exit) t_exit = t, axis = a;
     }
     if (axis < 0 || best.t < t_exit - g.pad) return;
-    cell[axis] += step[axis];
+    cell[axis] += ray.dir[axis] > 0.0f ? 1 : -1;
     if (cell[axis] < 0 || cell[axis] >= static_cast<int>(g.n[axis])) return;
   }
 }
