@@ -8,6 +8,7 @@
 #include <cstring>
 #include <memory>
 #include <new>
+#include <stdexcept>
 
 #include "accel/huge_pages.h"
 
@@ -163,9 +164,11 @@ struct Bins {
   }
 };
 
-// Slots [next, end) taken by one thread's subtree and not yet handed out.
+// Slots [next, end) taken by one thread's subtree and not yet handed out, and how many more it
+// may take: a subtree over m items makes at most 2m - 2 nodes below its root.
 struct SlotBlock {
   uint32_t next = 0, end = 0;
+  size_t may_take = 0;
 };
 
 // A range of refs with its box and its centroids' box (both known before it is visited).
@@ -176,26 +179,35 @@ struct Range {
 
 // Nodes are first written to slots in the order the build makes them: a node over at least
 // task_items(n) items takes its children's pair from a shared counter, and a smaller subtree (one
-// thread builds it) takes blocks of kSlotBlock slots from it and hands out pairs from its block,
+// thread builds it) takes blocks of up to kSlotBlock slots from it, never more in all than it
+// can use, and hands out pairs from its block,
 // so the slots touched (and faulted in) are about the nodes made. Then the used slots are
 // numbered in depth-first order, both children of a node before the first's subtree, so the
 // nodes and their order do not depend on which thread built what.
 class BvhBuilder {
  public:
   static constexpr uint32_t kSlotBlock = 1024;
-  // Pairs take at most 2n - 2 slots; each subtree below task_items(n) leaves less than a block
-  // unused, and there are at most 4n / task_items(n) + 2 of them (two per node at least that large).
-  static size_t slot_capacity(uint32_t n) { return 2 * size_t{n} + (4 * size_t{n} / task_items(n) + 2) * kSlotBlock; }
+  // The root's slot, a pair per node over at least task_items(n) items (fewer than n of them)
+  // and at most 2m - 2 slots per one-thread subtree over m items (their ranges are disjoint):
+  // under 4n. Only the slots handed out are touched, so the rest costs no memory.
+  static size_t slot_capacity(uint32_t n) { return 4 * size_t{n}; }
 
   BvhBuilder(Ref* refs, uint32_t n, BvhNode* slots, uint32_t* subtree_nodes)
-      : refs_(refs), task_items_(task_items(n)), slots_(slots), subtree_nodes_(subtree_nodes) {}
+      : refs_(refs),
+        task_items_(task_items(n)),
+        capacity_(slot_capacity(n)),
+        slots_(slots),
+        subtree_nodes_(subtree_nodes) {}
 
   // Builds the subtree over `range` into `slot` and slots it takes; returns its node count.
   // `block` is the slot block of the one-thread subtree this node is in (null above them).
   uint32_t build(uint32_t slot, const Range& range, int depth, SlotBlock* block) {
     SlotBlock own;
     const bool tasks = range.end - range.begin >= task_items_;
-    if (!tasks && !block) block = &own;
+    if (!tasks && !block) {
+      own.may_take = 2 * size_t{range.end - range.begin} - 2;
+      block = &own;
+    }
     Range left, right;
     BvhNode& node = slots_[slot];
     uint32_t nodes = 1;
@@ -350,18 +362,27 @@ class BvhBuilder {
   }
 
   uint32_t take_pair(SlotBlock* block) {
-    if (!block) return next_slot_.fetch_add(2, std::memory_order_relaxed);
-    if (block->next == block->end) {
-      block->next = next_slot_.fetch_add(kSlotBlock, std::memory_order_relaxed);
-      block->end = block->next + kSlotBlock;
+    if (!block) return checked(next_slot_.fetch_add(2, std::memory_order_relaxed), 2);
+    if (block->next == block->end) {  // may_take stays even and above 0 while pairs are wanted
+      const uint32_t size = static_cast<uint32_t>(std::min<size_t>(kSlotBlock, block->may_take));
+      block->may_take -= size;
+      block->next = checked(next_slot_.fetch_add(size, std::memory_order_relaxed), size);
+      block->end = block->next + size;
     }
     const uint32_t pair = block->next;
     block->next += 2;
     return pair;
   }
 
+  // `first` .. `first + size` inside the slot array, which slot_capacity's bound promises.
+  uint32_t checked(uint32_t first, uint32_t size) const {
+    if (first + size_t{size} > capacity_) throw std::logic_error("the SAH build took more slots than it reserved");
+    return first;
+  }
+
   Ref* refs_;
   const uint32_t task_items_;
+  const size_t capacity_;
   std::atomic<uint32_t> next_slot_{1};  // slot 0 is the root's
   BvhNode* slots_;
   uint32_t* subtree_nodes_;  // per used slot: the nodes of its subtree, itself included
