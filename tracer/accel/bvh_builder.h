@@ -1,9 +1,10 @@
 // Binned SAH BVH (Wald, "On fast Construction of SAH-based Bounding Volume Hierarchies",
 // 2007) over the bounded primitives (planes are left out) into the flat node array of
-// kernel/accel/bvh_node.h; `leaf_ids` gets their ids in leaf order. Primitives are binned as 32-byte SSE boxes on 16 bins per axis, all three axes in one pass;
-// a partition grows both children's boxes, so no range is read twice per level. Halves of
-// large ranges are built as OpenMP tasks; the nodes and their order do not depend on the
-// thread count. x86-64 only (its SSE2 baseline).
+// kernel/accel/bvh_node.h; `leaf_ids` gets their ids in leaf order. Primitives are binned as
+// 32-byte SSE boxes on 16 bins per axis, all three axes in one pass; a partition grows both
+// children's boxes, so no range is read twice per level. Halves of large ranges are built as
+// OpenMP tasks; the nodes and their order do not depend on the thread count. x86-64 only (its
+// SSE2 baseline).
 #pragma once
 #include <span>
 
