@@ -1,4 +1,4 @@
-// From a hit to the local surface: position, geometric and shading normals, uv.
+// From a hit to the local surface: position, geometric and shading normals, uv (with textures).
 #pragma once
 #include "kernel/accel/trace.h"
 #include "kernel/base/detmath.h"
@@ -12,7 +12,7 @@ struct Surface {
   Vec3 p;
   Vec3 ng;  // unit geometric normal, outward as the shape (or its vertex normals) define it
   Vec3 ns;  // unit shading normal, on the same side as ng
-  float u, v;
+  float u, v;          // texture coordinates: set only in a scene with textures, the one reader
   float bary1, bary2;  // triangles: the hit's barycentric weights of v1 and v2
   uint32_t material;
   uint32_t prim;
@@ -64,7 +64,9 @@ TRACER_HD Surface surface_at(const SceneView& scene, const Ray& ray, const Hit& 
       break;
     }
   }
-  hit_uv(scene, prim, ray, hit.t, hit.b1, hit.b2, s.u, s.v);
+  // Only textures read (u, v): a scene without them skips the sphere's atan2 and asin.
+  s.u = s.v = 0.0f;
+  if (uses_feature(scene.features, kFeatureTextures)) hit_uv(scene, prim, ray, hit.t, hit.b1, hit.b2, s.u, s.v);
   return s;
 }
 
