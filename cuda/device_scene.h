@@ -14,15 +14,6 @@
 
 namespace tracer {
 
-// The tree a view asks for: the 8-wide one where it counts one (a bundle that keeps it), else
-// the binary one, with its pair records where the scene's bounded shapes are all triangles (the
-// records hold triangles only: for any other scene they would be walked for nothing).
-inline DeviceBvh device_bvh_of(const SceneView& view) {
-  if (view.wide_node_count != 0) return DeviceBvh::Wide;
-  const uint32_t bounded_shapes = kTraceShapes & ~kFeaturePlane;
-  return (view.features & bounded_shapes) == kFeatureTriangle ? DeviceBvh::Pairs : DeviceBvh::Binary;
-}
-
 class DeviceScene {
  public:
   // `host_view` supplies the scalars (camera, settings, ...); its pointers are replaced.

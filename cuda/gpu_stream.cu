@@ -99,7 +99,8 @@ constexpr StageKernel kShadowKernels[] = {TRACER_TRACE_VARIANTS(TRACER_SHADOW_KE
 #undef TRACER_SHADOW_KERNEL
 
 StageKernel stage_kernel_for(StreamStage stage, const SceneView& scene) {
-  const int variant = trace_variant_of(scene.features, scene.settings, scene.wide_node_count != 0);
+  const int variant =
+      trace_variant_of(scene.features, scene.settings, scene.wide_node_count != 0, scene.bvh_pair_count != 0);
   switch (stage) {
     case StreamStage::Generate: return generate_stage_kernel;
     case StreamStage::Closest: return variant < 0 ? closest_hit_stage_kernel : kClosestKernels[variant];

@@ -68,7 +68,8 @@ CudaRayTracer::CudaRayTracer(const SceneArrays& arrays, const SceneView& view, D
 
 const char* CudaRayTracer::variant() const {
   const SceneView& view = device_->scene.view();
-  return trace_variant_name(trace_variant_of(view.features, view.settings, view.wide_node_count != 0));
+  return trace_variant_name(
+      trace_variant_of(view.features, view.settings, view.wide_node_count != 0, view.bvh_pair_count != 0));
 }
 
 CudaRayTracer::~CudaRayTracer() = default;

@@ -28,6 +28,7 @@
 #include "parity/parity_gpu.h"
 #include "parity/parity_suite.h"
 #include "ray_bench.h"
+#include "render/device_bvh.h"
 #include "render/device_error.h"
 
 namespace tracer {
@@ -302,13 +303,15 @@ int run_pack(const Options& o) {
         const Rendered r = render_bundle(b, ro, dir + file);
         const std::string& got = kind == "golden" ? r.hash : r.sample_map_hash;
         pass = got == expected;
-        // The stream schedule's trace kernels on the GPU (kernel/accel/trace_variants.h).
+        // The stream schedule's trace kernels on the GPU (kernel/accel/trace_variants.h), for the
+        // tree its upload holds (render/device_bvh.h).
         const SceneView view = view_for(b, ro);
-        const std::string trace =
-            view.settings.schedule == Schedule::Stream
-                ? std::string(", trace ") +
-                      trace_variant_name(trace_variant_of(view.features, view.settings, view.wide_node_count != 0))
-                : "";
+        const std::string trace = view.settings.schedule == Schedule::Stream
+                                      ? std::string(", trace ") +
+                                            trace_variant_name(trace_variant_of(view.features, view.settings,
+                                                                                view.wide_node_count != 0,
+                                                                                device_pair_records(view)))
+                                      : "";
         char text[160];
         std::snprintf(text, sizeof text, "%.6f s, %.1f Mrays/s%s", r.best_seconds, mrays_per_second(r), trace.c_str());
         detail = pass                             ? text

@@ -31,7 +31,8 @@ SceneView with_pairs(SceneView view, const BvhPairs& pairs) {
   return view;
 }
 
-constexpr int kBvhTriangles = trace_variant_for(kTraceBvh | kFeatureTriangle | kFeaturePlane | kTraceWatertight);
+constexpr int kBvhTriangles =
+    trace_variant_for(kTraceBvhPairs | kFeatureTriangle | kFeaturePlane | kTraceWatertight);
 
 void expect_same_hits(const std::string& what, const SceneView& nodes, const SceneView& pairs,
                       const std::vector<Ray>& rays, bool variant) {
@@ -89,7 +90,7 @@ TEST(BvhPairs, ThePairWalkGivesTheNodeWalksHitsInEveryShippedSceneAndGeneratedMe
       const std::string what = scene_path.string() + (accel == AccelKind::Bvh ? " with bvh" : " with lbvh");
       const std::vector<Ray> rays = test::probe_rays(scene);
       expect_same_hits(what, nodes, paired, rays, false);
-      if (trace_variant_of(scene.features, scene.settings) == kBvhTriangles)
+      if (trace_variant_of(scene.features, scene.settings, false, true) == kBvhTriangles)
         expect_same_hits(what + ", variant bvh_triangles", nodes, paired, rays, true);
     }
   std::filesystem::remove_all(dir);

@@ -2,17 +2,19 @@
 // code compiled with only one structure's traversal and one set of shapes, and runs only the
 // scenes whose needs it holds. Here, on the CPU, the same template code: each variant answers
 // every probe ray of every shipped scene it runs, under every structure it holds (bvh's binary
-// tree, and its 8-wide tree as the device holds it when asked), exactly as the full code does;
-// and a scene runs on the variant the table says.
+// tree with pair records where the device builds them, and its 8-wide tree as the device holds
+// it when asked), exactly as the full code does; and a scene runs on the variant the table says.
 #include <gtest/gtest.h>
 
 #include <cstring>
 
+#include "accel/bvh_pairs_builder.h"
 #include "accel/wide_bvh_builder.h"
 #include "kernel/accel/trace.h"
 #include "kernel/accel/trace_variants.h"
 #include "options/enum_names.h"
 #include "probe_rays.h"
+#include "render/device_bvh.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_types.h"
 #include "test_util.h"
@@ -54,11 +56,20 @@ TEST(TraceVariants, EachVariantAnswersAsTheFullCodeInEveryShippedSceneItRuns) {
       const Scene scene = load_scene(scene_path.string(), ov);
       for (const bool wide_tree : {false, true}) {
         if (wide_tree && scene.wide_nodes.empty()) continue;
-        const int v = trace_variant_of(scene.features, scene.settings, wide_tree);
+        SceneView view = scene.view();  // the full code walks the wide tree where the view holds one
+        BvhPairs pairs;  // the binary tree's pair records where a device upload builds them
+        if (!wide_tree) {
+          view.wide_node_count = 0;
+          if (device_pair_records(view)) {
+            pairs = build_bvh_pairs(scene.bvh_nodes, scene.bounded, scene.primitives, scene_path.string());
+            view.bvh_pairs = pairs.nodes.data();
+            view.bvh_pair_triangles = pairs.triangles.data();
+            view.bvh_pair_count = static_cast<uint32_t>(pairs.nodes.size());
+          }
+        }
+        const int v = trace_variant_of(scene.features, scene.settings, wide_tree, view.bvh_pair_count != 0);
         if (v < 0) continue;
         ++scenes_run[v];
-        SceneView view = scene.view();  // the full code walks the wide tree where the view holds one
-        if (!wide_tree) view.wide_node_count = 0;
         expect_variant_answers_as_full_code(scene_path.string() + " with " + accel, view, v, test::probe_rays(scene));
       }
     }
@@ -74,13 +85,21 @@ TEST(TraceVariants, ASceneRunsOnTheFirstVariantThatHoldsItsNeeds) {
     return std::string(
         trace_variant_name(trace_variant_for(trace_code_needed(features, accel, TriangleTest::Watertight, true))));
   };
+  const auto name_with_pairs = [](uint32_t features, AccelKind accel) {
+    return std::string(trace_variant_name(
+        trace_variant_for(trace_code_needed(features, accel, TriangleTest::Watertight, false, true))));
+  };
   const uint32_t lambert = kFeatureLambert | kFeatureEmissive | kFeatureTextures;  // not shapes: no trace code
-  EXPECT_EQ(name(kFeatureTriangle | lambert, AccelKind::Bvh), "bvh_triangles");
-  EXPECT_EQ(name(kFeatureTriangle | kFeaturePlane, AccelKind::Lbvh), "bvh_triangles");
+  EXPECT_EQ(name_with_pairs(kFeatureTriangle | lambert, AccelKind::Bvh), "bvh_triangles");
+  EXPECT_EQ(name_with_pairs(kFeatureTriangle | kFeaturePlane, AccelKind::Lbvh), "bvh_triangles");
+  // the binary tree without pair records (its root a leaf, or an upload of its nodes alone): the
+  // first row that holds the node walk, the wide tree's, whose fallback it is
+  EXPECT_EQ(name(kFeatureTriangle | lambert, AccelKind::Bvh), "wide_bvh_triangles");
+  EXPECT_EQ(name(kFeatureTriangle | kFeaturePlane, AccelKind::Lbvh), "wide_bvh_triangles");
   EXPECT_EQ(name(kFeatureSphere | kFeaturePlane, AccelKind::Bvh), "bvh_spheres");
   EXPECT_EQ(name_with_wide_tree(kFeatureTriangle | kFeaturePlane, AccelKind::Bvh), "wide_bvh_triangles");
   // the wide tree is bvh's alone; a sphere scene's wide tree runs on the full code (on the GPU, its binary walk)
-  EXPECT_EQ(name_with_wide_tree(kFeatureTriangle, AccelKind::Lbvh), "bvh_triangles");
+  EXPECT_EQ(name_with_wide_tree(kFeatureTriangle, AccelKind::Lbvh), "wide_bvh_triangles");
   EXPECT_EQ(name_with_wide_tree(kFeatureSphere, AccelKind::Bvh), "full");
   EXPECT_EQ(name(kFeatureTriangle, AccelKind::KdtreeMedian), "kdtree_triangles");
   EXPECT_EQ(name(kFeatureSphere, AccelKind::Kdtree), "kdtree_spheres");
@@ -107,7 +126,7 @@ TEST(TraceVariants, AWideTreeDeeperThanTheStackGivesTheSameHits) {
   int deeper = 0;
   for (const auto& scene_path : test::shipped_scenes()) {
     const Scene scene = load_scene(scene_path.string(), RenderOverrides{});
-    if (trace_variant_of(scene.features, scene.settings, true) != kWide || wide_bvh_stack_need(scene.wide_nodes) <= 8)
+    if (trace_variant_of(scene.features, scene.settings, true, false) != kWide || wide_bvh_stack_need(scene.wide_nodes) <= 8)
       continue;
     ++deeper;
     const SceneView view = scene.view();

@@ -65,6 +65,11 @@ TEST(BundleReferences, EachEditedIndexIsRefusedByName) {
       {"mesh.json", AccelKind::Bvh, [](Scene& s) { s.primitives.back().shading = 1 << 30; }, "shading 1073741824 of"},
       {"mesh.json", AccelKind::Bvh, [](Scene& s) { s.bounded[0] = static_cast<uint32_t>(s.primitives.size()); },
        "bounded[0]: primitive"},
+      // planes are unbounded: a structure's leaves test without them
+      {"mesh.json", AccelKind::Bvh, [](Scene& s) { s.primitives[s.bounded[0]].kind = ShapeKind::Plane; },
+       "bounded[0]: primitive"},
+      {"mesh.json", AccelKind::Grid, [](Scene& s) { s.primitives[s.grid_prims[0]].kind = ShapeKind::Plane; },
+       "is a plane, which no structure holds"},
       {"mesh.json", AccelKind::Lbvh,
        [](Scene& s) { s.bvh_nodes[0].first = static_cast<uint32_t>(s.bvh_nodes.size() - 1); },
        "bvh_nodes[0]: children"},

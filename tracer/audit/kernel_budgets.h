@@ -103,26 +103,32 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     {"view_shade_stage_kernel",           48,    0, 0, 0, 128},
     {"shadow_any_hit_stage_kernel",       72,  560, 0, 0, 128},
     // the trace variants' stages (kernel/accel/trace_variants.h), held to 64 registers; each shadow
-    // stage traces a mirror image's two ways too (trace_shadows: one traversal call site), two to
-    // four registers more for the sphere variants, 80 bytes of spills for the 8-wide tree's
-    // the binary tree walked through its pair records (kernel/accel/traverse_bvh_pairs.h): a stack
-    // of (record, entry distance), 512 bytes, and 12 / 8 bytes of spill stores at 64 registers;
-    // 2.2x the node walk's primary and 2.0x its incoherent rays on an H200 (docs/cuda.md)
-    {"closest_hit_bvh_triangles_kernel",  64,  576, 12, 0, 128},
-    {"shadow_any_hit_bvh_triangles_kernel", 64, 576, 12, 0, 128},
-    // the 8-wide tree: its 64-entry stack, the binary walk's for a deeper tree; 16 bytes of spill stores
-    {"closest_hit_wide_bvh_triangles_kernel", 64, 1104, 76, 0, 128},
-    {"shadow_any_hit_wide_bvh_triangles_kernel", 64, 1120, 72, 0, 128},
-    {"closest_hit_bvh_spheres_kernel",    50,  272, 0, 0, 128},
+    // stage traces a mirror image's two ways too (trace_shadows: one traversal call site), so the
+    // sphere variants' shadow stages hold more. Since 2026-11-28 a structure's leaves test with
+    // leaf_trace_code (no plane test: planes are unbounded), which freed the registers the 8-wide
+    // closest-hit kernel spilled (76 bytes -> 0) and the sphere rows' (4 to 7 fewer); the grid's
+    // triangle rows took 2 and 1 more, the 8-wide shadow row spills 34 bytes (12 before): ptxas's
+    // choices at the 64-register cap.
+    // The binary tree walked through its pair records (kernel/accel/traverse_bvh_pairs.h): a stack
+    // of (record, entry distance), 512 bytes; 2.2x the node walk's primary and 2.0x its incoherent
+    // rays on an H200 (docs/cuda.md). The walk alone since 2026-11-28 (kTraceBvhPairs: a tree
+    // without records runs the wide tree's row, which holds the node walk): no spills (12 bytes
+    // in the closest-hit kernel before, with the node walk beside it)
+    {"closest_hit_bvh_triangles_kernel",  64,  560, 0, 0, 128},
+    {"shadow_any_hit_bvh_triangles_kernel", 64, 560, 0, 0, 128},
+    // the 8-wide tree: its 64-entry stack, the binary walk's for a deeper tree or none
+    {"closest_hit_wide_bvh_triangles_kernel", 64, 1088, 0, 0, 128},
+    {"shadow_any_hit_wide_bvh_triangles_kernel", 64, 1104, 34, 0, 128},
+    {"closest_hit_bvh_spheres_kernel",    48,  272, 0, 0, 128},
     {"shadow_any_hit_bvh_spheres_kernel", 61,  272, 0, 0, 128},
     {"closest_hit_kdtree_triangles_kernel", 64,  0, 0, 0, 128},
     {"shadow_any_hit_kdtree_triangles_kernel", 64, 0, 0, 0, 128},
-    {"closest_hit_kdtree_spheres_kernel", 47,    0, 0, 0, 128},
-    {"shadow_any_hit_kdtree_spheres_kernel", 61,  0, 0, 0, 128},
-    {"closest_hit_grid_triangles_kernel", 62,   16, 0, 0, 128},
-    {"shadow_any_hit_grid_triangles_kernel", 62, 16, 0, 0, 128},
-    {"closest_hit_grid_spheres_kernel",   46,   16, 0, 0, 128},
-    {"shadow_any_hit_grid_spheres_kernel", 61,   0, 0, 0, 128},
+    {"closest_hit_kdtree_spheres_kernel", 43,    0, 0, 0, 128},
+    {"shadow_any_hit_kdtree_spheres_kernel", 60,  0, 0, 0, 128},
+    {"closest_hit_grid_triangles_kernel", 64,   16, 0, 0, 128},
+    {"shadow_any_hit_grid_triangles_kernel", 63, 16, 0, 0, 128},
+    {"closest_hit_grid_spheres_kernel",   43,   16, 0, 0, 128},
+    {"shadow_any_hit_grid_spheres_kernel", 60,   0, 0, 0, 128},
     {"split_kernel",                      17,    0, 0, 0, 128},
     {"end_batch_kernel",                  28,    0, 0, 0, 128},
     // the LBVH build (cuda/lbvh_gpu.cu)
@@ -136,7 +142,8 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     {"shape_kernel",                      42,    0, 0, 0, 256},
     {"bsdf_kernel",                       56,    0, 0, 0, 256},
     {"adaptive_kernel",                   46,    0, 0, 0, 256},
-    {"trace_kernel",                      96,  560, 0, 0, 256},
+    // the leaves' tests without a plane's (leaf_trace_code, 2026-11-28): 96 -> 90
+    {"trace_kernel",                      90,  560, 0, 0, 256},
     // the path tracer's sample, with mirror images; one more for per-axis texture wrap
     {"sample_kernel",                    208, 3200, 0, 0, 256},
 };

@@ -34,6 +34,17 @@ std::string primitive_ids(const char* array, const std::vector<uint32_t>& ids, s
   return "";
 }
 
+// A structure's primitives: in range, and no plane (planes are unbounded, tested before any
+// walk; a structure's leaves test without them, kernel/accel/primitive_hit.h).
+std::string bounded_ids(const char* array, const std::vector<uint32_t>& ids, const std::vector<Primitive>& primitives) {
+  const std::string range = primitive_ids(array, ids, primitives.size());
+  if (!range.empty()) return range;
+  for (size_t i = 0; i < ids.size(); ++i)
+    if (primitives[ids[i]].kind == ShapeKind::Plane)
+      return at(array, i) + "primitive " + std::to_string(ids[i]) + " is a plane, which no structure holds";
+  return "";
+}
+
 bool texture_or_none(uint32_t t, size_t textures) { return t == kNoTexture || t < textures; }
 
 std::string materials_violation(const SceneArrays& a) {
@@ -118,9 +129,12 @@ std::string wide_violation(const SceneArrays& a) {
     const TriangleBlock& b = a.triangle_blocks[i];
     if ((b.triangle_lanes | b.other_lanes) > 0xfu || (b.triangle_lanes & b.other_lanes) != 0u)
       return at("triangle_blocks", i) + "lanes out of range";
-    for (int l = 0; l < kBlockLanes; ++l)
+    for (int l = 0; l < kBlockLanes; ++l) {
       if (((b.triangle_lanes | b.other_lanes) >> l & 1u) && b.id[l] >= a.primitives.size())
         return at("triangle_blocks", i) + "primitive " + of(b.id[l], a.primitives.size(), "primitives");
+      if ((b.other_lanes >> l & 1u) && a.primitives[b.id[l]].kind == ShapeKind::Plane)
+        return at("triangle_blocks", i) + "primitive " + std::to_string(b.id[l]) + " is a plane, which no structure holds";
+    }
   }
   const std::vector<WideBvhNode>& nodes = a.wide_nodes;
   if (nodes.empty()) return "";
@@ -238,10 +252,10 @@ std::string bundle_reference_violation(const SceneArrays& a, const SceneView& v)
       return at("primitives", i) + "shading " +
              of(static_cast<uint64_t>(p.shading), a.triangle_shading.size(), "triangles' shading records");
   }
-  for (const std::string& problem : {primitive_ids("bounded", a.bounded, a.primitives.size()),
+  for (const std::string& problem : {bounded_ids("bounded", a.bounded, a.primitives),
                                      primitive_ids("unbounded", a.unbounded, a.primitives.size()),
-                                     primitive_ids("kd_prims", a.kd_prims, a.primitives.size()),
-                                     primitive_ids("grid_prims", a.grid_prims, a.primitives.size()),
+                                     bounded_ids("kd_prims", a.kd_prims, a.primitives),
+                                     bounded_ids("grid_prims", a.grid_prims, a.primitives),
                                      primitive_ids("mirror_prims", a.mirror_prims, a.primitives.size()),
                                      materials_violation(a), textures_violation(a), bvh_violation(a), wide_violation(a),
                                      kd_and_grid_violation(a), lights_violation(a, v), background_violation(a, v)})

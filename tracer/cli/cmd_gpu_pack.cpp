@@ -22,6 +22,7 @@
 #include "options/enum_names.h"
 #include "parity/parallel_for.h"
 #include "parity/parity_suite.h"
+#include "render/device_bvh.h"
 #include "scene/scene_loader.h"
 #include "scene/scene_types.h"
 
@@ -257,6 +258,14 @@ void write_scene_bundle(const Scene& scene, const std::string& scene_file, const
                                                                     scene_file, keep_wide_tree)));
 }
 
+// The trace variant the device runs a bundle of `scene` on (`wide_tree`: the bundle keeps bvh's
+// 8-wide tree, else the device walks the binary tree, with pair records where it builds them).
+int device_trace_variant(const Scene& scene, bool wide_tree) {
+  SceneView view = scene.view();
+  if (!wide_tree) view.wide_node_count = 0;
+  return trace_variant_of(scene.features, scene.settings, wide_tree, !wide_tree && device_pair_records(view));
+}
+
 // A golden that renders an image, as loaded: its scene's FeatureBit mask and settings.
 struct LoadedGolden {
   const GoldenEntry* entry;
@@ -280,14 +289,20 @@ std::string trace_variant_rows(const GoldenManifest& manifest, const std::vector
       const bool wide_tree = accel == "bvh8";
       RenderSettings settings = g.settings;
       settings.accel = wide_tree ? AccelKind::Bvh : parse_enum<AccelKind>(accel, "accel");
-      const int v = trace_variant_of(g.features, settings, wide_tree);
-      if (v < 0 || covered[v]) continue;
-      covered[v] = true;
+      // With pair records where a scene of triangles may have them; the loaded tree says (a
+      // root that is a leaf has none).
+      const bool may_pair = device_bvh_for(g.features, wide_tree) == DeviceBvh::Pairs;
+      const int likely = trace_variant_of(g.features, settings, wide_tree, may_pair);
+      if (likely < 0 || covered[likely]) continue;
       throw_if_interrupted();
       RenderOverrides options = golden_overrides(manifest, *g.entry);
       options.accel = settings.accel;
+      const Scene scene = load_scene(manifest.scene_path(*g.entry), options);
+      const int v = device_trace_variant(scene, wide_tree);
+      if (v < 0 || covered[v]) continue;
+      covered[v] = true;
       const std::string name = g.entry->name + "@" + accel, file = "bundles/" + name + ".bundle";
-      write_scene_bundle(load_scene(manifest.scene_path(*g.entry), options), g.entry->scene, out / file, wide_tree);
+      write_scene_bundle(scene, g.entry->scene, out / file, wide_tree);
       rows += "golden " + name + "@stream " + file + " " + g.entry->hash + " stream:4099\n";
     }
   return rows;
@@ -309,7 +324,7 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
     list += kind + e.name + " " + file + " " + e.hash + " megakernel\n";
     // The stream schedule at a width that splits pixels between batches: the same image.
     list += kind + e.name + "@stream " + file + " " + e.hash + " stream:4099\n";
-    const int v = trace_variant_of(scene.features, scene.settings);
+    const int v = device_trace_variant(scene, false);
     if (v >= 0) traced[v] = true;
     if (e.image == GoldenImage::Render) renders.push_back({&e, scene.features, scene.settings});
   }

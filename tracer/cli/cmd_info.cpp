@@ -8,6 +8,7 @@
 #include "cli/command_registry.h"
 #include "kernel/accel/trace_variants.h"
 #include "options/enum_names.h"
+#include "render/device_bvh.h"
 #include "scene/scene_loader.h"
 
 namespace tracer {
@@ -68,8 +69,10 @@ static int run_info(const std::string& scene_path, const std::optional<std::stri
                                                                    : std::to_string(accel.nodes) + " nodes";
   std::printf("\naccel      %s: %s over %zu bounded primitives, %zu unbounded; load and build %.3f s\n",
               accel.name.c_str(), size.c_str(), scene.bounded.size(), scene.unbounded.size(), seconds);
+  SceneView gpu_view = scene.view();  // what `render --device cuda` uploads: the binary tree alone
+  gpu_view.wide_node_count = 0;
   std::printf("gpu trace  %s (the stream schedule's closest-hit and shadow kernels, docs/cuda.md)\n",
-              trace_variant_name(trace_variant_of(scene.features, scene.settings)));
+              trace_variant_name(trace_variant_of(scene.features, scene.settings, false, device_pair_records(gpu_view))));
   return 0;
 }
 

@@ -24,6 +24,14 @@ TRACER_HD void keep_if_closer(Hit& best, float t, uint32_t id, float b1, float b
   if (t < best.t || id < best.prim) best = {t, id, b1, b2};
 }
 
+// The code a structure's leaves test with: kCode less the planes, which no structure holds
+// (they are unbounded: trace_into tests them before the walk), so no leaf keeps a plane
+// test's operands live.
+template <uint32_t kCode>
+TRACER_HD constexpr uint32_t leaf_trace_code() {
+  return kCode & ~uint32_t{kFeaturePlane};
+}
+
 // Tests one primitive; keeps it when (t, id) is below the best so far and its material does not
 // cut the hit out (alpha_test.h). A shape or triangle
 // test outside kCode (trace_code.h) is never in the scenes that run it.

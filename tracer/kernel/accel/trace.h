@@ -29,7 +29,7 @@ TRACER_HD void trace_into(const SceneView& scene, const Ray& ray, Hit& best, boo
     case AccelKind::None:
       if (!traces<kCode>(kTraceBruteForce)) break;
       for (uint32_t i = 0; i < scene.bounded_count; ++i) {
-        test_primitive<kCode>(scene, scene.bounded[i], ray, shear, best);
+        test_primitive<leaf_trace_code<kCode>()>(scene, scene.bounded[i], ray, shear, best);
         if (any && best.prim != kNoHit) return;
       }
       break;

@@ -26,14 +26,19 @@ constexpr uint32_t kTraceKdtree = 1u << 22;
 constexpr uint32_t kTraceGrid = 1u << 23;
 // bvh's 8-wide tree (kernel/accel/traverse_wide_bvh.h), walked where the scene's view holds one.
 constexpr uint32_t kTraceWideBvh = 1u << 24;
+// The binary tree's pair records (kernel/accel/traverse_bvh_pairs.h), walked where the view
+// holds them (a GPU upload of a scene of triangles: render/device_bvh.h); kTraceBvh is the
+// walk of its nodes, which a scene without records needs.
+constexpr uint32_t kTraceBvhPairs = 1u << 25;
 constexpr uint32_t kTraceAll = 0xffffffffu;
 
-// The traversal bit of a structure; `wide_tree`: bvh's 8-wide tree is the one walked.
-TRACER_HD constexpr uint32_t trace_accel_bit(AccelKind accel, bool wide_tree = false) {
+// The traversal bit of a structure; `wide_tree`: bvh's 8-wide tree is the one walked;
+// `pair_records`: the binary tree's pair records are (bvh and lbvh).
+TRACER_HD constexpr uint32_t trace_accel_bit(AccelKind accel, bool wide_tree = false, bool pair_records = false) {
   switch (accel) {
     case AccelKind::None: return kTraceBruteForce;
-    case AccelKind::Bvh: return wide_tree ? kTraceWideBvh : kTraceBvh;
-    case AccelKind::Lbvh: return kTraceBvh;
+    case AccelKind::Bvh: return wide_tree ? kTraceWideBvh : pair_records ? kTraceBvhPairs : kTraceBvh;
+    case AccelKind::Lbvh: return pair_records ? kTraceBvhPairs : kTraceBvh;
     case AccelKind::Kdtree:
     case AccelKind::KdtreeMedian: return kTraceKdtree;
     case AccelKind::Grid: return kTraceGrid;
@@ -85,26 +90,21 @@ TRACER_HD constexpr bool walks_wide_bvh() {
 
 // Whether code kCode walks the binary tree's pair records (kernel/accel/bvh_pair_node.h)
 // where the view holds them, which it does only for scenes whose bounded primitives are all
-// triangles. On the GPU every code that walks the binary tree does but the wide tree's
-// variant, whose device holds no records (it keeps its node fallback).
+// triangles: the full code and bvh_triangles (the wide tree's variant keeps the node walk, as
+// its device holds no records).
 template <uint32_t kCode>
 TRACER_HD constexpr bool walks_bvh_pairs() {
-#if defined(__CUDA_ARCH__)
-  return traces<kCode>(kTraceBvh) && traces<kCode>(kFeatureTriangle) &&
-         (is_full_code<kCode>() || !traces<kCode>(kTraceWideBvh));
-#else
-  return traces<kCode>(kTraceBvh) && traces<kCode>(kFeatureTriangle);
-#endif
+  return traces<kCode>(kTraceBvhPairs) && traces<kCode>(kFeatureTriangle);
 }
 
 // The code that traces a scene: the shapes it holds (its FeatureBit mask), the triangle test
 // its settings name when it holds triangles, and its structure's traversal (`wide_tree`: its
-// view holds bvh's 8-wide tree).
+// view holds bvh's 8-wide tree; `pair_records`: the binary tree's pair records).
 TRACER_HD constexpr uint32_t trace_code_needed(uint32_t features, AccelKind accel, TriangleTest test,
-                                               bool wide_tree = false) {
+                                               bool wide_tree = false, bool pair_records = false) {
   const uint32_t shapes = features & kTraceShapes;
   return shapes | ((shapes & kFeatureTriangle) != 0 ? trace_triangle_test_bit(test) : 0u) |
-         ((features & kFeatureAlpha) != 0 ? kTraceAlpha : 0u) | trace_accel_bit(accel, wide_tree);
+         ((features & kFeatureAlpha) != 0 ? kTraceAlpha : 0u) | trace_accel_bit(accel, wide_tree, pair_records);
 }
 
 }  // namespace tracer

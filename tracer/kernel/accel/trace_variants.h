@@ -4,15 +4,17 @@
 // closest_hit_stage_kernel and shadow_any_hit_stage_kernel, which hold all of it. Each row
 // is a structure with one set of shapes, held to 64 registers (docs/cuda.md, "Resource
 // budgets", has each row's registers and spills); the planes are in every row, at the cost
-// of no register. wide_bvh_triangles walks bvh's 8-wide tree where the device holds it
-// (cuda/device_scene.h), and the binary tree where it does not.
+// of no register. bvh_triangles walks the binary tree's pair records alone (a scene of
+// triangles whose upload has none, its root a leaf, runs on the next row that holds the node
+// walk); wide_bvh_triangles walks bvh's 8-wide tree where the device holds it
+// (cuda/device_scene.h), and the binary tree's nodes where it does not.
 #pragma once
 #include "kernel/accel/trace_code.h"
 
 namespace tracer {
 
 #define TRACER_TRACE_VARIANTS(X)                                                                         \
-  X(bvh_triangles, kTraceBvh | kFeatureTriangle | kFeaturePlane | kTraceWatertight)                      \
+  X(bvh_triangles, kTraceBvhPairs | kFeatureTriangle | kFeaturePlane | kTraceWatertight)                 \
   X(wide_bvh_triangles, kTraceWideBvh | kTraceBvh | kFeatureTriangle | kFeaturePlane | kTraceWatertight) \
   X(bvh_spheres, kTraceBvh | kFeatureSphere | kFeaturePlane)                                             \
   X(kdtree_triangles, kTraceKdtree | kFeatureTriangle | kFeaturePlane | kTraceWatertight)                \
@@ -38,9 +40,10 @@ constexpr int trace_variant_for(uint32_t needed) {
 }
 
 // The variant a scene runs on: `features` is its FeatureBit mask; `wide_tree`: the device
-// holds bvh's 8-wide tree.
-constexpr int trace_variant_of(uint32_t features, const RenderSettings& rs, bool wide_tree = false) {
-  return trace_variant_for(trace_code_needed(features, rs.accel, rs.triangle_test, wide_tree));
+// holds bvh's 8-wide tree; `pair_records`: it holds the binary tree's pair records
+// (device_pair_records, render/device_bvh.h, says where an upload does).
+constexpr int trace_variant_of(uint32_t features, const RenderSettings& rs, bool wide_tree, bool pair_records) {
+  return trace_variant_for(trace_code_needed(features, rs.accel, rs.triangle_test, wide_tree, pair_records));
 }
 
 // The variant's name, "full" for -1.

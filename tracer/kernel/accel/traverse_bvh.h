@@ -19,7 +19,7 @@ TRACER_HD void traverse_bvh(const SceneView& scene, const Ray& ray, const RayShe
     const BvhNode& n = scene.bvh_nodes[node];
     if (n.count > 0) {
       for (uint32_t i = 0; i < n.count; ++i) {
-        test_primitive<kCode>(scene, scene.bounded[n.first + i], ray, shear, best);
+        test_primitive<leaf_trace_code<kCode>()>(scene, scene.bounded[n.first + i], ray, shear, best);
         if (any && best.prim != kNoHit) return;
       }
     } else {

@@ -26,7 +26,7 @@ TRACER_HD void traverse_grid(const SceneView& scene, const Ray& ray, const RaySh
     const uint32_t c = static_cast<uint32_t>(cell[0]) +
                        g.n[0] * (static_cast<uint32_t>(cell[1]) + g.n[1] * static_cast<uint32_t>(cell[2]));
     for (uint32_t i = scene.grid_cell_start[c]; i < scene.grid_cell_start[c + 1]; ++i) {
-      test_primitive<kCode>(scene, scene.grid_prims[i], ray, shear, best);
+      test_primitive<leaf_trace_code<kCode>()>(scene, scene.grid_prims[i], ray, shear, best);
       if (any && best.prim != kNoHit) return;
     }
     // The boundary crossed first, and the t at which it is crossed.

@@ -43,7 +43,7 @@ TRACER_HD void traverse_kdtree(const SceneView& scene, const Ray& ray, const Ray
     }
     const KdNode& leaf = scene.kd_nodes[node];
     for (uint32_t i = 0; i < leaf.b; ++i) {
-      test_primitive<kCode>(scene, scene.kd_prims[leaf.a + i], ray, shear, best);
+      test_primitive<leaf_trace_code<kCode>()>(scene, scene.kd_prims[leaf.a + i], ray, shear, best);
       if (any && best.prim != kNoHit) return;
     }
     if (best.t < t_hi - scene.kd_pad) return;

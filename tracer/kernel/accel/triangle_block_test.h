@@ -51,7 +51,7 @@ template <uint32_t kCode = kTraceAll>
 TRACER_HD void test_triangle_block(const SceneView& scene, const TriangleBlock& b, const WideRayQuery& q,
                                    const Ray& ray, const RayShear& shear, Hit& best) {
   for (uint32_t lanes = b.other_lanes; lanes != 0; lanes &= lanes - 1)
-    test_primitive<kCode>(scene, b.id[lowest_set_bit(lanes)], ray, shear, best);
+    test_primitive<leaf_trace_code<kCode>()>(scene, b.id[lowest_set_bit(lanes)], ray, shear, best);
   if (!traces<kCode>(kFeatureTriangle)) return;
   const bool watertight = tests_watertight<kCode>(scene.settings.triangle_test);
   for (uint32_t lanes = watertight ? watertight_candidates(b, q) : b.triangle_lanes; lanes != 0; lanes &= lanes - 1) {
