@@ -57,7 +57,7 @@ TEST(TraceVariants, EachVariantAnswersAsTheFullCodeInEveryShippedSceneItRuns) {
       for (const bool wide_tree : {false, true}) {
         if (wide_tree && scene.wide_nodes.empty()) continue;
         SceneView view = scene.view();  // the full code walks the wide tree where the view holds one
-        BvhPairs pairs;  // the binary tree's pair records where a device upload builds them
+        BvhPairs pairs;                 // the binary tree's pair records where a device upload builds them
         if (!wide_tree) {
           view.wide_node_count = 0;
           if (device_pair_records(view)) {
@@ -126,7 +126,8 @@ TEST(TraceVariants, AWideTreeDeeperThanTheStackGivesTheSameHits) {
   int deeper = 0;
   for (const auto& scene_path : test::shipped_scenes()) {
     const Scene scene = load_scene(scene_path.string(), RenderOverrides{});
-    if (trace_variant_of(scene.features, scene.settings, true, false) != kWide || wide_bvh_stack_need(scene.wide_nodes) <= 8)
+    if (trace_variant_of(scene.features, scene.settings, true, false) != kWide ||
+        wide_bvh_stack_need(scene.wide_nodes) <= 8)
       continue;
     ++deeper;
     const SceneView view = scene.view();

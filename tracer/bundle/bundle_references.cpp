@@ -133,7 +133,8 @@ std::string wide_violation(const SceneArrays& a) {
       if (((b.triangle_lanes | b.other_lanes) >> l & 1u) && b.id[l] >= a.primitives.size())
         return at("triangle_blocks", i) + "primitive " + of(b.id[l], a.primitives.size(), "primitives");
       if ((b.other_lanes >> l & 1u) && a.primitives[b.id[l]].kind == ShapeKind::Plane)
-        return at("triangle_blocks", i) + "primitive " + std::to_string(b.id[l]) + " is a plane, which no structure holds";
+        return at("triangle_blocks", i) + "primitive " + std::to_string(b.id[l]) +
+               " is a plane, which no structure holds";
     }
   }
   const std::vector<WideBvhNode>& nodes = a.wide_nodes;
@@ -252,13 +253,12 @@ std::string bundle_reference_violation(const SceneArrays& a, const SceneView& v)
       return at("primitives", i) + "shading " +
              of(static_cast<uint64_t>(p.shading), a.triangle_shading.size(), "triangles' shading records");
   }
-  for (const std::string& problem : {bounded_ids("bounded", a.bounded, a.primitives),
-                                     primitive_ids("unbounded", a.unbounded, a.primitives.size()),
-                                     bounded_ids("kd_prims", a.kd_prims, a.primitives),
-                                     bounded_ids("grid_prims", a.grid_prims, a.primitives),
-                                     primitive_ids("mirror_prims", a.mirror_prims, a.primitives.size()),
-                                     materials_violation(a), textures_violation(a), bvh_violation(a), wide_violation(a),
-                                     kd_and_grid_violation(a), lights_violation(a, v), background_violation(a, v)})
+  for (const std::string& problem :
+       {bounded_ids("bounded", a.bounded, a.primitives), primitive_ids("unbounded", a.unbounded, a.primitives.size()),
+        bounded_ids("kd_prims", a.kd_prims, a.primitives), bounded_ids("grid_prims", a.grid_prims, a.primitives),
+        primitive_ids("mirror_prims", a.mirror_prims, a.primitives.size()), materials_violation(a),
+        textures_violation(a), bvh_violation(a), wide_violation(a), kd_and_grid_violation(a), lights_violation(a, v),
+        background_violation(a, v)})
     if (!problem.empty()) return problem;
   return "";
 }

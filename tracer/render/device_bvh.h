@@ -13,16 +13,18 @@ enum class DeviceBvh {
 };
 
 // The tree an upload of a scene with FeatureBit mask `features` asks for, and of `view` (its
-// arrays on the host): the 8-wide one where it keeps it (a bundle can), else the binary one, with its pair records where the
-// scene's bounded shapes are all triangles (the records hold triangles only: for any other
-// scene they would be walked for nothing).
+// arrays on the host): the 8-wide one where it keeps it (a bundle can), else the binary one,
+// with its pair records where the scene's bounded shapes are all triangles (the records hold
+// triangles only: for any other scene they would be walked for nothing).
 inline DeviceBvh device_bvh_for(uint32_t features, bool wide_tree) {
   if (wide_tree) return DeviceBvh::Wide;
   const uint32_t bounded_shapes = kTraceShapes & ~kFeaturePlane;
   return (features & bounded_shapes) == kFeatureTriangle ? DeviceBvh::Pairs : DeviceBvh::Binary;
 }
 
-inline DeviceBvh device_bvh_of(const SceneView& view) { return device_bvh_for(view.features, view.wide_node_count != 0); }
+inline DeviceBvh device_bvh_of(const SceneView& view) {
+  return device_bvh_for(view.features, view.wide_node_count != 0);
+}
 
 // Whether that upload holds pair records: asked for them, and its binary tree's root is an
 // interior node (build_bvh_pairs makes none for a root that is a leaf, or for no tree).
