@@ -48,6 +48,23 @@ TEST(Bench, ConvergeWritesTableCsvAndPlot) {
   std::filesystem::remove_all(dir);
 }
 
+// bench path --sampler: every scene renders with it (each row names the sampler its scene ran
+// with); a sampler that is not one exits 2 naming the flag.
+TEST(Bench, PathRendersEverySceneWithTheSamplerGiven) {
+  const std::string scene = test::source_path("scenes/cornell-box-path.json");  // its own: stochastic
+  std::string output;
+  ASSERT_EQ(test::run_tracer("bench path " + scene + " --size 8 --spp 1 --repeats 1 --threads 1", &output), 0)
+      << output;
+  EXPECT_NE(output.find("cornell-box-path.json (stochastic)"), std::string::npos) << output;
+  ASSERT_EQ(
+      test::run_tracer("bench path " + scene + " --sampler sobol --size 8 --spp 1 --repeats 1 --threads 1", &output), 0)
+      << output;
+  EXPECT_NE(output.find("sampler sobol in every scene"), std::string::npos) << output;
+  EXPECT_NE(output.find("cornell-box-path.json (sobol)"), std::string::npos) << output;
+  EXPECT_EQ(test::run_tracer("bench path " + scene + " --sampler sobel --size 8 --spp 1", &output), 2);
+  EXPECT_NE(output.find("--sampler: unknown sampler \"sobel\""), std::string::npos) << output;
+}
+
 // --configs: a series per configuration of render options, each against the first, its label
 // quoted in the CSV where it holds a comma; a configuration that is no such list exits 2 first.
 TEST(Bench, ConvergeComparesConfigurations) {

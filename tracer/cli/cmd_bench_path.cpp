@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <optional>
 
 #include "bench/bench_common.h"
 #include "bench/ray_recorder.h"
@@ -19,6 +20,7 @@
 #include "cli/number_checks.h"
 #include "io/input_error.h"
 #include "kernel/accel/trace.h"
+#include "options/enum_names.h"
 #include "render/cpu_kernel.h"
 #include "render/render_cpu.h"
 #include "scene/scene_loader.h"
@@ -28,7 +30,7 @@ namespace tracer {
 struct BenchPathCommand {
   std::vector<std::string> scenes;
   uint32_t spp = 4, size = 128, repeats = 3;
-  std::string threads = "1,2";
+  std::string threads = "1,2", sampler;  // sampler: empty keeps each scene's own
 };
 namespace {
 
@@ -79,14 +81,17 @@ static int run_bench_path(const BenchPathCommand& cmd) {
     if (t == 0 || t > 1024) throw InputError("--threads " + cmd.threads + ": thread counts are 1 to 1024");
     thread_counts.push_back(static_cast<int>(t));
   }
-  std::printf("tracer bench path: %ux%u pixels, %u spp, median of %u runs; Mrays/s\n", cmd.size, cmd.size, cmd.spp,
-              cmd.repeats);
+  std::optional<SamplerKind> sampler;
+  if (!cmd.sampler.empty()) sampler = parse_enum<SamplerKind>(cmd.sampler, "--sampler");
+  std::printf("tracer bench path: %ux%u pixels, %u spp, %s, median of %u runs; Mrays/s\n", cmd.size, cmd.size, cmd.spp,
+              sampler ? ("sampler " + cmd.sampler + " in every scene").c_str() : "each scene's sampler", cmd.repeats);
   std::printf("%-28s %7s %-16s %10s %10s %10s %8s | %10s %10s %8s\n", "scene", "threads", "kernel", "path",
               "per thread", "replayed", "ratio", "generic s", "special s", "speed-up");
   for (const std::string& path : scenes) {
     RenderOverrides ov;
     ov.width = ov.height = cmd.size;
     ov.spp = cmd.spp;
+    ov.sampler = sampler;
     const Scene scene = load_scene(path, ov);
     const SceneView view = scene.view();
     const CpuKernelVariant& special = cpu_kernel_for(view.features);
@@ -110,10 +115,11 @@ static int run_bench_path(const BenchPathCommand& cmd) {
           median_seconds(cmd.repeats, [&] { replay(view, special, closest, any, threads, hits, occluded); });
       const double path_rate = static_cast<double>(rays) / special_s / 1e6;
       const double replay_rate = static_cast<double>(rays) / replay_s / 1e6;
-      std::printf("%-28s %7d %-16s %10.2f %10.2f %10.2f %8.2f | %10.3f %10.3f %8.2f\n",
-                  std::filesystem::path(path).filename().string().c_str(), threads, cpu_kernel_name(special).c_str(),
-                  path_rate, path_rate / threads, replay_rate, path_rate / replay_rate, generic_s, special_s,
-                  generic_s / special_s);
+      const std::string label = std::filesystem::path(path).filename().string() + " (" +
+                                enum_name(scene.settings.sampler) + ")";  // the sampler it ran with
+      std::printf("%-28s %7d %-16s %10.2f %10.2f %10.2f %8.2f | %10.3f %10.3f %8.2f\n", label.c_str(), threads,
+                  cpu_kernel_name(special).c_str(), path_rate, path_rate / threads, replay_rate,
+                  path_rate / replay_rate, generic_s, special_s, generic_s / special_s);
     }
   }
   std::printf("ratio: path Mrays/s over the replayed rate of the same rays (traversal alone)\n");
@@ -132,6 +138,9 @@ const RegisterCommand kBenchPathCommand(
        app.add_option("--repeats", cmd->repeats, "runs per measurement; the median is kept (default 3)")
            ->check(count_in(1, 100));
        app.add_option("--threads", cmd->threads, "comma-separated thread counts (default 1,2)");
+       app.add_option("--sampler", cmd->sampler,
+                      "render every scene with this sampler (center, grid, stochastic, stratified, sobol) instead of "
+                      "its own");
        return [cmd] { return run_bench_path(*cmd); };
      }});
 
