@@ -307,10 +307,7 @@ int run_pack(const Options& o) {
         // tree its upload holds (render/device_bvh.h).
         const SceneView view = view_for(b, ro);
         const std::string trace = view.settings.schedule == Schedule::Stream
-                                      ? std::string(", trace ") +
-                                            trace_variant_name(trace_variant_of(view.features, view.settings,
-                                                                                view.wide_node_count != 0,
-                                                                                device_pair_records(view)))
+                                      ? std::string(", trace ") + trace_variant_name(device_trace_variant(view))
                                       : "";
         char text[160];
         std::snprintf(text, sizeof text, "%.6f s, %.1f Mrays/s%s", r.best_seconds, mrays_per_second(r), trace.c_str());

@@ -260,10 +260,10 @@ void write_scene_bundle(const Scene& scene, const std::string& scene_file, const
 
 // The trace variant the device runs a bundle of `scene` on (`wide_tree`: the bundle keeps bvh's
 // 8-wide tree, else the device walks the binary tree, with pair records where it builds them).
-int device_trace_variant(const Scene& scene, bool wide_tree) {
+int bundle_trace_variant(const Scene& scene, bool wide_tree) {
   SceneView view = scene.view();
   if (!wide_tree) view.wide_node_count = 0;
-  return trace_variant_of(scene.features, scene.settings, wide_tree, !wide_tree && device_pair_records(view));
+  return device_trace_variant(view);
 }
 
 // A golden that renders an image, as loaded: its scene's FeatureBit mask and settings.
@@ -298,7 +298,7 @@ std::string trace_variant_rows(const GoldenManifest& manifest, const std::vector
       RenderOverrides options = golden_overrides(manifest, *g.entry);
       options.accel = settings.accel;
       const Scene scene = load_scene(manifest.scene_path(*g.entry), options);
-      const int v = device_trace_variant(scene, wide_tree);
+      const int v = bundle_trace_variant(scene, wide_tree);
       if (v < 0 || covered[v]) continue;
       covered[v] = true;
       const std::string name = g.entry->name + "@" + accel, file = "bundles/" + name + ".bundle";
@@ -324,7 +324,7 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
     list += kind + e.name + " " + file + " " + e.hash + " megakernel\n";
     // The stream schedule at a width that splits pixels between batches: the same image.
     list += kind + e.name + "@stream " + file + " " + e.hash + " stream:4099\n";
-    const int v = device_trace_variant(scene, false);
+    const int v = bundle_trace_variant(scene, false);
     if (v >= 0) traced[v] = true;
     if (e.image == GoldenImage::Render) renders.push_back({&e, scene.features, scene.settings});
   }

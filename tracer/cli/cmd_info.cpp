@@ -71,9 +71,8 @@ static int run_info(const std::string& scene_path, const std::optional<std::stri
               accel.name.c_str(), size.c_str(), scene.bounded.size(), scene.unbounded.size(), seconds);
   SceneView gpu_view = scene.view();  // what `render --device cuda` uploads: the binary tree alone
   gpu_view.wide_node_count = 0;
-  std::printf(
-      "gpu trace  %s (the stream schedule's closest-hit and shadow kernels, docs/cuda.md)\n",
-      trace_variant_name(trace_variant_of(scene.features, scene.settings, false, device_pair_records(gpu_view))));
+  std::printf("gpu trace  %s (the stream schedule's closest-hit and shadow kernels, docs/cuda.md)\n",
+              trace_variant_name(device_trace_variant(gpu_view)));
   return 0;
 }
 

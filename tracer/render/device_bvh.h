@@ -1,7 +1,7 @@
 // Which of bvh's trees a GPU upload holds (cuda/device_scene.h) and so which one its kernels
 // walk: each gives the same hits.
 #pragma once
-#include "kernel/accel/trace_code.h"
+#include "kernel/accel/trace_variants.h"
 #include "kernel/scene/scene_view.h"
 
 namespace tracer {
@@ -30,6 +30,12 @@ inline DeviceBvh device_bvh_of(const SceneView& view) {
 // interior node (build_bvh_pairs makes none for a root that is a leaf, or for no tree).
 inline bool device_pair_records(const SceneView& view) {
   return device_bvh_of(view) == DeviceBvh::Pairs && view.bvh_node_count != 0 && view.bvh_nodes[0].count == 0;
+}
+
+// The trace variant the GPU's stream schedule runs that upload on (kernel/accel/trace_variants.h),
+// as `tracer info`, the pack and the runner name it; the device picks it from its own view.
+inline int device_trace_variant(const SceneView& view) {
+  return trace_variant_of(view.features, view.settings, view.wide_node_count != 0, device_pair_records(view));
 }
 
 }  // namespace tracer
