@@ -117,13 +117,13 @@ TEST(TraceVariants, ASceneRunsOnTheFirstVariantThatHoldsItsNeeds) {
 }
 
 // A tree deeper than the variant's stack is walked again by the binary traversal from the hit
-// so far: with a stack of 8 entries, every ray's answer in every shipped scene whose tree needs
-// more is the full code's.
+// so far (the wide walk returns false, and trace_into goes on to the binary one): with a stack
+// of 8 entries, every ray's answer in every shipped scene whose tree needs more is the full code's.
 TEST(TraceVariants, AWideTreeDeeperThanTheStackGivesTheSameHits) {
   constexpr int kWide =
       trace_variant_for(trace_code_needed(kFeatureTriangle, AccelKind::Bvh, TriangleTest::Watertight, true));
   constexpr uint32_t kCode = kTraceVariants[kWide].code;
-  int deeper = 0;
+  int deeper = 0, walked_again = 0;
   for (const auto& scene_path : test::shipped_scenes()) {
     const Scene scene = load_scene(scene_path.string(), RenderOverrides{});
     if (trace_variant_of(scene.features, scene.settings, true, false) != kWide ||
@@ -135,13 +135,17 @@ TEST(TraceVariants, AWideTreeDeeperThanTheStackGivesTheSameHits) {
       for (const bool any : {false, true}) {
         Hit full = {any ? 10.0f : kInfinity, kNoHit, 0.0f, 0.0f}, shallow = full;
         const RayShear shear = make_ray_shear(ray.dir);
-        traverse_wide_bvh(view, ray, shear, full, any);
-        traverse_wide_bvh<kCode, 8>(view, ray, shear, shallow, any);
+        ASSERT_TRUE(traverse_wide_bvh(view, ray, shear, full, any));  // the CPU's stack holds any tree
+        if (!traverse_wide_bvh<kCode, 8>(view, ray, shear, shallow, any)) {
+          ++walked_again;
+          traverse_bvh<kCode>(view, ray, shear, shallow, any);
+        }
         ASSERT_EQ(std::memcmp(&full, &shallow, sizeof(Hit)), 0)
             << scene_path << ", any " << any << ": prim " << shallow.prim;
       }
   }
   EXPECT_GT(deeper, 0) << "no shipped scene's tree is deeper than 8 entries: nothing checks the fallback";
+  EXPECT_GT(walked_again, 0) << "no probe ray outgrew the stack of 8";
 }
 
 }  // namespace

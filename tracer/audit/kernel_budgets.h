@@ -75,9 +75,11 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     {"view_render_kernel",                88,  560, 0, 0, 256},
     // adaptive sampling (cuda/gpu_adaptive.cu)
     // path: mirror images, as the megakernel (18.75 % occupancy -> 12.5 %)
-    // without mirror images 145 (18.75 %), with them 171 (12.5 %); 146 with spot lights and suns
-    {"path_adaptive_pass_kernel",        145, 1120, 0, 0, 128},
-    {"path_alpha_adaptive_pass_kernel",  147, 1120, 0, 0, 128},
+    // without mirror images 145 (18.75 %), with them 171 (12.5 %); 146 with spot lights and suns.
+    // 145 -> 148 and 147 -> 148 (2026-11-28) when a vertex's shadow queries took their image query
+    // by index (kernel/integrator/mirror_image_query.h), in the same occupancy step
+    {"path_adaptive_pass_kernel",        148, 1120, 0, 0, 128},
+    {"path_alpha_adaptive_pass_kernel",  148, 1120, 0, 0, 128},
     {"path_mirror_images_adaptive_pass_kernel", 185, 1120, 0, 0, 128},
     {"whitted_adaptive_pass_kernel",     168, 3760, 0, 0, 128},
     {"whitted_alpha_adaptive_pass_kernel", 172, 3760, 0, 0, 128},
@@ -114,21 +116,27 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     // rays on an H200 (docs/cuda.md). The walk alone since 2026-11-28 (kTraceBvhPairs: a tree
     // without records runs the wide tree's row, which holds the node walk): no spills (12 bytes
     // in the closest-hit kernel before, with the node walk beside it)
+    // Since 2026-11-28 the 8-wide walk returns where its tree is deeper than its stack and
+    // trace_into walks the binary tree from there (one call site of the node walk, not two):
+    // the 8-wide closest-hit stack 1088 -> 848 bytes, its shadow row's spills 34 -> 8 bytes. A
+    // vertex's shadow queries hold their legs in one pending mask and read the image query by
+    // index, not through a pointer (kernel/integrator/mirror_image_query.h): the last 8 bytes
+    // gone, every shadow row 2 to 5 registers fewer (the sphere rows 50 % -> 56.25 % occupancy)
     {"closest_hit_bvh_triangles_kernel",  64,  560, 0, 0, 128},
-    {"shadow_any_hit_bvh_triangles_kernel", 64, 560, 0, 0, 128},
+    {"shadow_any_hit_bvh_triangles_kernel", 62, 560, 0, 0, 128},
     // the 8-wide tree: its 64-entry stack, the binary walk's for a deeper tree or none
-    {"closest_hit_wide_bvh_triangles_kernel", 64, 1088, 0, 0, 128},
-    {"shadow_any_hit_wide_bvh_triangles_kernel", 64, 1104, 34, 0, 128},
+    {"closest_hit_wide_bvh_triangles_kernel", 64, 848, 0, 0, 128},
+    {"shadow_any_hit_wide_bvh_triangles_kernel", 64, 1072, 0, 0, 128},
     {"closest_hit_bvh_spheres_kernel",    48,  272, 0, 0, 128},
-    {"shadow_any_hit_bvh_spheres_kernel", 61,  272, 0, 0, 128},
+    {"shadow_any_hit_bvh_spheres_kernel", 56,  272, 0, 0, 128},
     {"closest_hit_kdtree_triangles_kernel", 64,  0, 0, 0, 128},
     {"shadow_any_hit_kdtree_triangles_kernel", 64, 0, 0, 0, 128},
     {"closest_hit_kdtree_spheres_kernel", 43,    0, 0, 0, 128},
-    {"shadow_any_hit_kdtree_spheres_kernel", 60,  0, 0, 0, 128},
+    {"shadow_any_hit_kdtree_spheres_kernel", 56,  0, 0, 0, 128},
     {"closest_hit_grid_triangles_kernel", 64,   16, 0, 0, 128},
-    {"shadow_any_hit_grid_triangles_kernel", 63, 16, 0, 0, 128},
+    {"shadow_any_hit_grid_triangles_kernel", 60, 16, 0, 0, 128},
     {"closest_hit_grid_spheres_kernel",   43,   16, 0, 0, 128},
-    {"shadow_any_hit_grid_spheres_kernel", 60,   0, 0, 0, 128},
+    {"shadow_any_hit_grid_spheres_kernel", 56,   0, 0, 0, 128},
     {"split_kernel",                      17,    0, 0, 0, 128},
     {"end_batch_kernel",                  28,    0, 0, 0, 128},
     // the LBVH build (cuda/lbvh_gpu.cu)

@@ -78,7 +78,7 @@ Vec3 split_path_sample(const SceneView& scene, uint32_t px, uint32_t py, uint32_
     const VertexLobe via_mirror[2] = {here, VertexLobe::Specular};
     const uint8_t kinds = static_cast<uint8_t>((step.shadow ? unsigned{kShadowLight} : 0u) |
                                                (step.mirror ? unsigned{kShadowMirror} : 0u));
-    const uint8_t clear = trace_shadows<kCode>(scene, kinds, shadow, &image);
+    const uint8_t clear = trace_shadows<kCode>(scene, kinds, shadow, &image, 0);
     if (clear & kShadowLight) take(PathEstimator::LightSample, vertices + 1, with_here, shadow.contribution);
     if (clear & kShadowMirror) take(PathEstimator::MirrorImage, vertices + 2, via_mirror, image.to_mirror.contribution);
     if (!step.alive) return total;

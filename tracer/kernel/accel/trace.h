@@ -33,11 +33,10 @@ TRACER_HD void trace_into(const SceneView& scene, const Ray& ray, Hit& best, boo
         if (any && best.prim != kNoHit) return;
       }
       break;
-    case AccelKind::Bvh:
-      if (walks_wide_bvh<kCode>() && scene.wide_node_count != 0) {
-        traverse_wide_bvh<kCode>(scene, ray, shear, best, any);
+    case AccelKind::Bvh:  // the 8-wide tree, or the binary one where it is deeper than the walk's stack
+      if (walks_wide_bvh<kCode>() && scene.wide_node_count != 0 &&
+          traverse_wide_bvh<kCode>(scene, ray, shear, best, any))
         break;
-      }
       [[fallthrough]];
     case AccelKind::Lbvh:
       if (walks_bvh_pairs<kCode>() && scene.bvh_pair_count != 0)

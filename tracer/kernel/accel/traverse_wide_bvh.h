@@ -16,7 +16,8 @@ constexpr int kWideStackSize = 7 * 61 + 1;
 // A trace variant's stack (kernel/accel/trace_variants.h: the GPU's wide-tree kernels), 768
 // bytes of local memory. ci/generate-meshes.sh's meshes need 28 (bunny) to 50 (mixed-60k) entries
 // (wide_bvh_stack_need, tracer/accel/wide_bvh_builder.h); a deeper tree is walked again
-// from the root by the binary traversal, from the hit found so far, so its hits stay the same.
+// from the root by the binary traversal, from the hit found so far, so its hits stay the same
+// (trace_into, kernel/accel/trace.h: one call site of that walk, not a second one in here).
 constexpr int kWideVariantStackSize = 64;
 
 template <uint32_t kCode>
@@ -24,8 +25,9 @@ constexpr int wide_stack_size() {
   return is_full_code<kCode>() ? kWideStackSize : kWideVariantStackSize;
 }
 
+// Returns false, `best` holding the hit found so far, where the tree is deeper than the stack.
 template <uint32_t kCode = kTraceAll, int kStackSize = wide_stack_size<kCode>()>
-TRACER_HD void traverse_wide_bvh(const SceneView& scene, const Ray& ray, const RayShear& shear, Hit& best, bool any) {
+TRACER_HD bool traverse_wide_bvh(const SceneView& scene, const Ray& ray, const RayShear& shear, Hit& best, bool any) {
   struct Entry {
     uint32_t child, leaf_blocks;
     float t_enter;
@@ -38,7 +40,7 @@ TRACER_HD void traverse_wide_bvh(const SceneView& scene, const Ray& ray, const R
     if (e.leaf_blocks != 0) {
       for (uint32_t b = e.child; b < e.child + e.leaf_blocks; ++b) {
         test_triangle_block<kCode>(scene, scene.triangle_blocks[b], q, ray, shear, best);
-        if (any && best.prim != kNoHit) return;
+        if (any && best.prim != kNoHit) return true;
       }
     } else {
       const WideBvhNode& n = scene.wide_nodes[e.child];
@@ -46,8 +48,7 @@ TRACER_HD void traverse_wide_bvh(const SceneView& scene, const Ray& ray, const R
       uint32_t hits = wide_box_hits(n, q, best.t, t_enter);
       if (hits != 0) {
         if (kStackSize < kWideStackSize && top + kWideBvhWidth - 1 > kStackSize) {
-          traverse_bvh<kCode>(scene, ray, shear, best, any);  // a tree deeper than this stack
-          return;
+          return false;  // a tree deeper than this stack
         }
         int i = lowest_set_bit(hits);
         Entry nearest = {n.child[i], n.leaf_blocks[i], t_enter[i]};
@@ -72,7 +73,7 @@ TRACER_HD void traverse_wide_bvh(const SceneView& scene, const Ray& ray, const R
       }
     }
     do {  // the next entry that starts no farther than the best hit
-      if (top == 0) return;
+      if (top == 0) return true;
       e = stack[--top];
     } while (e.t_enter > best.t);
   }

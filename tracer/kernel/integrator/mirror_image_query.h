@@ -31,30 +31,32 @@ TRACER_HD ShadowQuery mirror_to_light(const SceneView& scene, const MirrorQuery&
 
 // Traces the shadow queries `kinds` names, from one traversal call site (a GPU kernel then holds
 // one copy of it): the light sample's, then the image's way to the mirror and, where it gets
-// there, on to the light. Returns the bits of those that are clear; `image` may be null when
-// kinds has no kShadowMirror.
+// there, on to the light. Returns the bits of those that are clear. The image's query is
+// images[index], read only where kinds has kShadowMirror (images may be null otherwise): a GPU
+// kernel then holds the index it holds anyway, not a pointer, across the traversal.
 template <uint32_t kCode = kTraceAll>
 TRACER_HD uint8_t trace_shadows(const SceneView& scene, uint8_t kinds, const ShadowQuery& light,
-                                const MirrorQuery* image) {
-  enum Leg : uint8_t { kLegLight, kLegToMirror, kLegToLight, kLegDone };
-  uint8_t clear = 0u;
-  Leg leg = (kinds & kShadowLight) ? kLegLight : (kinds & kShadowMirror) ? kLegToMirror : kLegDone;
+                                const MirrorQuery* images, uint32_t index) {
+  constexpr uint8_t kToLight = 4u;  // the image's second way, after kShadowMirror's first
+  uint8_t clear = 0u, pending = kinds & (kShadowLight | kShadowMirror);
   ShadowQuery q;
-  if (leg == kLegLight) q = light;
-  if (leg == kLegToMirror) q = image->to_mirror;
-  while (leg != kLegDone) {  // any hit, or the closest where an emitter must be it
+  if (pending & kShadowLight)
+    q = light;
+  else if (pending & kShadowMirror)
+    q = images[index].to_mirror;
+  while (pending != 0u) {  // any hit, or the closest where an emitter must be it
     const Hit h = trace_query<kCode>(scene, q.ray, q.tmax, q.emitter == kNoHit);
     const bool reached = h.prim == q.emitter;
-    if (leg == kLegLight) {
+    if (pending & kShadowLight) {
       if (reached) clear |= kShadowLight;
-      leg = (kinds & kShadowMirror) ? kLegToMirror : kLegDone;
-      if (leg == kLegToMirror) q = image->to_mirror;
-    } else if (leg == kLegToMirror) {
-      leg = reached ? kLegToLight : kLegDone;
-      if (reached) q = mirror_to_light(scene, *image, h.t);
+      pending &= ~kShadowLight;
+      if (pending != 0u) q = images[index].to_mirror;
+    } else if (pending & kShadowMirror) {
+      pending = reached ? kToLight : 0u;
+      if (reached) q = mirror_to_light(scene, images[index], h.t);
     } else {
       if (reached) clear |= kShadowMirror;
-      leg = kLegDone;
+      pending = 0u;
     }
   }
   return clear;

@@ -206,7 +206,7 @@ TRACER_HD Vec3 path_radiance(const SceneView& scene, const Ray& camera_ray, uint
     const PathStep step = path_shade<kFeatures>(scene, pixel, sample, hit, st, shadow, image, counts);
     const uint8_t kinds = static_cast<uint8_t>((step.shadow ? unsigned{kShadowLight} : 0u) |
                                                (step.mirror ? unsigned{kShadowMirror} : 0u));
-    const uint8_t clear = trace_shadows<kCode>(scene, kinds, shadow, &image);
+    const uint8_t clear = trace_shadows<kCode>(scene, kinds, shadow, &image, 0);
     if (clear & kShadowLight) st.radiance += shadow.contribution;
     if (clear & kShadowMirror) st.radiance += image.to_mirror.contribution;
     if (!step.alive) return st.radiance;

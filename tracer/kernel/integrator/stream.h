@@ -181,15 +181,14 @@ TRACER_HD void stream_shadow(const SceneView& scene, const StreamStates& st, uin
   ShadowQuery light;
   if (kinds & kShadowLight)
     light = {{st.shadow_origin[i], st.shadow_dir[i]}, st.shadow_tmax[i], st.shadow_emitter[i], {0.0f, 0.0f, 0.0f}};
-  const MirrorQuery* image = st.image ? st.image + i : nullptr;
-  const uint8_t clear = trace_shadows<kCode>(scene, kinds, light, image);
+  const uint8_t clear = trace_shadows<kCode>(scene, kinds, light, st.image, i);
   if (clear & kShadowLight) {
     if (scene.settings.integrator == IntegratorKind::Whitted)
       whitted_add_light(scene, st.vertex[i]);
     else
       st.radiance[i] += st.shadow_contribution[i];
   }
-  if (clear & kShadowMirror) st.radiance[i] += image->to_mirror.contribution;
+  if (clear & kShadowMirror) st.radiance[i] += st.image[i].to_mirror.contribution;
 }
 
 // One stage for state i: what the schedulers call per queue entry.
