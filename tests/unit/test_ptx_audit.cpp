@@ -166,6 +166,27 @@ TEST(PtxAudit, SourceCoverageNamesFilesTheBuildAndTheSearchDisagreeOn) {
   EXPECT_NE(problems[1].find("cuda/new.cu"), std::string::npos);
 }
 
+TEST(PtxAudit, EachBuiltSourceIsAuditedForTheArchitecturesTheBuildCompilesItsPtxFor) {
+  const auto built = parse_built_sources("cuda/parity/parity_gpu.cu:80;cuda/lbvh_gpu.cu:80,90;");
+  ASSERT_EQ(built.size(), 2u);
+  EXPECT_EQ(built.at("cuda/parity/parity_gpu.cu"), (std::vector<std::string>{"80"}));
+  EXPECT_EQ(built.at("cuda/lbvh_gpu.cu"), (std::vector<std::string>{"80", "90"}));
+  EXPECT_THROW(parse_built_sources("cuda/a.cu"), std::invalid_argument);
+  CudaAuditConfig config;
+  config.architectures = {"80", "90"};
+  config.built_sources = built;
+  config.ptx_dir = "d";
+  std::vector<std::string> modules;  // a file the build does not compile: every architecture
+  for (const CudaAuditModule& m :
+       cuda_audit_modules(config, {"cuda/lbvh_gpu.cu", "cuda/new.cu", "cuda/parity/parity_gpu.cu"}))
+    modules.push_back(m.source + " " + m.architecture + " " + m.ptx_path);
+  EXPECT_EQ(modules, (std::vector<std::string>{
+                         "cuda/lbvh_gpu.cu 80 d/cuda/lbvh_gpu.cu.compute_80.ptx",
+                         "cuda/lbvh_gpu.cu 90 d/cuda/lbvh_gpu.cu.compute_90.ptx",
+                         "cuda/new.cu 80 d/cuda/new.cu.compute_80.ptx", "cuda/new.cu 90 d/cuda/new.cu.compute_90.ptx",
+                         "cuda/parity/parity_gpu.cu 80 d/cuda/parity/parity_gpu.cu.compute_80.ptx"}));
+}
+
 TEST(DrawLint, TwoDrawsInOneArgumentListAreFound) {
   const auto f =
       lint_draws("void f() {\n  g(s.next(),\n    s.next());\n  h(k(s.next()), p->uniform(0, 1));\n}\n", "x.cpp");

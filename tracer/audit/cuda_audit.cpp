@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <mutex>
 #include <set>
+#include <stdexcept>
 #include <thread>
 
 #include "io/shell.h"
@@ -41,21 +42,53 @@ std::vector<std::string> source_coverage_problems(const std::vector<std::string>
   return problems;
 }
 
+std::vector<std::string> split_build_list(const std::string& list, char separator) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (start <= list.size()) {
+    const size_t end = list.find(separator, start);
+    const std::string item = list.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (!item.empty()) out.push_back(item);
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return out;
+}
+
+std::map<std::string, std::vector<std::string>> parse_built_sources(const std::string& list) {
+  std::map<std::string, std::vector<std::string>> built;
+  for (const std::string& entry : split_build_list(list, ';')) {
+    const size_t colon = entry.rfind(':');
+    if (colon == std::string::npos)
+      throw std::invalid_argument("the build's source list: no architectures in " + entry);
+    built[entry.substr(0, colon)] = split_build_list(entry.substr(colon + 1), ',');
+  }
+  return built;
+}
+
 std::string ptx_path_for(const std::string& ptx_dir, const std::string& source, const std::string& arch) {
   return (fs::path(ptx_dir) / (source + ".compute_" + arch + ".ptx")).string();
 }
 
-std::vector<CudaAuditModule> run_cuda_audit(const CudaAuditConfig& config, const std::vector<std::string>& sources) {
+std::vector<CudaAuditModule> cuda_audit_modules(const CudaAuditConfig& config,
+                                                const std::vector<std::string>& sources) {
   std::vector<CudaAuditModule> modules;
-  for (const std::string& source : sources)
-    for (const std::string& arch : config.architectures) {
+  for (const std::string& source : sources) {
+    const auto built = config.built_sources.find(source);
+    for (const std::string& arch : built != config.built_sources.end() ? built->second : config.architectures) {
       CudaAuditModule m;
       m.source = source;
       m.architecture = arch;
       m.ptx_path = ptx_path_for(config.ptx_dir, source, arch);
-      fs::create_directories(fs::path(m.ptx_path).parent_path());
       modules.push_back(m);
     }
+  }
+  return modules;
+}
+
+std::vector<CudaAuditModule> run_cuda_audit(const CudaAuditConfig& config, const std::vector<std::string>& sources) {
+  std::vector<CudaAuditModule> modules = cuda_audit_modules(config, sources);
+  for (const CudaAuditModule& m : modules) fs::create_directories(fs::path(m.ptx_path).parent_path());
   std::atomic<size_t> next{0};
   std::exception_ptr error;  // the first worker's exception, rethrown after every thread joined
   std::mutex error_mutex;

@@ -27,19 +27,6 @@ namespace fs = std::filesystem;
 namespace tracer {
 namespace {
 
-std::vector<std::string> split_list(const std::string& s) {
-  std::vector<std::string> out;
-  size_t start = 0;
-  while (start <= s.size()) {
-    const size_t end = s.find(';', start);
-    const std::string item = s.substr(start, end == std::string::npos ? std::string::npos : end - start);
-    if (!item.empty()) out.push_back(item);
-    if (end == std::string::npos) break;
-    start = end + 1;
-  }
-  return out;
-}
-
 std::string demangled(const std::string& name) {
   int status = 0;
   std::unique_ptr<char, void (*)(void*)> d(abi::__cxa_demangle(name.c_str(), nullptr, nullptr, &status), std::free);
@@ -117,11 +104,11 @@ size_t report(const std::vector<CudaAuditModule>& modules) {
 // instructions: the audit exits 2 and leaves an earlier PTX directory as it was.
 std::string nvcc_failure_text(const std::vector<CudaAuditModule>& modules, const CudaAuditModule& first,
                               const PtxDirectory& ptx) {
-  const long failed = std::count_if(modules.begin(), modules.end(),
-                                    [](const CudaAuditModule& m) { return !m.compile_error.empty(); });
-  std::string text = "audit cuda: nvcc failed on " + std::to_string(failed) + " of " +
-                     std::to_string(modules.size()) + " modules (the first: " + first.source + " for compute_" +
-                     first.architecture + "; nvcc's output is above), so the audit gives no verdict; " + ptx.path() +
+  const long failed =
+      std::count_if(modules.begin(), modules.end(), [](const CudaAuditModule& m) { return !m.compile_error.empty(); });
+  std::string text = "audit cuda: nvcc failed on " + std::to_string(failed) + " of " + std::to_string(modules.size()) +
+                     " modules (the first: " + first.source + " for compute_" + first.architecture +
+                     "; nvcc's output is above), so the audit gives no verdict; " + ptx.path() +
                      " (--ptx-dir) is left as it was";
   std::error_code ec;
   const fs::space_info space = fs::space(ptx.staging(), ec);
@@ -144,19 +131,28 @@ int run_audit_cuda(const std::string& root_option, const std::string& ptx_dir_op
   config.root = root;
   config.nvcc = TRACER_AUDIT_NVCC;
   config.flags = TRACER_AUDIT_CUDA_FLAGS;
-  config.architectures = split_list(TRACER_AUDIT_CUDA_ARCHITECTURES);
-  config.built_sources = split_list(TRACER_AUDIT_CUDA_SOURCES);
+  config.architectures = split_build_list(TRACER_AUDIT_CUDA_ARCHITECTURES, ';');
+  config.built_sources = parse_built_sources(TRACER_AUDIT_CUDA_SOURCES);
   PtxDirectory ptx(ptx_dir_option.empty() ? TRACER_AUDIT_PTX_DIR : ptx_dir_option, ptx_dir_option.empty());
   config.ptx_dir = ptx.staging();
   config.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const std::vector<std::string> sources = find_cuda_sources(root);
   std::printf("audit cuda: %s, flags: %s\narchitectures:", config.nvcc.c_str(), config.flags.c_str());
   for (const std::string& a : config.architectures) std::printf(" compute_%s", a.c_str());
-  std::printf("\nsources (%zu found under %s):", sources.size(), root.c_str());
-  for (const std::string& s : sources) std::printf(" %s", s.c_str());
+  std::printf("\nsources (%zu found under %s), each for the architectures the build compiles its PTX for:",
+              sources.size(), root.c_str());
+  for (const std::string& s : sources) {
+    std::printf(" %s", s.c_str());
+    const auto built = config.built_sources.find(s);
+    if (built != config.built_sources.end())
+      for (size_t i = 0; i < built->second.size(); ++i)
+        std::printf("%c%s", i == 0 ? ':' : ',', built->second[i].c_str());
+  }
   std::printf("\nPTX kept in %s\n\n", ptx.path().c_str());
   size_t failures = 0;
-  for (const std::string& p : source_coverage_problems(sources, config.built_sources)) {
+  std::vector<std::string> built;
+  for (const auto& [source, architectures] : config.built_sources) built.push_back(source);
+  for (const std::string& p : source_coverage_problems(sources, built)) {
     std::printf("FAIL %s\n", p.c_str());
     ++failures;
   }
@@ -165,8 +161,8 @@ int run_audit_cuda(const std::string& root_option, const std::string& ptx_dir_op
     ++failures;
   }
   std::vector<CudaAuditModule> modules = run_cuda_audit(config, sources);
-  const auto unbuilt = std::find_if(modules.begin(), modules.end(),
-                                    [](const CudaAuditModule& m) { return !m.compile_error.empty(); });
+  const auto unbuilt =
+      std::find_if(modules.begin(), modules.end(), [](const CudaAuditModule& m) { return !m.compile_error.empty(); });
   if (unbuilt != modules.end()) {
     report(modules);  // nvcc's output for each module it failed on
     throw InputError(nvcc_failure_text(modules, *unbuilt, ptx));
