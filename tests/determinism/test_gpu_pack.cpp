@@ -76,7 +76,7 @@ TEST(GpuPack, StaysWellUnderTheDeviceCallLimit) {
   for (const auto& e : fs::recursive_directory_iterator(pack()))
     if (e.is_regular_file()) bytes += e.file_size();
   // A device call carries the checkout's tracked files and the pack, at most 64 MiB together.
-  // The runner (31 MB, most of it the kernels' fatbin: sm_80 and sm_90 code and PTX) and
+  // The runner (17.6 MB, most of it the kernels' compressed fatbin: sm_80 and sm_90 code and PTX) and
   // the bench's two bundles of the 99k-triangle sphere (8 MB each; the rays table's copy is made
   // by the runner) are most of the pack; the goldens' bundles add 5 MB. At least 4 MiB stay free
   // for what the next goldens add.

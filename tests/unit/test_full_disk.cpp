@@ -160,14 +160,6 @@ TEST_F(FullDisk, GoldenUpdateWritesImagesAndManifestTogetherOrNotAtAll) {
   expect_clean_failure("golden update --force --root DISK/golden-root", "DISK/golden-root/golden/");
 }
 
-// The audit's PTX directory: its marker, the first file written, says why it cannot be written
-// (before: "cannot write .tracer-audit-ptx", no reason); exit 77 in a build without nvcc.
-TEST_F(FullDisk, AuditCudaSaysTheDiskIsFull) {
-  fs::create_directories(dir_ / "in/tree/cuda");
-  std::ofstream(dir_ / "in/tree/cuda/k.cu") << "__global__ void k(float* x) { x[0] += 1.0f; }\n";
-  expect_clean_failure("audit cuda --root " + (dir_ / "in/tree").string() + " --ptx-dir DISK/ptx", "DISK/ptx");
-}
-
 // What a command prints must reach its reader: stdout on a full disk or closed was lost while
 // the command exited 0.
 TEST(FullStdout, PrintingToAFullDiskOrAClosedStdoutExitsTwo) {

@@ -167,24 +167,37 @@ TEST(PtxAudit, SourceCoverageNamesFilesTheBuildAndTheSearchDisagreeOn) {
 }
 
 TEST(PtxAudit, EachBuiltSourceIsAuditedForTheArchitecturesTheBuildCompilesItsPtxFor) {
-  const auto built = parse_built_sources("cuda/parity/parity_gpu.cu:80;cuda/lbvh_gpu.cu:80,90;");
+  const auto built = parse_built_sources(
+      "cuda/parity/parity_gpu.cu:80:CMakeFiles/k.dir/cuda/parity/parity_gpu.cu.o;"
+      "cuda/lbvh_gpu.cu:80,90:CMakeFiles/l.dir/cuda/lbvh_gpu.cu.o;");
   ASSERT_EQ(built.size(), 2u);
-  EXPECT_EQ(built.at("cuda/parity/parity_gpu.cu"), (std::vector<std::string>{"80"}));
-  EXPECT_EQ(built.at("cuda/lbvh_gpu.cu"), (std::vector<std::string>{"80", "90"}));
-  EXPECT_THROW(parse_built_sources("cuda/a.cu"), std::invalid_argument);
-  CudaAuditConfig config;
-  config.architectures = {"80", "90"};
-  config.built_sources = built;
-  config.ptx_dir = "d";
-  std::vector<std::string> modules;  // a file the build does not compile: every architecture
-  for (const CudaAuditModule& m :
-       cuda_audit_modules(config, {"cuda/lbvh_gpu.cu", "cuda/new.cu", "cuda/parity/parity_gpu.cu"}))
+  EXPECT_EQ(built.at("cuda/lbvh_gpu.cu").architectures, (std::vector<std::string>{"80", "90"}));
+  EXPECT_EQ(built.at("cuda/lbvh_gpu.cu").object, "CMakeFiles/l.dir/cuda/lbvh_gpu.cu.o");
+  EXPECT_THROW(parse_built_sources("cuda/a.cu:80"), std::invalid_argument);
+  std::vector<std::string> modules;
+  for (const CudaAuditModule& m : cuda_audit_modules(built, "b"))
     modules.push_back(m.source + " " + m.architecture + " " + m.ptx_path);
-  EXPECT_EQ(modules, (std::vector<std::string>{
-                         "cuda/lbvh_gpu.cu 80 d/cuda/lbvh_gpu.cu.compute_80.ptx",
-                         "cuda/lbvh_gpu.cu 90 d/cuda/lbvh_gpu.cu.compute_90.ptx",
-                         "cuda/new.cu 80 d/cuda/new.cu.compute_80.ptx", "cuda/new.cu 90 d/cuda/new.cu.compute_90.ptx",
-                         "cuda/parity/parity_gpu.cu 80 d/cuda/parity/parity_gpu.cu.compute_80.ptx"}));
+  EXPECT_EQ(modules,
+            (std::vector<std::string>{
+                "cuda/lbvh_gpu.cu 80 b/CMakeFiles/l.dir/cuda/lbvh_gpu.cu.o.compute_80.ptx",
+                "cuda/lbvh_gpu.cu 90 b/CMakeFiles/l.dir/cuda/lbvh_gpu.cu.o.compute_90.ptx",
+                "cuda/parity/parity_gpu.cu 80 b/CMakeFiles/k.dir/cuda/parity/parity_gpu.cu.o.compute_80.ptx"}));
+}
+
+// A build tree without the objects' PTX (never built, or built without the launcher) fails,
+// naming each missing file; a build without nvcc skips (77).
+TEST(PtxAudit, ABuildWithoutTheObjectsPtxFailsNamingTheFiles) {
+  const auto dir = test::temp_dir("ptx-audit-no-build");
+  std::string output;
+  const int rc = test::run_command(std::string(TRACER_BINARY) + " audit cuda --build " + dir.string(), &output);
+  if (rc == 77) GTEST_SKIP() << output;
+  EXPECT_EQ(rc, 1) << output;
+  EXPECT_NE(
+      output.find("no PTX at " + dir.string() + "/CMakeFiles/tracer_gpu_kernels.dir/cuda/gpu_film.cu.o.compute_80.ptx"),
+      std::string::npos)
+      << output;
+  EXPECT_NE(output.find("audit cuda: FAIL"), std::string::npos) << output;
+  std::filesystem::remove_all(dir);
 }
 
 TEST(DrawLint, TwoDrawsInOneArgumentListAreFound) {

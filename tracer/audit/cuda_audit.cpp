@@ -9,7 +9,6 @@
 #include <stdexcept>
 #include <thread>
 
-#include "io/shell.h"
 #include "io/text_file.h"
 
 namespace fs = std::filesystem;
@@ -55,57 +54,44 @@ std::vector<std::string> split_build_list(const std::string& list, char separato
   return out;
 }
 
-std::map<std::string, std::vector<std::string>> parse_built_sources(const std::string& list) {
-  std::map<std::string, std::vector<std::string>> built;
+std::map<std::string, BuiltCudaSource> parse_built_sources(const std::string& list) {
+  std::map<std::string, BuiltCudaSource> built;
   for (const std::string& entry : split_build_list(list, ';')) {
-    const size_t colon = entry.rfind(':');
-    if (colon == std::string::npos)
-      throw std::invalid_argument("the build's source list: no architectures in " + entry);
-    built[entry.substr(0, colon)] = split_build_list(entry.substr(colon + 1), ',');
+    const std::vector<std::string> fields = split_build_list(entry, ':');
+    if (fields.size() != 3)
+      throw std::invalid_argument("the build's list of CUDA sources: not SOURCE:ARCHS:OBJECT: " + entry);
+    built[fields[0]] = {split_build_list(fields[1], ','), fields[2]};
   }
   return built;
 }
 
-std::string ptx_path_for(const std::string& ptx_dir, const std::string& source, const std::string& arch) {
-  return (fs::path(ptx_dir) / (source + ".compute_" + arch + ".ptx")).string();
-}
-
-std::vector<CudaAuditModule> cuda_audit_modules(const CudaAuditConfig& config,
-                                                const std::vector<std::string>& sources) {
+std::vector<CudaAuditModule> cuda_audit_modules(const std::map<std::string, BuiltCudaSource>& built,
+                                                const std::string& build) {
   std::vector<CudaAuditModule> modules;
-  for (const std::string& source : sources) {
-    const auto built = config.built_sources.find(source);
-    for (const std::string& arch : built != config.built_sources.end() ? built->second : config.architectures) {
+  for (const auto& [source, b] : built)
+    for (const std::string& arch : b.architectures) {
       CudaAuditModule m;
       m.source = source;
       m.architecture = arch;
-      m.ptx_path = ptx_path_for(config.ptx_dir, source, arch);
+      m.ptx_path = (fs::path(build) / (b.object + ".compute_" + arch + ".ptx")).string();
       modules.push_back(m);
     }
-  }
   return modules;
 }
 
-std::vector<CudaAuditModule> run_cuda_audit(const CudaAuditConfig& config, const std::vector<std::string>& sources) {
-  std::vector<CudaAuditModule> modules = cuda_audit_modules(config, sources);
-  for (const CudaAuditModule& m : modules) fs::create_directories(fs::path(m.ptx_path).parent_path());
+void run_cuda_audit(std::vector<CudaAuditModule>& modules, const std::string& root, int jobs) {
   std::atomic<size_t> next{0};
   std::exception_ptr error;  // the first worker's exception, rethrown after every thread joined
   std::mutex error_mutex;
+  const std::string tree = fs::weakly_canonical(root).string();
   const auto work = [&] {
     for (size_t i = next++; i < modules.size(); i = next++) try {
         CudaAuditModule& m = modules[i];
-        const fs::path root = fs::weakly_canonical(config.root);
-        const std::string command =
-            shell_quote(config.nvcc) + " -ptx -lineinfo -arch=compute_" + m.architecture + " " + config.flags + " -I" +
-            shell_quote((root / "tracer").string()) + " -I" + shell_quote((root / "cuda").string()) + " " +
-            shell_quote((root / m.source).string()) + " -o " + shell_quote(m.ptx_path) + " 2>&1";
-        std::string output;
-        if (run_capture(command, output) != 0) {
-          m.compile_error = command + "\n" + output;
+        if (!fs::is_regular_file(m.ptx_path)) {
+          m.missing = true;
           continue;
         }
-        m.audit = audit_ptx(read_text_file(m.ptx_path, "PTX"), root.string());
+        m.audit = audit_ptx(read_text_file(m.ptx_path, "PTX"), tree);
       } catch (...) {
         const std::lock_guard<std::mutex> lock(error_mutex);
         if (!error) error = std::current_exception();
@@ -113,10 +99,9 @@ std::vector<CudaAuditModule> run_cuda_audit(const CudaAuditConfig& config, const
       }
   };
   std::vector<std::thread> threads;
-  for (int t = 0; t < std::max(1, config.jobs); ++t) threads.emplace_back(work);
+  for (int t = 0; t < std::max(1, jobs); ++t) threads.emplace_back(work);
   for (std::thread& t : threads) t.join();
   if (error) std::rethrow_exception(error);
-  return modules;
 }
 
 }  // namespace tracer

@@ -1,6 +1,7 @@
-// The instruction audit over a source tree: every .cu file under the root is compiled to PTX
-// for each architecture the build compiles its PTX for, with the build's own nvcc flags plus
-// -lineinfo, and each module goes through audit_ptx (ptx_audit.h).
+// The instruction audit of a build's CUDA objects: the PTX each .cu file was compiled from, for
+// each virtual architecture (kept beside the object by cmake/nvcc_audit_inputs.sh, with
+// -lineinfo), goes through audit_ptx (ptx_audit.h); the .cu files of the source tree must be
+// those the build compiles.
 #pragma once
 #include <map>
 #include <string>
@@ -10,24 +11,18 @@
 
 namespace tracer {
 
-struct CudaAuditConfig {
-  std::string root;                        // the source tree
-  std::string nvcc;                        // the build's nvcc
-  std::string flags;                       // the build's nvcc flags, one shell word list
-  std::vector<std::string> architectures;  // every PTX architecture of the build: "80", "90"
-  // the .cu files the build compiles, relative to root, each with the architectures nvcc
-  // compiles its PTX for (a file the build does not compile is audited for every one)
-  std::map<std::string, std::vector<std::string>> built_sources;
-  std::string ptx_dir;  // where nvcc writes the PTX: a directory the audit made
-  int jobs = 1;
+// One .cu file as the build compiles it.
+struct BuiltCudaSource {
+  std::vector<std::string> architectures;  // the virtual architectures of its PTX: "80", "90"
+  std::string object;                      // its object, relative to the build directory
 };
 
 struct CudaAuditModule {
-  std::string source;        // relative to root
+  std::string source;        // relative to the source tree
   std::string architecture;  // "80"
   std::string ptx_path;
   PtxAudit audit;
-  std::string compile_error;  // nvcc's output when it failed
+  bool missing = false;  // the build kept no PTX at ptx_path
 };
 
 // Every .cu file under root (build directories, which hold a CMakeCache.txt, and hidden ones
@@ -41,16 +36,16 @@ std::vector<std::string> source_coverage_problems(const std::vector<std::string>
 // A list the build wrote (generated/cuda_audit_config.h): its items, empty ones dropped.
 std::vector<std::string> split_build_list(const std::string& list, char separator);
 
-// The build's list of .cu files, "SOURCE:ARCH,ARCH" entries separated by ';', as a map.
-std::map<std::string, std::vector<std::string>> parse_built_sources(const std::string& list);
+// The build's list of .cu files, "SOURCE:ARCH,ARCH:OBJECT" entries separated by ';', as a map.
+std::map<std::string, BuiltCudaSource> parse_built_sources(const std::string& list);
 
-// Where the PTX of `source` for compute_`arch` goes: the source's own path below ptx_dir, so
-// two sources (cuda/a_b.cu, cuda/a/b.cu) never share a file.
-std::string ptx_path_for(const std::string& ptx_dir, const std::string& source, const std::string& arch);
+// The modules the audit reads: each built source's PTX for each of its architectures, beside its
+// object in `build` (OBJECT.compute_ARCH.ptx), in the order of the map, not yet read.
+std::vector<CudaAuditModule> cuda_audit_modules(const std::map<std::string, BuiltCudaSource>& built,
+                                                const std::string& build);
 
-// The modules the audit compiles: each source for its built architectures, in order, not yet compiled.
-std::vector<CudaAuditModule> cuda_audit_modules(const CudaAuditConfig& config, const std::vector<std::string>& sources);
-
-std::vector<CudaAuditModule> run_cuda_audit(const CudaAuditConfig& config, const std::vector<std::string>& sources);
+// Reads and audits every module on `jobs` threads (`root`, the source tree, stripped from the
+// PTX's file names); a module whose PTX is absent is marked missing.
+void run_cuda_audit(std::vector<CudaAuditModule>& modules, const std::string& root, int jobs);
 
 }  // namespace tracer

@@ -1,5 +1,5 @@
 // What each CUDA kernel holds per thread, from ptxas' own report (nvcc --resource-usage,
-// printed while the build compiles each .cu file; cmake/nvcc_resource_usage.sh keeps it
+// printed while the build compiles each .cu file; cmake/nvcc_audit_inputs.sh keeps it
 // beside the object as OBJECT.resources), checked against the budgets of kernel_budgets.h
 // (docs/cuda.md, "Resource budgets"). No GPU is needed.
 #pragma once

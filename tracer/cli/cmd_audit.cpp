@@ -1,5 +1,5 @@
-// `tracer audit cuda`: the instruction audit of the CUDA kernels (docs/cuda.md), with the nvcc,
-// flags, architectures and .cu files of this build (generated/cuda_audit_config.h);
+// `tracer audit cuda`: the instruction audit of the CUDA kernels (docs/cuda.md): the PTX this
+// build compiled each CUDA object from, kept beside it (generated/cuda_audit_config.h lists them);
 // `tracer audit ptx FILE...` audits PTX files as they are; `tracer audit draws`: the lint for
 // two draws from one stream in one argument list. Exit 0 clean, 1 findings, 2 bad input,
 // 77 no nvcc in this build (CTest reports the test skipped, with the reason).
@@ -16,7 +16,6 @@
 
 #include "audit/cuda_audit.h"
 #include "audit/draw_lint.h"
-#include "audit/ptx_directory.h"
 #include "cli/command_registry.h"
 #include "cuda_audit_config.h"
 #include "io/input_error.h"
@@ -53,8 +52,11 @@ size_t report(const std::vector<CudaAuditModule>& modules) {
   std::map<std::string, std::map<std::string, long>> opcodes;     // arch -> opcode -> count
   std::map<std::string, std::pair<long, std::string>> arguments;  // "file:line opcode" -> count, argument
   for (const CudaAuditModule& m : modules) {
-    if (!m.compile_error.empty()) {
-      std::printf("%-28s %-5s nvcc failed:\n%s\n", m.source.c_str(), m.architecture.c_str(), m.compile_error.c_str());
+    if (m.missing) {
+      std::printf(
+          "FAIL %s: no PTX at %s: build the CUDA objects with this build's launcher, "
+          "cmake/nvcc_audit_inputs.sh (cmake --build BUILD)\n",
+          m.source.c_str(), m.ptx_path.c_str());
       ++failures;
       continue;
     }
@@ -100,59 +102,32 @@ size_t report(const std::vector<CudaAuditModule>& modules) {
   return failures;
 }
 
-// nvcc failing (a source that does not compile, a full disk, a crash) is no verdict on the
-// instructions: the audit exits 2 and leaves an earlier PTX directory as it was.
-std::string nvcc_failure_text(const std::vector<CudaAuditModule>& modules, const CudaAuditModule& first,
-                              const PtxDirectory& ptx) {
-  const long failed =
-      std::count_if(modules.begin(), modules.end(), [](const CudaAuditModule& m) { return !m.compile_error.empty(); });
-  std::string text = "audit cuda: nvcc failed on " + std::to_string(failed) + " of " + std::to_string(modules.size()) +
-                     " modules (the first: " + first.source + " for compute_" + first.architecture +
-                     "; nvcc's output is above), so the audit gives no verdict; " + ptx.path() +
-                     " (--ptx-dir) is left as it was";
-  std::error_code ec;
-  const fs::space_info space = fs::space(ptx.staging(), ec);
-  constexpr uintmax_t kLowSpace = 64ull << 20;  // ten times the largest module's PTX
-  if (!ec && space.available < kLowSpace)
-    text += "; the disk holding it has " + std::to_string(space.available >> 10) + " KiB free";
-  return text;
-}
-
-int run_audit_cuda(const std::string& root_option, const std::string& ptx_dir_option) {
-  const std::string root = root_option.empty() ? TRACER_AUDIT_SOURCE_DIR : root_option;
-  if (!fs::is_directory(root)) throw InputError(root + ": not a directory (--root)");
+int run_audit_cuda(const std::string& build_option) {
   if (std::string(TRACER_AUDIT_NVCC).empty()) {
     std::printf(
         "SKIPPED: this build has no CUDA compiler (TRACER_WITH_CUDA=OFF or no nvcc found); the audit reads "
         "nvcc's PTX and needs it\n");
     return 77;
   }
-  CudaAuditConfig config;
-  config.root = root;
-  config.nvcc = TRACER_AUDIT_NVCC;
-  config.flags = TRACER_AUDIT_CUDA_FLAGS;
-  config.architectures = split_build_list(TRACER_AUDIT_CUDA_ARCHITECTURES, ';');
-  config.built_sources = parse_built_sources(TRACER_AUDIT_CUDA_SOURCES);
-  PtxDirectory ptx(ptx_dir_option.empty() ? TRACER_AUDIT_PTX_DIR : ptx_dir_option, ptx_dir_option.empty());
-  config.ptx_dir = ptx.staging();
-  config.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const std::string build = build_option.empty() ? TRACER_AUDIT_BUILD_DIR : build_option;
+  if (!fs::is_directory(build)) throw InputError(build + ": not a directory (--build)");
+  const std::string root = TRACER_AUDIT_SOURCE_DIR;
+  const std::map<std::string, BuiltCudaSource> built = parse_built_sources(TRACER_AUDIT_CUDA_SOURCES);
   const std::vector<std::string> sources = find_cuda_sources(root);
-  std::printf("audit cuda: %s, flags: %s\narchitectures:", config.nvcc.c_str(), config.flags.c_str());
-  for (const std::string& a : config.architectures) std::printf(" compute_%s", a.c_str());
-  std::printf("\nsources (%zu found under %s), each for the architectures the build compiles its PTX for:",
-              sources.size(), root.c_str());
+  std::printf("audit cuda: the PTX %s compiled each CUDA object of %s from (-lineinfo)\nsources (%zu found under %s):",
+              TRACER_AUDIT_NVCC, build.c_str(), sources.size(), root.c_str());
   for (const std::string& s : sources) {
     std::printf(" %s", s.c_str());
-    const auto built = config.built_sources.find(s);
-    if (built != config.built_sources.end())
-      for (size_t i = 0; i < built->second.size(); ++i)
-        std::printf("%c%s", i == 0 ? ':' : ',', built->second[i].c_str());
+    const auto b = built.find(s);
+    if (b != built.end())
+      for (size_t i = 0; i < b->second.architectures.size(); ++i)
+        std::printf("%c%s", i == 0 ? ':' : ',', b->second.architectures[i].c_str());
   }
-  std::printf("\nPTX kept in %s\n\n", ptx.path().c_str());
+  std::printf("\n\n");
   size_t failures = 0;
-  std::vector<std::string> built;
-  for (const auto& [source, architectures] : config.built_sources) built.push_back(source);
-  for (const std::string& p : source_coverage_problems(sources, built)) {
+  std::vector<std::string> built_names;
+  for (const auto& [source, b] : built) built_names.push_back(source);
+  for (const std::string& p : source_coverage_problems(sources, built_names)) {
     std::printf("FAIL %s\n", p.c_str());
     ++failures;
   }
@@ -160,15 +135,8 @@ int run_audit_cuda(const std::string& root_option, const std::string& ptx_dir_op
     std::printf("FAIL no .cu file under %s\n", root.c_str());
     ++failures;
   }
-  std::vector<CudaAuditModule> modules = run_cuda_audit(config, sources);
-  const auto unbuilt =
-      std::find_if(modules.begin(), modules.end(), [](const CudaAuditModule& m) { return !m.compile_error.empty(); });
-  if (unbuilt != modules.end()) {
-    report(modules);  // nvcc's output for each module it failed on
-    throw InputError(nvcc_failure_text(modules, *unbuilt, ptx));
-  }
-  ptx.keep();
-  for (CudaAuditModule& m : modules) m.ptx_path = ptx.path() + m.ptx_path.substr(ptx.staging().size());
+  std::vector<CudaAuditModule> modules = cuda_audit_modules(built, build);
+  run_cuda_audit(modules, root, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
   failures += report(modules);
   std::printf("\naudit cuda: %s (%zu failures)\n", failures == 0 ? "PASS" : "FAIL", failures);
   return failures == 0 ? 0 : 1;
@@ -210,15 +178,11 @@ int run_audit_draws(const std::string& root_option) {
 }  // namespace
 
 const RegisterCommand kAuditCudaCommand(
-    {"audit", "cuda", "compile every .cu to PTX with this build's flags and classify every floating-point instruction",
+    {"audit", "cuda", "classify every floating-point instruction of the PTX this build compiled its CUDA objects from",
      [](CLI::App& app) {
-       auto root = std::make_shared<std::string>();
-       auto ptx_dir = std::make_shared<std::string>();
-       app.add_option("--root", *root, "source tree (default: the one this build was configured from)");
-       app.add_option("--ptx-dir", *ptx_dir,
-                      "where the PTX is kept: a new path or an earlier audit's directory, which it replaces "
-                      "(default: BUILD/ptx-audit)");
-       return [root, ptx_dir] { return run_audit_cuda(*root, *ptx_dir); };
+       auto build = std::make_shared<std::string>();
+       app.add_option("--build", *build, "the build tree holding the objects' PTX (default: this build's)");
+       return [build] { return run_audit_cuda(*build); };
      }});
 
 const RegisterCommand kAuditPtxCommand(

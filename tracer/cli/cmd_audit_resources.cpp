@@ -1,6 +1,6 @@
 // `tracer audit resources`: every CUDA kernel's registers, stack frame, spills and static
 // shared memory on sm_90, from ptxas' report of this build (OBJECT.o.resources beside each CUDA
-// object, kept by cmake/nvcc_resource_usage.sh while the build compiles), against the budgets of
+// object, kept by cmake/nvcc_audit_inputs.sh while the build compiles), against the budgets of
 // tracer/audit/kernel_budgets.h, with the occupancy each implies (docs/cuda.md). Exit 0 within
 // budget, 1 otherwise, 2 bad input, 77 when this build has no CUDA compiler.
 #include <cstdio>
@@ -34,7 +34,7 @@ int run_audit_resources(const std::string& build_option) {
   for (std::string name; std::getline(names, name, ';');) {
     const fs::path report = fs::path(build) / name;
     if (!fs::is_regular_file(report)) {
-      std::printf("FAIL no resource report %s: build with the CUDA launcher, cmake/nvcc_resource_usage.sh\n",
+      std::printf("FAIL no resource report %s: build with the CUDA launcher, cmake/nvcc_audit_inputs.sh\n",
                   report.string().c_str());
       return 1;
     }
