@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <map>
 #include <memory>
-#include <sstream>
 
+#include "audit/cuda_audit.h"
 #include "audit/kernel_budgets.h"
 #include "audit/kernel_resources.h"
 #include "cli/command_registry.h"
@@ -30,9 +30,8 @@ int run_audit_resources(const std::string& build_option) {
   if (!fs::is_directory(build)) throw InputError(build + ": not a directory (--build)");
   std::vector<KernelResources> kernels;
   size_t reports = 0;
-  std::stringstream names(TRACER_AUDIT_RESOURCE_REPORTS);  // one per CUDA object, relative to the build
-  for (std::string name; std::getline(names, name, ';');) {
-    const fs::path report = fs::path(build) / name;
+  for (const auto& [source, built] : parse_built_sources(TRACER_AUDIT_CUDA_SOURCES)) {
+    const fs::path report = fs::path(build) / (built.object + ".resources");
     if (!fs::is_regular_file(report)) {
       std::printf("FAIL no resource report %s: build with the CUDA launcher, cmake/nvcc_audit_inputs.sh\n",
                   report.string().c_str());
