@@ -1,0 +1,1 @@
+// The object that precompiles the tests' common headers (tests/CMakeLists.txt: test_headers).
