@@ -1,4 +1,5 @@
-// The host loop of the stream schedule (kernel/integrator/stream.h), shared by every
+// The host loop of the stream schedule (kernel/integrator/stream.h, whose stages it names
+// without including them), shared by every
 // scheduler: the tracer's OpenMP one (render_stream.cpp), the runner's std::thread one
 // (cuda/parity/cpu_stream.h) and the GPU's (cuda/gpu_stream.cu). A batch of at most
 // `width` pixel samples becomes ray states; each wave runs closest hit over the work queue,
@@ -24,8 +25,9 @@
 #include <cstdint>
 #include <functional>
 
-#include "kernel/base/film.h"
-#include "kernel/integrator/stream.h"
+#include "kernel/integrator/stream_stage.h"
+#include "kernel/integrator/stream_target.h"
+#include "kernel/scene/render_settings.h"
 
 namespace tracer {
 
@@ -39,53 +41,9 @@ struct StreamStats {
   size_t state_bytes = 0;      // all of them, for the stream width
 };
 
-// Where a stream render's samples go: samples [begin, end) of pixels[0..count) (indices
-// y * width + x; every pixel in order when `pixels` is null, count = width * height), added
-// to film[pixel], or by sample parity to even[pixel] and odd[pixel] (adaptive sampling), or
-// each item's radiance stored at samples[item] (the parity case of the stages).
-struct StreamTarget {
-  const uint32_t* pixels;
-  size_t count;
-  uint32_t begin, end;
-  FilmSum* film;
-  FilmSum* even;
-  FilmSum* odd;
-  Vec3* samples = nullptr;
-};
-
 // The samples in flight: the width asked for, or all `total` when fewer.
 inline size_t stream_width_for(const RenderSettings& rs, uint64_t total) {
   return static_cast<size_t>(total < rs.stream_width ? total : rs.stream_width);
-}
-
-// Item first + i of the target as state i. Items are pixel-major: item g is sample
-// begin + g % samples of the (g / samples)-th pixel.
-TRACER_HD void stream_begin_item(const StreamTarget& target, const StreamStates& st, uint64_t first, size_t i) {
-  const uint32_t samples = target.end - target.begin;
-  const uint64_t g = first + i;
-  const size_t p = static_cast<size_t>(g / samples);
-  st.pixel[i] = target.pixels ? target.pixels[p] : static_cast<uint32_t>(p);
-  st.sample[i] = target.begin + static_cast<uint32_t>(g % samples);
-}
-
-// The batch's samples of its p-th pixel (counted over the target, as items are), in sample
-// order, into the film (or the halves, or samples[]): what every backend's end_batch does per pixel.
-TRACER_HD void stream_end_pixel(const StreamTarget& target, const StreamStates& st, uint64_t first, size_t count,
-                                uint64_t p) {
-  const uint64_t samples = target.end - target.begin;
-  const uint64_t from = p * samples > first ? p * samples : first;
-  const uint64_t to = (p + 1) * samples < first + count ? (p + 1) * samples : first + count;
-  for (uint64_t g = from; g < to; ++g) {
-    const size_t i = static_cast<size_t>(g - first);
-    if (target.samples) {
-      target.samples[g] = st.radiance[i];
-      continue;
-    }
-    const uint32_t pixel = st.pixel[i];
-    FilmSum& sum =
-        target.film ? target.film[pixel] : (st.sample[i] % 2u == 0u ? target.even[pixel] : target.odd[pixel]);
-    film_add(sum, st.radiance[i]);
-  }
 }
 
 enum class StreamQueue : uint32_t { Work, Trace, Shadow, Resume };

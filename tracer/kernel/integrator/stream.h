@@ -9,19 +9,10 @@
 // batch's samples to the film in pixel-sample order (film.h's sums saturate near 2^62).
 #pragma once
 #include "kernel/integrator/render_pixel.h"
+#include "kernel/integrator/stream_stage.h"
+#include "kernel/integrator/stream_target.h"
 
 namespace tracer {
-
-enum class StreamStage : uint32_t {
-  Generate,  // the camera ray of (pixel[i], sample[i]); next = trace
-  Closest,   // hit[i]: the closest hit of the state's ray
-  Shade,     // the integrator's step at hit[i] (or a resumed Whitted vertex): sets next[i]
-  Shadow,    // the shadow ray's visibility; its contribution added if the light is visible
-};
-
-// What a state does next (bits of next[i]): trace its ray, trace its shadow ray, shade again
-// without a new hit (a Whitted vertex with lights left). 0: the sample is done.
-enum StreamNext : uint8_t { kStreamDone = 0u, kStreamTrace = 1u, kStreamShadow = 2u, kStreamResume = 4u };
 
 // The ray states of one batch. Arrays an integrator does not use may be null.
 struct StreamStates {
@@ -199,6 +190,36 @@ TRACER_HD void stream_stage(const SceneView& scene, StreamStage stage, const Str
     case StreamStage::Closest: stream_closest(scene, st, i); break;
     case StreamStage::Shade: stream_shade(scene, st, i, counts); break;
     case StreamStage::Shadow: stream_shadow(scene, st, i); break;
+  }
+}
+
+// Item first + i of the target as state i. Items are pixel-major: item g is sample
+// begin + g % samples of the (g / samples)-th pixel.
+TRACER_HD void stream_begin_item(const StreamTarget& target, const StreamStates& st, uint64_t first, size_t i) {
+  const uint32_t samples = target.end - target.begin;
+  const uint64_t g = first + i;
+  const size_t p = static_cast<size_t>(g / samples);
+  st.pixel[i] = target.pixels ? target.pixels[p] : static_cast<uint32_t>(p);
+  st.sample[i] = target.begin + static_cast<uint32_t>(g % samples);
+}
+
+// The batch's samples of its p-th pixel (counted over the target, as items are), in sample
+// order, into the film (or the halves, or samples[]): what every backend's end_batch does per pixel.
+TRACER_HD void stream_end_pixel(const StreamTarget& target, const StreamStates& st, uint64_t first, size_t count,
+                                uint64_t p) {
+  const uint64_t samples = target.end - target.begin;
+  const uint64_t from = p * samples > first ? p * samples : first;
+  const uint64_t to = (p + 1) * samples < first + count ? (p + 1) * samples : first + count;
+  for (uint64_t g = from; g < to; ++g) {
+    const size_t i = static_cast<size_t>(g - first);
+    if (target.samples) {
+      target.samples[g] = st.radiance[i];
+      continue;
+    }
+    const uint32_t pixel = st.pixel[i];
+    FilmSum& sum =
+        target.film ? target.film[pixel] : (st.sample[i] % 2u == 0u ? target.even[pixel] : target.odd[pixel]);
+    film_add(sum, st.radiance[i]);
   }
 }
 
