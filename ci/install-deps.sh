@@ -6,6 +6,7 @@
 set -euo pipefail
 build_packages=(
   cmake g++ make
+  lld                                     # the linker the build picks when it is there (a tenth of GNU ld's time)
   libopenimageio-dev openimageio-tools    # image I/O and comparison (OIIO's CMake package names the tools)
   libtinyobjloader-dev                    # OBJ meshes
   libtinygltf-dev                         # glTF 2.0 files
