@@ -29,6 +29,16 @@ GROUPS = [("kernel/accel/", "traversal (kernel/accel)"), ("kernel/geom/", "inter
           ("kernel/integrator/", "integrator (kernel/integrator)"), ("kernel/base/", "film and the rest of kernel/base")]
 
 
+def text_segment_delta(binary):
+    """Address minus file offset of the binary's executable LOAD segment (`readelf -lW`)."""
+    headers = subprocess.run(["readelf", "-lW", binary], capture_output=True, text=True, check=True).stdout
+    for line in headers.splitlines():
+        f = line.split()
+        if f and f[0] == "LOAD" and "E" in f[6:-1]:
+            return int(f[2], 16) - int(f[1], 16)
+    sys.exit(binary + ": no executable LOAD segment in `readelf -lW`")
+
+
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
@@ -40,12 +50,15 @@ def main():
                        stdout=subprocess.DEVNULL)
         script = subprocess.run(["perf", "script", "-i", data, "--show-mmap-events", "-F", "ip,dso"],
                                 capture_output=True, text=True, check=True).stdout.splitlines()
+    # The executable segment's addresses are its file offsets plus a delta the linker chose (0
+    # with GNU ld, a page with lld): perf gives file offsets, addr2line wants addresses.
+    delta = text_segment_delta(binary)
     base = None
     counts, outside = collections.Counter(), 0
     for line in script:
         m = re.search(r"MMAP2? .*\[(0x[0-9a-f]+)\((0x[0-9a-f]+)\) @ (0x[0-9a-f]+).*r-xp (\S+)$", line)
         if m and os.path.abspath(m.group(4)) == binary:
-            base = int(m.group(1), 16) - int(m.group(3), 16)  # the text's file offsets are its addresses
+            base = int(m.group(1), 16) - int(m.group(3), 16) - delta
             continue
         parts = line.split()
         if len(parts) == 2 and base is not None and parts[1] == "(" + binary + ")":
