@@ -10,6 +10,8 @@
 #define TRACER_X86_LANES 1
 #endif
 
+#include <cstddef>
+
 #include "kernel/accel/bvh_node.h"
 #include "kernel/accel/wide_bvh_node.h"
 #include "kernel/geom/triangle.h"
@@ -20,7 +22,10 @@ namespace tracer {
 struct WideRayQuery {
   float origin[3];
   float inv_dir[3];
-  int near_is_hi[3];  // 1 where the direction's sign bit is set: hi is the near plane
+  // Where axis a's near and far planes start in a WideBvhNode, in floats: hi[a] is the near
+  // plane where the direction's sign bit is set, lo[a] otherwise. Chosen once per ray, not
+  // once per node.
+  uint32_t near_plane[3], far_plane[3];
   int k[3];           // the watertight test's axes kx, ky, kz (kernel/geom/triangle.h)
   float sx, sy, sz;
 };
@@ -31,7 +36,10 @@ TRACER_HD WideRayQuery make_wide_ray_query(const Ray& ray, const RayShear& shear
   for (int a = 0; a < 3; ++a) {
     q.origin[a] = ray.origin[a];
     q.inv_dir[a] = inv[a];
-    q.near_is_hi[a] = static_cast<int>(bits_of(ray.dir[a]) >> 31);
+    const uint32_t near_is_hi = bits_of(ray.dir[a]) >> 31;
+    const uint32_t lo = static_cast<uint32_t>(a * kWideBvhWidth), hi = lo + 3u * kWideBvhWidth;
+    q.near_plane[a] = near_is_hi ? hi : lo;
+    q.far_plane[a] = near_is_hi ? lo : hi;
   }
   q.k[0] = shear.kx, q.k[1] = shear.ky, q.k[2] = shear.kz;
   q.sx = shear.sx, q.sy = shear.sy, q.sz = shear.sz;
@@ -40,12 +48,10 @@ TRACER_HD WideRayQuery make_wide_ray_query(const Ray& ray, const RayShear& shear
 
 // Bit i set when child i's box meets the ray within [0, tmax]; t_enter[i] is where it enters.
 TRACER_HD uint32_t wide_box_hits(const WideBvhNode& n, const WideRayQuery& q, float tmax, float* t_enter) {
-  const float* near_plane[3];
-  const float* far_plane[3];
-  for (int a = 0; a < 3; ++a) {
-    near_plane[a] = q.near_is_hi[a] ? n.hi[a] : n.lo[a];
-    far_plane[a] = q.near_is_hi[a] ? n.lo[a] : n.hi[a];
-  }
+  static_assert(offsetof(WideBvhNode, lo) == 0 && offsetof(WideBvhNode, hi) == sizeof n.lo, "planes first");
+  const float* planes = reinterpret_cast<const float*>(&n);
+  const float* near_plane[3] = {planes + q.near_plane[0], planes + q.near_plane[1], planes + q.near_plane[2]};
+  const float* far_plane[3] = {planes + q.far_plane[0], planes + q.far_plane[1], planes + q.far_plane[2]};
 #if defined(TRACER_X86_LANES) && defined(__AVX__)
   __m256 lo_t = _mm256_setzero_ps(), hi_t = _mm256_set1_ps(tmax);
   const __m256 widen = _mm256_set1_ps(kSlabWiden);
