@@ -162,6 +162,21 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
       throw std::runtime_error(label + ": hits differ from " + enum_name(accels[0]) +
                                "'s (docs/determinism.md rule 4)");
   };
+  // One run of each ray set through `view`, no row printed: the paired ratios' half.
+  const auto rates_once = [&](const SceneView& view, const CpuKernelVariant& kernel, double out[3]) {
+    std::vector<Hit> hits(std::max(rays.primary.size(), rays.incoherent.size()));
+    const std::vector<float> no_limit(hits.size(), kInfinity);
+    for (int set = 0; set < 2; ++set) {
+      const std::vector<Ray>& traced = set == 0 ? rays.primary : rays.incoherent;
+      out[set] = throughput(traced.size(), threads, 1, [&](size_t i, size_t n) {
+        kernel.trace_closest(view, &traced[i], no_limit.data(), n, &hits[i]);
+      });
+    }
+    std::vector<uint8_t> occluded(rays.shadow.size(), 0);
+    out[2] = throughput(rays.shadow.size(), threads, 1, [&](size_t i, size_t n) {
+      kernel.trace_any(view, &rays.shadow[i], &rays.shadow_tmax[i], n, &occluded[i]);
+    });
+  };
   // The GPU's row for a structure: its trace variant's kernels (kernel/accel/trace_variants.h)
   // on the tree `tree` names (render/device_bvh.h) where the structure is bvh or lbvh.
   const auto measure_cuda = [&](const std::string& label, const Scene& scene, DeviceBvh tree) {
@@ -224,9 +239,36 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
         "embree 3", e.build_seconds, e.megabytes,
         e.megabytes * 1048576.0 / static_cast<double>(scene.primitives.size()), "-", e.primary, e.incoherent, e.shadow,
         100.0 * e.same_primitive);
-    if (bvh_rates[0] > 0)
+    if (bvh_rates[0] > 0) {
       std::printf("%-14s %10.2f %10s %10s %10s | %10.2f %10.2f %10.2f |\n", "bvh / embree", bvh_build / e.build_seconds,
                   "", "", "", bvh_rates[0] / e.primary, bvh_rates[1] / e.incoherent, bvh_rates[2] / e.shadow);
+      // Each rate's ratio again from one run of each renderer back to back, --repeats times: a
+      // machine whose speed drifts between the two rows' runs moves both halves alike.
+      const Scene bvh_scene = load_bench_scene(cmd.scene, AccelKind::Bvh, cmd.grid_resolution);
+      const SceneView view = bvh_scene.view();
+      const CpuKernelVariant& kernel = cpu_kernel_for(view.features);
+      std::vector<double> paired[3];
+      for (uint32_t r = 0; r < cmd.repeats; ++r) {
+        double ours[3];
+        rates_once(view, kernel, ours);
+        const EmbreeRow one = embree_bench(scene, rays.primary, rays.incoherent, rays.shadow, rays.shadow_tmax,
+                                           reference_primary, reference_incoherent, threads, 1);
+        paired[0].push_back(ours[0] / one.primary);
+        paired[1].push_back(ours[1] / one.incoherent);
+        paired[2].push_back(ours[2] / one.shadow);
+      }
+      double median[3];
+      for (int k = 0; k < 3; ++k) {
+        std::sort(paired[k].begin(), paired[k].end());
+        median[k] = paired[k][paired[k].size() / 2];
+      }
+      std::printf("%-14s %10s %10s %10s %10s | %10.2f %10.2f %10.2f |\n", "paired ratio", "-", "", "", "", median[0],
+                  median[1], median[2]);
+      std::printf("(bvh / embree: the two rows' medians over each other; paired ratio: the median of %u ratios, "
+                  "each of one run of bvh and one of Embree timed back to back; builds are not paired, as each "
+                  "Embree run starts a new device, whose first build is not its warm one)\n",
+                  cmd.repeats);
+    }
   } else if (embree_available()) {  // the rows above are the answer; the comparison is for meshes
     std::printf("(no Embree row: Embree is compared on scenes of triangles alone; this one holds other shapes)\n");
   } else {
