@@ -9,6 +9,7 @@
 #include <chrono>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "image/image.h"
@@ -26,12 +27,17 @@ struct ImageError {
   double rmse = 0, display_rmse = 0, rel_mse = 0;
 };
 
+// The median of `values` (the upper one of an even count); at least one value.
+inline double median_value(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
 // The median of `repeats` (at least 1) values of `measure()`.
 inline double median_of(uint32_t repeats, const std::function<double()>& measure) {
   std::vector<double> values;
   for (uint32_t r = 0; r < std::max(repeats, 1u); ++r) values.push_back(measure());
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
+  return median_value(std::move(values));
 }
 
 // Wall seconds of `run()`, the median of `repeats` runs.

@@ -128,26 +128,40 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
   std::vector<Hit> reference_primary, reference_incoherent;
   double bvh_rates[3] = {0, 0, 0}, bvh_build = 0;
   std::string kernel_name;
+  // Closest hits of the primary and the incoherent rays through `view` (into primary and
+  // incoherent), and their Mrays/s into rates[0..1]; medians of `repeats` runs.
+  const auto closest_rates = [&](const SceneView& view, const CpuKernelVariant& kernel, uint32_t repeats,
+                                 std::vector<Hit>& primary, std::vector<Hit>& incoherent, double rates[2]) {
+    primary.resize(rays.primary.size());
+    incoherent.resize(rays.incoherent.size());
+    const std::vector<float> no_limit(std::max(primary.size(), incoherent.size()), kInfinity);
+    rates[0] = throughput(primary.size(), threads, repeats, [&](size_t i, size_t n) {
+      kernel.trace_closest(view, &rays.primary[i], no_limit.data(), n, &primary[i]);
+    });
+    rates[1] = throughput(incoherent.size(), threads, repeats, [&](size_t i, size_t n) {
+      kernel.trace_closest(view, &rays.incoherent[i], no_limit.data(), n, &incoherent[i]);
+    });
+  };
+  // Any hit of the shadow rays (into occluded); the median Mrays/s of `repeats` runs.
+  const auto shadow_rate = [&](const SceneView& view, const CpuKernelVariant& kernel, uint32_t repeats,
+                               std::vector<uint8_t>& occluded) {
+    occluded.assign(rays.shadow.size(), 0);
+    return throughput(rays.shadow.size(), threads, repeats, [&](size_t i, size_t n) {
+      kernel.trace_any(view, &rays.shadow[i], &rays.shadow_tmax[i], n, &occluded[i]);
+    });
+  };
   // Traces every ray set through `view` with `kernel`; prints the row and checks the checksum.
   const auto measure = [&](const std::string& label, const Scene& scene, const SceneView& view,
                            const CpuKernelVariant& kernel, double rates[3], double build) {
-    std::vector<Hit> primary(rays.primary.size()), incoherent(rays.incoherent.size());
-    const std::vector<float> no_limit(std::max(primary.size(), incoherent.size()), kInfinity);
-    rates[0] = throughput(primary.size(), threads, cmd.repeats, [&](size_t i, size_t n) {
-      kernel.trace_closest(view, &rays.primary[i], no_limit.data(), n, &primary[i]);
-    });
-    rates[1] = throughput(incoherent.size(), threads, cmd.repeats, [&](size_t i, size_t n) {
-      kernel.trace_closest(view, &rays.incoherent[i], no_limit.data(), n, &incoherent[i]);
-    });
+    std::vector<Hit> primary, incoherent;
+    closest_rates(view, kernel, cmd.repeats, primary, incoherent, rates);
     if (rays.shadow.empty()) {  // from each primary hit toward a point above the scene, once for all structures
       add_shadow_rays(view, shadow_light(scene.camera), primary, rays);
       reference_primary = primary;
       reference_incoherent = incoherent;
     }
-    std::vector<uint8_t> occluded(rays.shadow.size(), 0);
-    rates[2] = throughput(rays.shadow.size(), threads, cmd.repeats, [&](size_t i, size_t n) {
-      kernel.trace_any(view, &rays.shadow[i], &rays.shadow_tmax[i], n, &occluded[i]);
-    });
+    std::vector<uint8_t> occluded;
+    rates[2] = shadow_rate(view, kernel, cmd.repeats, occluded);
     const uint64_t sum = ray_hits_checksum(primary, incoherent, occluded);
     if (reference == 0) reference = sum;
     if (build > 0)
@@ -161,21 +175,6 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     if (sum != reference)
       throw std::runtime_error(label + ": hits differ from " + enum_name(accels[0]) +
                                "'s (docs/determinism.md rule 4)");
-  };
-  // One run of each ray set through `view`, no row printed: the paired ratios' half.
-  const auto rates_once = [&](const SceneView& view, const CpuKernelVariant& kernel, double out[3]) {
-    std::vector<Hit> hits(std::max(rays.primary.size(), rays.incoherent.size()));
-    const std::vector<float> no_limit(hits.size(), kInfinity);
-    for (int set = 0; set < 2; ++set) {
-      const std::vector<Ray>& traced = set == 0 ? rays.primary : rays.incoherent;
-      out[set] = throughput(traced.size(), threads, 1, [&](size_t i, size_t n) {
-        kernel.trace_closest(view, &traced[i], no_limit.data(), n, &hits[i]);
-      });
-    }
-    std::vector<uint8_t> occluded(rays.shadow.size(), 0);
-    out[2] = throughput(rays.shadow.size(), threads, 1, [&](size_t i, size_t n) {
-      kernel.trace_any(view, &rays.shadow[i], &rays.shadow_tmax[i], n, &occluded[i]);
-    });
   };
   // The GPU's row for a structure: its trace variant's kernels (kernel/accel/trace_variants.h)
   // on the tree `tree` names (render/device_bvh.h) where the structure is bvh or lbvh.
@@ -248,26 +247,25 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
       const SceneView view = bvh_scene.view();
       const CpuKernelVariant& kernel = cpu_kernel_for(view.features);
       std::vector<double> paired[3];
+      std::vector<Hit> primary, incoherent;
+      std::vector<uint8_t> occluded;
       for (uint32_t r = 0; r < cmd.repeats; ++r) {
         double ours[3];
-        rates_once(view, kernel, ours);
+        closest_rates(view, kernel, 1, primary, incoherent, ours);
+        ours[2] = shadow_rate(view, kernel, 1, occluded);
         const EmbreeRow one = embree_bench(scene, rays.primary, rays.incoherent, rays.shadow, rays.shadow_tmax,
                                            reference_primary, reference_incoherent, threads, 1);
         paired[0].push_back(ours[0] / one.primary);
         paired[1].push_back(ours[1] / one.incoherent);
         paired[2].push_back(ours[2] / one.shadow);
       }
-      double median[3];
-      for (int k = 0; k < 3; ++k) {
-        std::sort(paired[k].begin(), paired[k].end());
-        median[k] = paired[k][paired[k].size() / 2];
-      }
-      std::printf("%-14s %10s %10s %10s %10s | %10.2f %10.2f %10.2f |\n", "paired ratio", "-", "", "", "", median[0],
-                  median[1], median[2]);
-      std::printf("(bvh / embree: the two rows' medians over each other; paired ratio: the median of %u ratios, "
-                  "each of one run of bvh and one of Embree timed back to back; builds are not paired, as each "
-                  "Embree run starts a new device, whose first build is not its warm one)\n",
-                  cmd.repeats);
+      std::printf("%-14s %10s %10s %10s %10s | %10.2f %10.2f %10.2f |\n", "paired ratio", "-", "", "", "",
+                  median_value(paired[0]), median_value(paired[1]), median_value(paired[2]));
+      std::printf(
+          "(bvh / embree: the two rows' medians over each other; paired ratio: the median of %u ratios, "
+          "each of one run of bvh and one of Embree timed back to back; builds are not paired, as each "
+          "Embree run starts a new device, whose first build is not its warm one)\n",
+          cmd.repeats);
     }
   } else if (embree_available()) {  // the rows above are the answer; the comparison is for meshes
     std::printf("(no Embree row: Embree is compared on scenes of triangles alone; this one holds other shapes)\n");
