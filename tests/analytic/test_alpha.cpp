@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 
 #include "kernel/camera/camera.h"
@@ -129,13 +130,16 @@ TEST(Alpha, ABlendedScreenPassesOneMinusAlphaOfTheLight) {
 }
 
 // Masked and blended spheres, quads, a plane and mesh triangles with uvs: every structure keeps
-// the same hits, so the image is the same bit for bit.
+// the same hits with either triangle test, so the image is the same bit for bit.
 TEST(Alpha, EveryStructureKeepsTheSameHits) {
   const auto dir = test::temp_dir("alpha-structures");
   write_checker_mask(dir);
-  const std::string json = R"({"format": "tracer-scene/1",
+  for (const char* triangle_test : {"watertight", "moller-trumbore"}) {
+    SCOPED_TRACE(triangle_test);
+    std::string json = R"({"format": "tracer-scene/1",
     "camera": {"from": [0.4, 1.2, 3.5], "to": [0, 0.5, 0], "vfov": 50},
-    "film": {"width": 40, "height": 30}, "render": {"integrator": "path", "spp": 4, "sampler": "sobol", "max_depth": 4},
+    "film": {"width": 40, "height": 30}, "render": {"integrator": "path", "spp": 4, "sampler": "sobol", "max_depth": 4,
+      "triangle_test": "TRIANGLE_TEST"},
     "background": {"type": "gradient", "zenith": [0.2, 0.3, 0.6], "horizon": [0.6, 0.6, 0.6]},
     "materials": {"floor": {"type": "lambert", "albedo": [0.5, 0.5, 0.5], "alpha_mode": "mask", "alpha_map": "mask.png", "alpha_cutoff": 0.3},
       "card": {"type": "lambert", "albedo": [0.2, 0.6, 0.2], "alpha_mode": "mask", "alpha_map": "mask.png"},
@@ -147,15 +151,17 @@ TEST(Alpha, EveryStructureKeepsTheSameHits) {
       {"type": "sphere", "center": [-0.4, 0.35, 0.8], "radius": 0.35, "material": "card"},
       {"type": "mesh", "positions": [[0.2, 0.1, 0.9], [1.2, 0.2, 0.6], [0.4, 1.2, 0.5], [1.3, 1.1, 0.2]],
        "uvs": [[0, 0], [1, 0], [0, 1], [1, 1]], "indices": [[0, 1, 2], [2, 1, 3]], "material": "ghost"}]})";
-  RenderOverrides ov;
-  ov.accel = AccelKind::None;
-  RenderStats stats;
-  const Image reference = render_cpu(load_in(dir, json, ov), 1, stats);
-  for (const AccelKind accel :
-       {AccelKind::Bvh, AccelKind::Lbvh, AccelKind::Kdtree, AccelKind::KdtreeMedian, AccelKind::Grid}) {
-    ov.accel = accel;
-    const Image img = render_cpu(load_in(dir, json, ov), 1, stats);
-    EXPECT_EQ(img.rgb, reference.rgb) << enum_name(accel) << " differs from the brute-force hits";
+    json.replace(json.find("TRIANGLE_TEST"), std::strlen("TRIANGLE_TEST"), triangle_test);
+    RenderOverrides ov;
+    ov.accel = AccelKind::None;
+    RenderStats stats;
+    const Image reference = render_cpu(load_in(dir, json, ov), 1, stats);
+    for (const AccelKind accel :
+         {AccelKind::Bvh, AccelKind::Lbvh, AccelKind::Kdtree, AccelKind::KdtreeMedian, AccelKind::Grid}) {
+      ov.accel = accel;
+      const Image img = render_cpu(load_in(dir, json, ov), 1, stats);
+      EXPECT_EQ(img.rgb, reference.rgb) << enum_name(accel) << " differs from the brute-force hits";
+    }
   }
   std::filesystem::remove_all(dir);
 }

@@ -26,7 +26,7 @@ struct WideRayQuery {
   // plane where the direction's sign bit is set, lo[a] otherwise. Chosen once per ray, not
   // once per node.
   uint32_t near_plane[3], far_plane[3];
-  int k[3];           // the watertight test's axes kx, ky, kz (kernel/geom/triangle.h)
+  int k[3];  // the watertight test's axes kx, ky, kz (kernel/geom/triangle.h)
   float sx, sy, sz;
 };
 
