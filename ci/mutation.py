@@ -172,6 +172,9 @@ def campaign(mutants, scratch, jobs):
             if update.returncode != 0 and ("NaN/inf" in refusal or "beyond the film's range" in refusal):
                 # The update refuses images with NaN, inf or overflowing samples: nobody can hide this one.
                 row["verdict"], row["by"] = "killed", "golden update refused it: " + refusal
+            elif update.returncode < 0:
+                # A crash under the mutant: no golden can be regenerated to hide it either.
+                row["verdict"], row["by"] = "killed", "golden update crashed (signal %d)" % -update.returncode
             elif update.returncode != 0 or not rewritten:
                 row["verdict"] = "golden update failed: " + refusal
             elif rewritten.group(1) == "0" and not (m.equivalent or m.guard):
