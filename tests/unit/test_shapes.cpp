@@ -168,6 +168,8 @@ TEST(Shapes, NoSelfIntersectionAtLargeCoordinates) {
   EXPECT_EQ(self_hits(tris, {0, 274, 280}, 270.0f), 0);
 }
 
+namespace {
+
 // A soup of spheres and triangles, with a dense cluster of small triangles so leaves hold
 // several triangle blocks and primitives straddle many kd-tree leaves and grid cells.
 struct Soup {
@@ -238,6 +240,8 @@ void expect_every_structure_gives_the_brute_force_hits(const std::string& shapes
     }
   }
 }
+
+}  // namespace
 
 TEST(Accel, EveryStructureReturnsTheBruteForceHit) {
   std::mt19937 rng(21);
