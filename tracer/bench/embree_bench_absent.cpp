@@ -7,7 +7,8 @@ namespace tracer {
 bool embree_available() { return false; }
 
 EmbreeRow embree_bench(const Scene&, const std::vector<Ray>&, const std::vector<Ray>&, const std::vector<Ray>&,
-                       const std::vector<float>&, const std::vector<Hit>&, const std::vector<Hit>&, int, uint32_t) {
+                       const std::vector<float>&, const std::vector<Hit>&, const std::vector<Hit>&, int, uint32_t,
+                       const std::function<double()>&) {
   throw InputError("this build has no Embree adapter (install libembree-dev and reconfigure)");
 }
 
