@@ -40,17 +40,30 @@ inline double median_of(uint32_t repeats, const std::function<double()>& measure
   return median_value(std::move(values));
 }
 
-// The median of `measure()`'s seconds over at least `repeats` runs and, for a structure built
-// in about a millisecond, as many more as fill 0.25 s (at most 10,000 runs): five runs of a
+// The median of the values `measure()` returns with the seconds it took: over at least
+// `repeats` runs and as many more, up to `max_runs`, as fill `fill_seconds`. Five runs of a
 // 1 ms build vary by a third from one run of the bench to the next.
-inline double median_build_seconds(uint32_t repeats, const std::function<double()>& measure) {
+struct TimedValue {
+  double value, seconds;
+};
+inline double median_filling(uint32_t repeats, double fill_seconds, size_t max_runs,
+                             const std::function<TimedValue()>& measure) {
   std::vector<double> values;
   double total = 0;
-  while (values.size() < std::max(repeats, 1u) || (total < 0.25 && values.size() < 10000)) {
-    values.push_back(measure());
-    total += values.back();
+  while (values.size() < std::max(repeats, 1u) || (total < fill_seconds && values.size() < max_runs)) {
+    const TimedValue run = measure();
+    values.push_back(run.value);
+    total += run.seconds;
   }
   return median_value(std::move(values));
+}
+
+// The median of a build's seconds (`measure()`), repeated to fill 0.25 s (at most 10,000 runs).
+inline double median_build_seconds(uint32_t repeats, const std::function<double()>& measure) {
+  return median_filling(repeats, 0.25, 10000, [&] {
+    const double seconds = measure();
+    return TimedValue{seconds, seconds};
+  });
 }
 
 // Wall seconds of `run()`, the median of `repeats` runs.

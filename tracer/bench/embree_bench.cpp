@@ -3,7 +3,6 @@
 #include <embree3/rtcore.h>
 #include <omp.h>
 
-#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <string>
@@ -95,19 +94,15 @@ EmbreeRow embree_bench(const Scene& scene, const std::vector<Ray>& primary, cons
     // Each build starts 20 ms after the last, as a scene's one build does, from idle threads:
     // back to back, the other library's threads would still spin for work and take a core.
     const auto idle = [] { std::this_thread::sleep_for(std::chrono::milliseconds(20)); };
-    std::vector<double> ratios;
-    double total = 0;
-    while (ratios.size() < std::max(repeats, 1u) || (total < 0.5 && ratios.size() < 50)) {
+    row.paired_build = median_filling(repeats, 0.5, 50, [&] {
       idle();
       const double ours = our_build();
       double seconds = 0;
       rtcReleaseScene(rtc);
       idle();
       rtc = build(&seconds);
-      ratios.push_back(ours / seconds);
-      total += ours + seconds;
-    }
-    row.paired_build = median_value(std::move(ratios));
+      return TimedValue{ours / seconds, ours + seconds};
+    });
   }
 
   std::vector<uint32_t> prim;

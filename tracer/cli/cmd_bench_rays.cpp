@@ -239,10 +239,10 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     const Scene& scene = embree_scene;
     const bool compared = bvh_rates[0] > 0;  // bvh is among the structures measured
     const Scene bvh_scene = compared ? load_bench_scene(cmd.scene, AccelKind::Bvh, cmd.grid_resolution) : Scene{};
-    const auto our_build = [&] { return one_build_seconds(bvh_scene); };
+    std::function<double()> our_build;
+    if (compared) our_build = [&] { return one_build_seconds(bvh_scene); };
     const EmbreeRow e = embree_bench(scene, rays.primary, rays.incoherent, rays.shadow, rays.shadow_tmax,
-                                     reference_primary, reference_incoherent, threads, cmd.repeats,
-                                     compared ? std::function<double()>(our_build) : std::function<double()>());
+                                     reference_primary, reference_incoherent, threads, cmd.repeats, our_build);
     std::printf(
         "%-14s %10.4f %10.1f %10.1f %10s | %10.2f %10.2f %10.2f | %.4f%% of closest hits on the same primitive\n",
         "embree 3", e.build_seconds, e.megabytes,
