@@ -19,12 +19,8 @@ constexpr int kBins = 16;
 constexpr uint32_t kMaxLeafSize = 4;
 constexpr int kMaxBuildDepth = 60;  // traversal stacks hold 64 entries
 // Ranges of at least task_items(n) items build their halves as OpenMP tasks: about 32 task
-// ranges per build, of 2^10 to 2^15 items. A build of fewer than kParallelBuildItems items
-// stays on the calling thread: it takes about 3 ms or less alone, and waking idle threads
-// cost about 2 ms on a virtual machine (a cold build of the bunny's 3,674 triangles took
-// 4-6x Embree's on 2 threads and 0.9x on one).
+// ranges per build, of 2^10 to 2^15 items, in a build of at least kParallelBuildItems.
 constexpr uint32_t kMinTaskItems = 1u << 10, kMaxTaskItems = 1u << 15;
-constexpr uint32_t kParallelBuildItems = 1u << 14;
 uint32_t task_items(uint32_t n) { return std::clamp(n / 32, kMinTaskItems, kMaxTaskItems); }
 constexpr uint32_t kTaskNodes = 1u << 14;  // subtrees at least this large are numbered as OpenMP tasks
 // Work over many items is split into chunks of kChunkItems fixed by the items alone, each
@@ -199,6 +195,7 @@ class BvhBuilder {
   BvhBuilder(Ref* refs, uint32_t n, BvhNode* slots, uint32_t* subtree_nodes)
       : refs_(refs),
         task_items_(task_items(n)),
+        parallel_(n >= kParallelBuildItems),
         capacity_(slot_capacity(n)),
         slots_(slots),
         subtree_nodes_(subtree_nodes) {}
@@ -245,7 +242,7 @@ class BvhBuilder {
     reserve_on_huge_pages(nodes, total);
     nodes.resize(total);
     nodes[0] = slots_[0];
-#pragma omp parallel if (total >= kTaskNodes)
+#pragma omp parallel if (parallel_ && total >= kTaskNodes)
 #pragma omp single
     number(nodes.data(), 0, 1);
     return nodes;
@@ -386,6 +383,7 @@ class BvhBuilder {
 
   Ref* refs_;
   const uint32_t task_items_;
+  const bool parallel_;  // at least kParallelBuildItems items
   const size_t capacity_;
   std::atomic<uint32_t> next_slot_{1};  // slot 0 is the root's
   BvhNode* slots_;

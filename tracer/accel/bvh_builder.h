@@ -14,6 +14,11 @@
 
 namespace tracer {
 
+// A build of fewer items stays on the calling thread, every phase of it: it takes about 3 ms
+// or less alone, and waking idle threads cost about 2 ms on a virtual machine (a cold build of
+// the bunny's 3,674 triangles took 4-6x Embree's on 2 threads and 0.9x on one).
+constexpr uint32_t kParallelBuildItems = 1u << 14;
+
 std::vector<BvhNode> build_sah_bvh(std::span<const Primitive> primitives, std::vector<uint32_t>& leaf_ids);
 
 }  // namespace tracer

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "accel/bounds.h"
+#include "accel/bvh_builder.h"  // kParallelBuildItems
 #include "accel/huge_pages.h"
 #include "kernel/scene/scene_view.h"  // kNoHit
 
@@ -112,7 +113,7 @@ class WideBvhCollapser {
   void fill_blocks() {
     wide_.blocks.resize(block_count_);
 #if defined(_OPENMP)
-#pragma omp parallel for schedule(static, 4096) if (leaves_.size() >= 4096)
+#pragma omp parallel for schedule(static, 4096) if (leaf_order_.size() >= kParallelBuildItems)
 #endif
     for (int64_t i = 0; i < static_cast<int64_t>(leaves_.size()); ++i) {
       const Leaf& leaf = leaves_[static_cast<size_t>(i)];
