@@ -1,7 +1,7 @@
-// `tracer bench rays --device cuda` and `tracer-gpu bench`'s rays table (render/trace_cuda.h): rays traced by the stream
-// schedule's closest-hit and shadow kernels over the scene's arrays on the device. The shadow
-// stage is the path tracer's: it adds a ray's contribution to its radiance when the light is
-// visible, so each ray carries a contribution of 1 and its radiance says whether it was occluded.
+// `tracer bench rays --device cuda` and `tracer-gpu bench`'s rays table (render/trace_cuda.h): rays traced by the
+// stream schedule's closest-hit and shadow kernels over the scene's arrays on the device. The shadow stage is the path
+// tracer's: it adds a ray's contribution to its radiance when the light is visible, so each ray carries a contribution
+// of 1 and its radiance says whether it was occluded.
 #include <algorithm>
 
 #include "cuda_device.h"
@@ -9,6 +9,7 @@
 #include "device_scene.h"
 #include "gpu_stream.h"
 #include "kernel/accel/trace_variants.h"
+#include "ray_order_gpu.h"
 #include "render/trace_cuda.h"
 
 namespace tracer {
@@ -37,21 +38,36 @@ std::vector<uint32_t> identity_queue(size_t n) {
   return queue;
 }
 
-// The median time of `repeats` launches of `stage` over queue[0, n), each after `reset`.
-template <class Reset>
-double median_time(const SceneView& view, StreamStage stage, const StreamStates& st, const uint32_t* queue, size_t n,
-                   uint32_t repeats, Reset&& reset) {
+// The median time of `repeats` runs of timed() (CUDA events around what it queues), each
+// after reset(), untimed.
+template <class Timed, class Reset>
+double median_time(uint32_t repeats, Timed&& timed, Reset&& reset) {
   std::vector<double> times;
   for (uint32_t r = 0; r < repeats; ++r) {
     reset();
     const CudaEvent start, stop;
     TRACER_CUDA_CHECK(cudaEventRecord(start.event));
-    launch_trace_stage(view, stage, st, queue, n);
+    timed();
     TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
     times.push_back(seconds_between(start, stop));
   }
   std::sort(times.begin(), times.end());
   return times[times.size() / 2];
+}
+
+// The median time of `repeats` launches of `stage` over the n states of `queue`, each after
+// reset(); with a `sorted` frame, the queue is sorted by the rays' keys (origin and dir) first,
+// in the timed part.
+template <class Reset>
+double median_trace_time(const SceneView& view, StreamStage stage, const StreamStates& st, const Vec3* origin,
+                         const Vec3* dir, const uint32_t* queue, size_t n, uint32_t repeats,
+                         const std::optional<RayOrderFrame>& sorted, Reset&& reset) {
+  std::optional<RayOrderSort> sorter;
+  if (sorted) sorter.emplace(n);
+  return median_time(
+      repeats,
+      [&] { launch_trace_stage(view, stage, st, sorted ? sorter->sort(*sorted, origin, dir, queue, n) : queue, n); },
+      reset);
 }
 
 }  // namespace
@@ -74,7 +90,8 @@ const char* CudaRayTracer::variant() const {
 
 CudaRayTracer::~CudaRayTracer() = default;
 
-double CudaRayTracer::closest(const std::vector<Ray>& rays, std::vector<Hit>& hits, uint32_t repeats) {
+double CudaRayTracer::closest(const std::vector<Ray>& rays, std::vector<Hit>& hits, uint32_t repeats,
+                              std::optional<RayOrderFrame> sorted) {
   const size_t n = rays.size();
   const DeviceRays d_rays(rays);
   const DeviceBuffer<uint32_t> queue(identity_queue(n));
@@ -83,13 +100,14 @@ double CudaRayTracer::closest(const std::vector<Ray>& rays, std::vector<Hit>& hi
   st.origin = d_rays.origin.get();
   st.dir = d_rays.dir.get();
   st.hit = d_hit.get();
-  const double seconds = median_time(device_->scene.view(), StreamStage::Closest, st, queue.get(), n, repeats, [] {});
+  const double seconds = median_trace_time(device_->scene.view(), StreamStage::Closest, st, st.origin, st.dir,
+                                           queue.get(), n, repeats, sorted, [] {});
   hits = d_hit.download();
   return seconds;
 }
 
 double CudaRayTracer::any(const std::vector<Ray>& rays, const std::vector<float>& tmax, std::vector<uint8_t>& occluded,
-                          uint32_t repeats) {
+                          uint32_t repeats, std::optional<RayOrderFrame> sorted) {
   const size_t n = rays.size();
   const DeviceRays d_rays(rays);
   const DeviceBuffer<Vec3> contribution(std::vector<Vec3>(n, Vec3{1.0f, 0.0f, 0.0f}));
@@ -103,12 +121,21 @@ double CudaRayTracer::any(const std::vector<Ray>& rays, const std::vector<float>
   st.shadow_emitter = emitter.get();
   st.shadow_contribution = contribution.get();
   st.radiance = radiance.get();
-  const double seconds =
-      median_time(device_->scene.view(), StreamStage::Shadow, st, queue.get(), n, repeats, [&] { radiance.zero(); });
+  const double seconds = median_trace_time(device_->scene.view(), StreamStage::Shadow, st, st.shadow_origin,
+                                           st.shadow_dir, queue.get(), n, repeats, sorted, [&] { radiance.zero(); });
   const std::vector<Vec3> seen = radiance.download();
   occluded.resize(n);
   for (size_t i = 0; i < n; ++i) occluded[i] = seen[i].x == 0.0f ? 1 : 0;
   return seconds;
+}
+
+double CudaRayTracer::sort(const std::vector<Ray>& rays, const RayOrderFrame& frame, uint32_t repeats) {
+  const size_t n = rays.size();
+  const DeviceRays d_rays(rays);
+  const DeviceBuffer<uint32_t> queue(identity_queue(n));
+  RayOrderSort sorter(n);
+  return median_time(
+      repeats, [&] { sorter.sort(frame, d_rays.origin.get(), d_rays.dir.get(), queue.get(), n); }, [] {});
 }
 
 }  // namespace tracer

@@ -26,10 +26,14 @@ struct CudaRayTracer::Device {};
 CudaRayTracer::CudaRayTracer(const SceneArrays&, const SceneView&, DeviceBvh) { no_cuda(); }
 CudaRayTracer::~CudaRayTracer() = default;
 const char* CudaRayTracer::variant() const { no_cuda(); }
-double CudaRayTracer::closest(const std::vector<Ray>&, std::vector<Hit>&, uint32_t) { no_cuda(); }
-double CudaRayTracer::any(const std::vector<Ray>&, const std::vector<float>&, std::vector<uint8_t>&, uint32_t) {
+double CudaRayTracer::closest(const std::vector<Ray>&, std::vector<Hit>&, uint32_t, std::optional<RayOrderFrame>) {
   no_cuda();
 }
+double CudaRayTracer::any(const std::vector<Ray>&, const std::vector<float>&, std::vector<uint8_t>&, uint32_t,
+                          std::optional<RayOrderFrame>) {
+  no_cuda();
+}
+double CudaRayTracer::sort(const std::vector<Ray>&, const RayOrderFrame&, uint32_t) { no_cuda(); }
 
 namespace parity {
 std::string gpu_device() { no_cuda(); }

@@ -124,23 +124,37 @@ void run_ray_bench(const SceneBundle& bundle, const std::string& label, bool gpu
   print_row(label + " cpu bvh", rays, cpu_binary, binary_sum, reference, "");
   if (binary_sum != reference) throw std::runtime_error(label + ": the binary tree's hits differ from the wide tree's");
   if (!gpu) return;
+  // The pair records twice: the sets as made, and each sorted on the device before its launch
+  // (cuda/ray_order_gpu.h), the sort timed with the trace.
   const struct {
     DeviceBvh tree;
     const char* name;
-  } trees[] = {
-      {DeviceBvh::Binary, " bvh nodes cuda"}, {DeviceBvh::Pairs, " bvh cuda"}, {DeviceBvh::Wide, " bvh8 cuda"}};
-  for (const auto& [tree, tree_name] : trees) {
+    bool sorted;
+  } trees[] = {{DeviceBvh::Binary, " bvh nodes cuda", false},
+               {DeviceBvh::Pairs, " bvh cuda", false},
+               {DeviceBvh::Pairs, " bvh cuda sorted", true},
+               {DeviceBvh::Wide, " bvh8 cuda", false}};
+  const RayOrderFrame frame = ray_order_frame(root.lo, root.hi);
+  for (const auto& [tree, tree_name, sorted] : trees) {
     CudaRayTracer device(arrays, view, tree);
+    const std::optional<RayOrderFrame> order = sorted ? std::optional(frame) : std::nullopt;
     TracedRays t;
-    t.seconds[0] = device.closest(rays.primary, t.primary, repeats);
-    t.seconds[1] = device.closest(rays.incoherent, t.incoherent, repeats);
-    t.seconds[2] = device.any(rays.shadow, rays.shadow_tmax, t.occluded, repeats);
+    t.seconds[0] = device.closest(rays.primary, t.primary, repeats, order);
+    t.seconds[1] = device.closest(rays.incoherent, t.incoherent, repeats, order);
+    t.seconds[2] = device.any(rays.shadow, rays.shadow_tmax, t.occluded, repeats, order);
     const uint64_t sum = ray_hits_checksum(t.primary, t.incoherent, t.occluded);
     const std::string name = label + tree_name;
-    char note[96];
+    char note[160];
     std::snprintf(note, sizeof note, "  (trace %s; %.1fx, %.1fx, %.1fx the CPU)", device.variant(),
                   cpu.seconds[0] / t.seconds[0], cpu.seconds[1] / t.seconds[1], cpu.seconds[2] / t.seconds[2]);
-    print_row(name, rays, t, sum, reference, note);
+    std::string notes = note;
+    if (sorted) {
+      std::snprintf(note, sizeof note, "  (the sorts alone %.3f / %.3f / %.3f ms)",
+                    device.sort(rays.primary, frame, repeats) * 1e3, device.sort(rays.incoherent, frame, repeats) * 1e3,
+                    device.sort(rays.shadow, frame, repeats) * 1e3);
+      notes += note;
+    }
+    print_row(name, rays, t, sum, reference, notes);
     if (sum != reference) throw std::runtime_error(name + ": hits differ from the CPU's (docs/determinism.md rule 1)");
   }
 }

@@ -217,7 +217,7 @@ TEST(Bench, RaysOnTheGpuMatchTheCpuOrSayWhyNot) {
   const int code =
       test::run_tracer("bench rays " + obj + " --rays 4096 --threads 1 --accel bvh,grid --device cuda", &output);
   if (code == 0) {
-    for (const char* row : {"\nbvh cuda ", "\nbvh nodes cuda ", "\nbvh8 cuda ", "\ngrid cuda "}) {
+    for (const char* row : {"\nbvh cuda ", "\nbvh cuda sorted ", "\nbvh nodes cuda ", "\nbvh8 cuda ", "\ngrid cuda "}) {
       const size_t at = output.find(row);
       ASSERT_NE(at, std::string::npos) << row << " in " << output;
       EXPECT_NE(output.substr(at, output.find('\n', at + 1) - at).find(" same (trace "), std::string::npos) << output;

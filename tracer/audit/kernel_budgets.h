@@ -144,6 +144,8 @@ inline constexpr KernelBudget kKernelBudgets[] = {
     {"radix_kernel",                      20,    0, 0, 0, 256},
     {"gather_kernel",                     24,    0, 0, 0, 256},
     {"climb_kernel",                      30,    0, 0, 0, 256},
+    // the rays' sort keys before a sorted trace (cuda/ray_order_gpu.cu)
+    {"ray_order_key_kernel",              18,    0, 0, 0, 256},
     // parity cases (cuda/parity/parity_gpu.cu)
     {"math_kernel",                       29,    0, 0, 0, 256},
     {"philox_kernel",                     18,    0, 0, 0, 256},

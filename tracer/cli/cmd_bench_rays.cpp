@@ -183,14 +183,16 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
                                "'s (docs/determinism.md rule 4)");
   };
   // The GPU's row for a structure: its trace variant's kernels (kernel/accel/trace_variants.h)
-  // on the tree `tree` names (render/device_bvh.h) where the structure is bvh or lbvh.
-  const auto measure_cuda = [&](const std::string& label, const Scene& scene, DeviceBvh tree) {
+  // on the tree `tree` names (render/device_bvh.h) where the structure is bvh or lbvh; with a
+  // `sorted` frame each set sorted on the device before its launch, the sort timed with it.
+  const auto measure_cuda = [&](const std::string& label, const Scene& scene, DeviceBvh tree,
+                                std::optional<RayOrderFrame> sorted = std::nullopt) {
     CudaRayTracer device(scene, scene.view(), tree);
     std::vector<Hit> primary, incoherent;
     std::vector<uint8_t> occluded;
-    const double seconds[3] = {device.closest(rays.primary, primary, cmd.repeats),
-                               device.closest(rays.incoherent, incoherent, cmd.repeats),
-                               device.any(rays.shadow, rays.shadow_tmax, occluded, cmd.repeats)};
+    const double seconds[3] = {device.closest(rays.primary, primary, cmd.repeats, sorted),
+                               device.closest(rays.incoherent, incoherent, cmd.repeats, sorted),
+                               device.any(rays.shadow, rays.shadow_tmax, occluded, cmd.repeats, sorted)};
     const uint64_t sum = ray_hits_checksum(primary, incoherent, occluded);
     std::printf("%-14s %10s %10s %10s %10s | %10.2f %10.2f %10.2f | %016llx %s (trace %s)\n", label.c_str(), "", "", "",
                 "", rays.primary.size() / seconds[0] / 1e6, rays.incoherent.size() / seconds[1] / 1e6,
@@ -213,6 +215,9 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     if (cmd.device == "cuda") measure_cuda(std::string(enum_name(accel)) + " cuda", scene, DeviceBvh::Pairs);
     if (accel != AccelKind::Bvh) continue;
     if (cmd.device == "cuda") {
+      if (!scene.bvh_nodes.empty())
+        measure_cuda("bvh cuda sorted", scene, DeviceBvh::Pairs,
+                     ray_order_frame(scene.bvh_nodes[0].lo, scene.bvh_nodes[0].hi));
       measure_cuda("bvh nodes cuda", scene, DeviceBvh::Binary);
       measure_cuda("bvh8 cuda", scene, DeviceBvh::Wide);
       std::printf("(bvh8 cuda: the 8-wide tree needs %u stack entries, the variant holds %d)\n",
@@ -229,7 +234,9 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
               kernel_name.c_str(),
               cmd.device == "cuda"
                   ? "; a row \"ACCEL cuda\" the GPU's stream kernels, kernel time only, on bvh's and lbvh's "
-                    "pair records where the scene is all triangles; \"bvh nodes cuda\" on bvh's binary nodes, "
+                    "pair records where the scene is all triangles; \"bvh cuda sorted\" the same with each set sorted "
+                    "on the device by origin and direction first, the sort timed with it; \"bvh nodes cuda\" on "
+                    "bvh's binary nodes, "
                     "\"bvh8 cuda\" on its 8-wide tree"
                   : "");
   const Scene embree_scene = load_bench_scene(cmd.scene, AccelKind::None, 0);

@@ -1,0 +1,77 @@
+// The rays' sort key (kernel/geom/ray_order_key.h) against a Morton code written another way:
+// the key's 30 bits read from the most significant as a string, position p holding bit
+// 4 - p / 6 of cell coordinate p % 6 (origin x, y, z, direction x, y, z); and the cells at
+// their edges, for NaN and outside the box.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include "kernel/base/philox.h"
+#include "kernel/geom/ray_order_key.h"
+
+using namespace tracer;
+
+namespace {
+
+// The key spelled as the bit string the interleave should give, from six cell coordinates.
+std::string expected_bits(const uint32_t cells[6]) {
+  std::string bits;
+  for (int p = 0; p < 30; ++p) bits += ((cells[p % 6] >> (4 - p / 6)) & 1u) ? '1' : '0';
+  return bits;
+}
+
+std::string bits_of_key(uint32_t key) {
+  std::string bits;
+  for (int b = 29; b >= 0; --b) bits += ((key >> b) & 1u) ? '1' : '0';
+  return bits;
+}
+
+// The box [-16, 16]^3: 32 cells of width 1 on each axis, whose edges are exact in float.
+const RayOrderFrame kFrame = ray_order_frame({-16.0f, -16.0f, -16.0f}, {16.0f, 16.0f, 16.0f});
+
+}  // namespace
+
+TEST(RayOrderKey, InterleavesTheSixCellsBitsFromTheMostSignificant) {
+  for (uint32_t i = 0; i < 2000; ++i) {
+    const Philox4 r = philox4x32_10({{i, 0u, 0u, 0u}}, 0x0DDBA11u, 0x5EEDu);
+    uint32_t cells[6];
+    for (uint32_t a = 0; a < 6; ++a) cells[a] = (r.v[a % 4] >> (a < 4 ? 0 : 16)) & 31u;
+    // each coordinate at the middle of its cell: origin cells of width 1 from -16, direction
+    // cells of width 1/16 from -1
+    const Vec3 origin = {cells[0] - 15.5f, cells[1] - 15.5f, cells[2] - 15.5f};
+    const Vec3 dir = {(cells[3] + 0.5f) / 16.0f - 1.0f, (cells[4] + 0.5f) / 16.0f - 1.0f,
+                      (cells[5] + 0.5f) / 16.0f - 1.0f};
+    ASSERT_EQ(bits_of_key(ray_order_key(kFrame, origin, dir)), expected_bits(cells)) << i;
+  }
+}
+
+TEST(RayOrderKey, CellsStartAtTheirLowerEdgeAndClampOutsideTheBox) {
+  EXPECT_EQ(ray_order_cell(-16.0f, -16.0f, 1.0f), 0u);
+  EXPECT_EQ(ray_order_cell(std::nextafter(-15.0f, -16.0f), -16.0f, 1.0f), 0u);
+  EXPECT_EQ(ray_order_cell(-15.0f, -16.0f, 1.0f), 1u);
+  EXPECT_EQ(ray_order_cell(15.0f, -16.0f, 1.0f), 31u);
+  EXPECT_EQ(ray_order_cell(16.0f, -16.0f, 1.0f), 31u);  // the box's far face: the last cell
+  EXPECT_EQ(ray_order_cell(1e30f, -16.0f, 1.0f), 31u);
+  EXPECT_EQ(ray_order_cell(std::numeric_limits<float>::infinity(), -16.0f, 1.0f), 31u);
+  EXPECT_EQ(ray_order_cell(-17.0f, -16.0f, 1.0f), 0u);
+  EXPECT_EQ(ray_order_cell(-std::numeric_limits<float>::infinity(), -16.0f, 1.0f), 0u);
+  EXPECT_EQ(ray_order_cell(std::numeric_limits<float>::quiet_NaN(), -16.0f, 1.0f), 0u);
+  // directions: -1 the first cell, +1 the last, 0 the first of the upper half
+  const Vec3 o = {-16.0f, -16.0f, -16.0f};
+  EXPECT_EQ(ray_order_key(kFrame, o, {-1.0f, -1.0f, -1.0f}), 0u);
+  EXPECT_EQ(ray_order_key(kFrame, {16.0f, 16.0f, 16.0f}, {1.0f, 1.0f, 1.0f}), (1u << kRayOrderKeyBits) - 1u);
+  EXPECT_EQ(ray_order_key(kFrame, o, {0.0f, -1.0f, -1.0f}), 1u << 26);                        // direction x's top bit
+  EXPECT_EQ(ray_order_key(kFrame, {0.0f, -16.0f, -16.0f}, {-1.0f, -1.0f, -1.0f}), 1u << 29);  // origin x's
+}
+
+TEST(RayOrderKey, AFlatBoxPutsEveryOriginInTheFirstCellOfItsFlatAxis) {
+  const RayOrderFrame flat = ray_order_frame({0.0f, 2.0f, 0.0f}, {32.0f, 2.0f, 32.0f});
+  EXPECT_EQ(flat.scale.y, 0.0f);
+  for (const float y : {2.0f, -5.0f, 7.0f})
+    EXPECT_EQ(ray_order_key(flat, {31.5f, y, 0.5f}, {-1.0f, -1.0f, -1.0f}),
+              1u << 29 | 1u << 23 | 1u << 17 | 1u << 11 | 1u << 5)
+        << y;
+}
