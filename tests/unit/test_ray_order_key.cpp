@@ -1,13 +1,19 @@
 // The rays' sort key (kernel/geom/ray_order_key.h) against a Morton code written another way:
 // the key's 30 bits read from the most significant as a string, position p holding bit
-// 4 - p / 6 of cell coordinate p % 6 (origin x, y, z, direction x, y, z); and the cells at
-// their edges, for NaN and outside the box.
+// 4 - p / 6 of cell coordinate p % 6 (origin x, y, z, direction x, y, z); the cells at their
+// edges, for NaN and outside the box; and the CPU's radix sort by the key
+// (bench/ray_order_sort.h) against std::stable_sort.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <string>
+#include <vector>
+
+#include "bench/ray_order_sort.h"
 
 #include "kernel/base/philox.h"
 #include "kernel/geom/ray_order_key.h"
@@ -74,4 +80,29 @@ TEST(RayOrderKey, AFlatBoxPutsEveryOriginInTheFirstCellOfItsFlatAxis) {
     EXPECT_EQ(ray_order_key(flat, {31.5f, y, 0.5f}, {-1.0f, -1.0f, -1.0f}),
               1u << 29 | 1u << 23 | 1u << 17 | 1u << 11 | 1u << 5)
         << y;
+}
+
+TEST(RayOrderSorter, GivesTheStableSortByKeyForAnyThreadCount) {
+  const Vec3 lo = {-2.0f, 0.0f, 1.0f}, hi = {3.0f, 0.5f, 9.0f};
+  const RayOrderFrame frame = ray_order_frame(lo, hi);
+  std::vector<Ray> rays;
+  for (uint32_t i = 0; i < 20000; ++i) {
+    const Philox4 r = philox4x32_10({{i, 1u, 0u, 0u}}, 0x0DDBA11u, 0x5EEDu);
+    const float u[4] = {uniform_from_bits(r.v[0]), uniform_from_bits(r.v[1]), uniform_from_bits(r.v[2]),
+                        uniform_from_bits(r.v[3])};
+    // few distinct origins, so that many keys are equal and the order among them is tested
+    const Vec3 origin = {lo.x + std::floor(u[0] * 4.0f) * (hi.x - lo.x) / 4.0f, lo.y + u[1] * 0.1f, hi.z};
+    rays.push_back({origin, normalize(Vec3{u[2] - 0.5f, u[3] - 0.5f, 0.25f})});
+  }
+  std::vector<uint32_t> expected(rays.size());
+  std::iota(expected.begin(), expected.end(), 0u);
+  std::stable_sort(expected.begin(), expected.end(), [&](uint32_t a, uint32_t b) {
+    return ray_order_key(frame, rays[a].origin, rays[a].dir) < ray_order_key(frame, rays[b].origin, rays[b].dir);
+  });
+  RayOrderSorter sorter(rays.size());
+  for (const int threads : {1, 2, 3}) EXPECT_EQ(sorter.sort(rays, frame, threads), expected) << threads;
+  const std::vector<Ray> none, one = {rays[7]};
+  EXPECT_TRUE(sorter.sort(none, frame, 2).empty());
+  EXPECT_EQ(sorter.sort(one, frame, 2), std::vector<uint32_t>{0u});
+  EXPECT_THROW(RayOrderSorter(3).sort(rays, frame, 1), std::length_error);
 }

@@ -6,7 +6,9 @@
 // Every build time and rate is the median of --repeats runs (Embree's too; builds repeated
 // until they fill 0.25 s where they are faster than that). With --device
 // cuda, each structure has a second row: the same rays traced by the GPU stream schedule's
-// closest-hit and shadow kernels (render/trace_cuda.h), kernel time only.
+// closest-hit and shadow kernels (render/trace_cuda.h), kernel time only. Rows "bvh sorted"
+// (and "bvh cuda sorted") trace each set in the order of its rays' keys (origin and direction,
+// kernel/geom/ray_order_key.h), the sort timed with the trace.
 #include <omp.h>
 #include <nlohmann/json.hpp>
 
@@ -23,6 +25,7 @@
 #include "bench/bench_common.h"
 #include "bench/embree_bench.h"
 #include "bench/mesh_generators.h"
+#include "bench/ray_order_sort.h"
 #include "bench/ray_sets.h"
 #include "cli/command_registry.h"
 #include "cli/commands.h"
@@ -82,16 +85,50 @@ RaySets make_rays(const Scene& scene, uint32_t incoherent) {
   return make_primary_and_incoherent_rays(scene.camera, kCamera, kCamera, b.lo, b.hi, incoherent);
 }
 
-// Runs `query(begin, count)` over [0, n) in chunks of 1024 on all threads, `repeats` times;
+constexpr size_t kChunk = 1024;  // rays per call of a CPU kernel
+
+// Runs `query(begin, count)` over [0, n) in chunks of kChunk on all threads, `repeats` times;
 // returns the median Mrays/s.
 double throughput(size_t n, int threads, uint32_t repeats, const std::function<void(size_t, size_t)>& query) {
-  constexpr size_t kChunk = 1024;
   return median_of(repeats, [&] {
     const auto start = std::chrono::steady_clock::now();
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int64_t c = 0; c < static_cast<int64_t>((n + kChunk - 1) / kChunk); ++c) {
       const size_t begin = static_cast<size_t>(c) * kChunk;
       query(begin, std::min(kChunk, n - begin));
+    }
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return static_cast<double>(n) / s / 1e6;
+  });
+}
+
+// Mrays/s of tracing `set` in the order of its rays' keys: the sort (bench/ray_order_sort.h), a
+// sorted copy of the rays, the trace in chunks on all threads (trace(rays, their indices in the
+// set, count, answers)) and the answers put back in the set's order, all timed (the buffers are
+// allocated before); the median of `repeats` runs.
+template <class Answer, class Trace>
+double sorted_throughput(const std::vector<Ray>& set, const RayOrderFrame& frame, int threads, uint32_t repeats,
+                         std::vector<Answer>& answers, const Trace& trace) {
+  const int64_t n = static_cast<int64_t>(set.size()), chunks = (n + kChunk - 1) / kChunk;
+  RayOrderSorter sorter(set.size());
+  std::vector<Ray> sorted(set.size());
+  std::vector<Answer> sorted_answers(set.size());
+  answers.resize(set.size());
+  return median_of(repeats, [&] {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<uint32_t>& order = sorter.sort(set, frame, threads);
+#pragma omp parallel num_threads(threads)
+    {
+#pragma omp for schedule(static)
+      for (int64_t i = 0; i < n; ++i) sorted[i] = set[order[i]];
+#pragma omp for schedule(dynamic, 1)
+      for (int64_t c = 0; c < chunks; ++c) {
+        const int64_t begin = c * static_cast<int64_t>(kChunk);
+        trace(&sorted[begin], &order[begin], static_cast<size_t>(std::min<int64_t>(kChunk, n - begin)),
+              &sorted_answers[begin]);
+      }
+#pragma omp for schedule(static)
+      for (int64_t i = 0; i < n; ++i) answers[order[i]] = sorted_answers[i];
     }
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return static_cast<double>(n) / s / 1e6;
@@ -156,6 +193,14 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
       kernel.trace_any(view, &rays.shadow[i], &rays.shadow_tmax[i], n, &occluded[i]);
     });
   };
+  // A row's rates and checksum, which must equal the first structure's.
+  const auto print_rates = [&](const std::string& label, const double rates[3], uint64_t sum) {
+    std::printf("%10.2f %10.2f %10.2f | %016llx %s\n", rates[0], rates[1], rates[2],
+                static_cast<unsigned long long>(sum), sum == reference ? "same" : "DIFFERENT");
+    if (sum != reference)
+      throw std::runtime_error(label + ": hits differ from " + enum_name(accels[0]) +
+                               "'s (docs/determinism.md rule 4)");
+  };
   // Traces every ray set through `view` with `kernel`; prints the row and checks the checksum.
   const auto measure = [&](const std::string& label, const Scene& scene, const SceneView& view,
                            const CpuKernelVariant& kernel, double rates[3], double build) {
@@ -176,11 +221,28 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
                   scene.report.accel.nodes + scene.report.accel.cells);
     else
       std::printf("%-14s %10s %10s %10s %10s | ", label.c_str(), "", "", "", "");
-    std::printf("%10.2f %10.2f %10.2f | %016llx %s\n", rates[0], rates[1], rates[2],
-                static_cast<unsigned long long>(sum), sum == reference ? "same" : "DIFFERENT");
-    if (sum != reference)
-      throw std::runtime_error(label + ": hits differ from " + enum_name(accels[0]) +
-                               "'s (docs/determinism.md rule 4)");
+    print_rates(label, rates, sum);
+  };
+  // The row "bvh sorted": bvh's kernel with each set sorted by its rays' keys over the root's
+  // box first (bench/ray_order_sort.h), the sort and the copies timed with the trace.
+  const auto measure_sorted = [&](const Scene& scene, const SceneView& view, const CpuKernelVariant& kernel) {
+    const RayOrderFrame frame = ray_order_frame(scene.bvh_nodes[0].lo, scene.bvh_nodes[0].hi);
+    const std::vector<float> no_limit(kChunk, kInfinity);
+    const auto closest = [&](const Ray* r, const uint32_t*, size_t n, Hit* hits) {
+      kernel.trace_closest(view, r, no_limit.data(), n, hits);
+    };
+    const auto any = [&](const Ray* r, const uint32_t* index, size_t n, uint8_t* occluded) {
+      float tmax[kChunk];
+      for (size_t k = 0; k < n; ++k) tmax[k] = rays.shadow_tmax[index[k]];
+      kernel.trace_any(view, r, tmax, n, occluded);
+    };
+    std::vector<Hit> primary, incoherent;
+    std::vector<uint8_t> occluded;
+    const double rates[3] = {sorted_throughput(rays.primary, frame, threads, cmd.repeats, primary, closest),
+                             sorted_throughput(rays.incoherent, frame, threads, cmd.repeats, incoherent, closest),
+                             sorted_throughput(rays.shadow, frame, threads, cmd.repeats, occluded, any)};
+    std::printf("%-14s %10s %10s %10s %10s | ", "bvh sorted", "", "", "", "");
+    print_rates("bvh sorted", rates, ray_hits_checksum(primary, incoherent, occluded));
   };
   // The GPU's row for a structure: its trace variant's kernels (kernel/accel/trace_variants.h)
   // on the tree `tree` names (render/device_bvh.h) where the structure is bvh or lbvh; with a
@@ -229,16 +291,19 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     SceneView binary = view;  // the same tree walked two children at a time, as the GPU walks it
     binary.wide_node_count = 0;
     measure("bvh (binary)", scene, binary, kernel, rates, 0);
+    if (!scene.bvh_nodes.empty()) measure_sorted(scene, view, kernel);
   }
-  std::printf("(CPU kernel %s; a row \"bvh ISA\" runs the same tree with that instruction set's kernel%s)\n",
-              kernel_name.c_str(),
-              cmd.device == "cuda"
-                  ? "; a row \"ACCEL cuda\" the GPU's stream kernels, kernel time only, on bvh's and lbvh's "
-                    "pair records where the scene is all triangles; \"bvh cuda sorted\" the same with each set sorted "
-                    "on the device by origin and direction first, the sort timed with it; \"bvh nodes cuda\" on "
-                    "bvh's binary nodes, "
-                    "\"bvh8 cuda\" on its 8-wide tree"
-                  : "");
+  std::printf(
+      "(CPU kernel %s; a row \"bvh ISA\" runs the same tree with that instruction set's kernel, \"bvh "
+      "sorted\" bvh with each set sorted by origin and direction first, the sort timed with it%s)\n",
+      kernel_name.c_str(),
+      cmd.device == "cuda"
+          ? "; a row \"ACCEL cuda\" the GPU's stream kernels, kernel time only, on bvh's and lbvh's "
+            "pair records where the scene is all triangles; \"bvh cuda sorted\" the same with each set sorted "
+            "on the device by origin and direction first, the sort timed with it; \"bvh nodes cuda\" on "
+            "bvh's binary nodes, "
+            "\"bvh8 cuda\" on its 8-wide tree"
+          : "");
   const Scene embree_scene = load_bench_scene(cmd.scene, AccelKind::None, 0);
   const bool triangles_only = std::all_of(embree_scene.primitives.begin(), embree_scene.primitives.end(),
                                           [](const Primitive& p) { return p.kind == ShapeKind::Triangle; });
