@@ -28,21 +28,21 @@ size_t sort_temp_bytes(size_t n) {
 }
 
 size_t checked_capacity(size_t capacity) {
-  if (capacity > static_cast<size_t>(INT32_MAX)) throw std::length_error("RayOrderSort: more than 2^31 - 1 rays");
+  if (capacity > static_cast<size_t>(INT32_MAX)) throw std::length_error("GpuRaySorter: more than 2^31 - 1 rays");
   return capacity;
 }
 
 }  // namespace
 
-RayOrderSort::RayOrderSort(size_t capacity)
+GpuRaySorter::GpuRaySorter(size_t capacity)
     : capacity_(checked_capacity(capacity)),
       keys_{DeviceBuffer<uint32_t>(capacity), DeviceBuffer<uint32_t>(capacity)},
       queue_{DeviceBuffer<uint32_t>(capacity), DeviceBuffer<uint32_t>(capacity)},
       temp_(sort_temp_bytes(capacity)) {}
 
-const uint32_t* RayOrderSort::sort(const RayOrderFrame& frame, const Vec3* origin, const Vec3* dir,
+const uint32_t* GpuRaySorter::sort(const RayOrderFrame& frame, const Vec3* origin, const Vec3* dir,
                                    const uint32_t* queue, size_t n) {
-  if (n > capacity_) throw std::length_error("RayOrderSort::sort: a queue longer than the sorter's capacity");
+  if (n > capacity_) throw std::length_error("GpuRaySorter::sort: a queue longer than the sorter's capacity");
   if (n == 0) return queue_[0].get();
   ray_order_key_kernel<<<static_cast<uint32_t>((n + kBlock - 1) / kBlock), kBlock>>>(frame, origin, dir, queue, n,
                                                                                      keys_[0].get(), queue_[0].get());

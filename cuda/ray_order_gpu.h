@@ -11,10 +11,10 @@
 
 namespace tracer {
 
-class RayOrderSort {
+class GpuRaySorter {
  public:
   // Room for queues of up to `capacity` entries.
-  explicit RayOrderSort(size_t capacity);
+  explicit GpuRaySorter(size_t capacity);
 
   // queue[0, n) (indices into origin and dir) sorted by the keys of their rays in `frame`, in a
   // buffer of this object that stays valid until the next call; `queue` itself is not changed.

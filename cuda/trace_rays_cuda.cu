@@ -62,7 +62,7 @@ template <class Reset>
 double median_trace_time(const SceneView& view, StreamStage stage, const StreamStates& st, const Vec3* origin,
                          const Vec3* dir, const uint32_t* queue, size_t n, uint32_t repeats,
                          const std::optional<RayOrderFrame>& sorted, Reset&& reset) {
-  std::optional<RayOrderSort> sorter;
+  std::optional<GpuRaySorter> sorter;
   if (sorted) sorter.emplace(n);
   return median_time(
       repeats,
@@ -133,7 +133,7 @@ double CudaRayTracer::sort(const std::vector<Ray>& rays, const RayOrderFrame& fr
   const size_t n = rays.size();
   const DeviceRays d_rays(rays);
   const DeviceBuffer<uint32_t> queue(identity_queue(n));
-  RayOrderSort sorter(n);
+  GpuRaySorter sorter(n);
   return median_time(
       repeats, [&] { sorter.sort(frame, d_rays.origin.get(), d_rays.dir.get(), queue.get(), n); }, [] {});
 }

@@ -82,7 +82,7 @@ TEST(RayOrderKey, AFlatBoxPutsEveryOriginInTheFirstCellOfItsFlatAxis) {
         << y;
 }
 
-TEST(RayOrderSorter, GivesTheStableSortByKeyForAnyThreadCount) {
+TEST(CpuRaySorter, GivesTheStableSortByKeyForAnyThreadCount) {
   const Vec3 lo = {-2.0f, 0.0f, 1.0f}, hi = {3.0f, 0.5f, 9.0f};
   const RayOrderFrame frame = ray_order_frame(lo, hi);
   std::vector<Ray> rays;
@@ -99,10 +99,10 @@ TEST(RayOrderSorter, GivesTheStableSortByKeyForAnyThreadCount) {
   std::stable_sort(expected.begin(), expected.end(), [&](uint32_t a, uint32_t b) {
     return ray_order_key(frame, rays[a].origin, rays[a].dir) < ray_order_key(frame, rays[b].origin, rays[b].dir);
   });
-  RayOrderSorter sorter(rays.size());
+  CpuRaySorter sorter(rays.size());
   for (const int threads : {1, 2, 3}) EXPECT_EQ(sorter.sort(rays, frame, threads), expected) << threads;
   const std::vector<Ray> none, one = {rays[7]};
   EXPECT_TRUE(sorter.sort(none, frame, 2).empty());
   EXPECT_EQ(sorter.sort(one, frame, 2), std::vector<uint32_t>{0u});
-  EXPECT_THROW(RayOrderSorter(3).sort(rays, frame, 1), std::length_error);
+  EXPECT_THROW(CpuRaySorter(3).sort(rays, frame, 1), std::length_error);
 }

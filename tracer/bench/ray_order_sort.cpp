@@ -15,23 +15,22 @@ constexpr uint32_t kDigitBits = kRayOrderCellBits, kDigits = 1u << kDigitBits;
 static_assert(kRayOrderKeyBits % kDigitBits == 0, "whole digits");
 
 size_t checked_capacity(size_t capacity) {
-  if (capacity > UINT32_MAX) throw std::length_error("RayOrderSorter: more than 2^32 - 1 rays");
+  if (capacity > UINT32_MAX) throw std::length_error("CpuRaySorter: more than 2^32 - 1 rays");
   return capacity;
 }
 
 }  // namespace
 
-RayOrderSorter::RayOrderSorter(size_t capacity)
+CpuRaySorter::CpuRaySorter(size_t capacity)
     : capacity_(checked_capacity(capacity)),
       key_(capacity),
       order_(capacity),
       next_key_(capacity),
       next_order_(capacity) {}
 
-const std::vector<uint32_t>& RayOrderSorter::sort(const std::vector<Ray>& rays, const RayOrderFrame& frame,
-                                                  int threads) {
+const std::vector<uint32_t>& CpuRaySorter::sort(const std::vector<Ray>& rays, const RayOrderFrame& frame, int threads) {
   const size_t n = rays.size();
-  if (n > capacity_) throw std::length_error("RayOrderSorter::sort: a set larger than the sorter's capacity");
+  if (n > capacity_) throw std::length_error("CpuRaySorter::sort: a set larger than the sorter's capacity");
   key_.resize(n), order_.resize(n), next_key_.resize(n), next_order_.resize(n);  // never beyond the capacity
 #pragma omp parallel num_threads(threads)
   {

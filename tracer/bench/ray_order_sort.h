@@ -9,10 +9,10 @@
 
 namespace tracer {
 
-class RayOrderSorter {
+class CpuRaySorter {
  public:
   // Room for sets of up to `capacity` rays, allocated here rather than in each sort.
-  explicit RayOrderSorter(size_t capacity);
+  explicit CpuRaySorter(size_t capacity);
 
   // The permutation that lists `rays` by their keys in `frame`, rays of equal keys in the set's
   // order (a least-significant-digit radix sort on `threads` threads, the same permutation for

@@ -110,7 +110,7 @@ template <class Answer, class Trace>
 double sorted_throughput(const std::vector<Ray>& set, const RayOrderFrame& frame, int threads, uint32_t repeats,
                          std::vector<Answer>& answers, const Trace& trace) {
   const int64_t n = static_cast<int64_t>(set.size()), chunks = (n + kChunk - 1) / kChunk;
-  RayOrderSorter sorter(set.size());
+  CpuRaySorter sorter(set.size());
   std::vector<Ray> sorted(set.size());
   std::vector<Answer> sorted_answers(set.size());
   answers.resize(set.size());
