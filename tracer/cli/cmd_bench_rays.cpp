@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <sstream>
 
 #include "accel/acceleration.h"
@@ -223,10 +224,9 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
       std::printf("%-14s %10s %10s %10s %10s | ", label.c_str(), "", "", "", "");
     print_rates(label, rates, sum);
   };
-  // The row "bvh sorted": bvh's kernel with each set sorted by its rays' keys over the root's
-  // box first (bench/ray_order_sort.h), the sort and the copies timed with the trace.
-  const auto measure_sorted = [&](const Scene& scene, const SceneView& view, const CpuKernelVariant& kernel) {
-    const RayOrderFrame frame = ray_order_frame(scene.bvh_nodes[0].lo, scene.bvh_nodes[0].hi);
+  // The row "bvh sorted": bvh's kernel with each set sorted by its rays' keys in `frame` first
+  // (bench/ray_order_sort.h), the sort and the copies timed with the trace.
+  const auto measure_sorted = [&](const SceneView& view, const CpuKernelVariant& kernel, const RayOrderFrame& frame) {
     const std::vector<float> no_limit(kChunk, kInfinity);
     const auto closest = [&](const Ray* r, const uint32_t*, size_t n, Hit* hits) {
       kernel.trace_closest(view, r, no_limit.data(), n, hits);
@@ -276,10 +276,12 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     measure(enum_name(accel), scene, view, kernel, accel == AccelKind::Bvh ? bvh_rates : rates, build);
     if (cmd.device == "cuda") measure_cuda(std::string(enum_name(accel)) + " cuda", scene, DeviceBvh::Pairs);
     if (accel != AccelKind::Bvh) continue;
+    // The box the sorted rows' keys place origins in: the tree's root (kernel/geom/ray_order_key.h).
+    const std::optional<RayOrderFrame> frame =
+        scene.bvh_nodes.empty() ? std::nullopt
+                                : std::optional(ray_order_frame(scene.bvh_nodes[0].lo, scene.bvh_nodes[0].hi));
     if (cmd.device == "cuda") {
-      if (!scene.bvh_nodes.empty())
-        measure_cuda("bvh cuda sorted", scene, DeviceBvh::Pairs,
-                     ray_order_frame(scene.bvh_nodes[0].lo, scene.bvh_nodes[0].hi));
+      if (frame) measure_cuda("bvh cuda sorted", scene, DeviceBvh::Pairs, frame);
       measure_cuda("bvh nodes cuda", scene, DeviceBvh::Binary);
       measure_cuda("bvh8 cuda", scene, DeviceBvh::Wide);
       std::printf("(bvh8 cuda: the 8-wide tree needs %u stack entries, the variant holds %d)\n",
@@ -291,7 +293,7 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     SceneView binary = view;  // the same tree walked two children at a time, as the GPU walks it
     binary.wide_node_count = 0;
     measure("bvh (binary)", scene, binary, kernel, rates, 0);
-    if (!scene.bvh_nodes.empty()) measure_sorted(scene, view, kernel);
+    if (frame) measure_sorted(view, kernel, *frame);
   }
   std::printf(
       "(CPU kernel %s; a row \"bvh ISA\" runs the same tree with that instruction set's kernel, \"bvh "
