@@ -8,6 +8,7 @@
 #include "kernel/integrator/adaptive.h"
 #include "kernel/integrator/render_pixel.h"
 #include "render/adaptive_schedule.h"
+#include "render/stream_order_frame.h"
 
 namespace tracer {
 namespace {
@@ -116,7 +117,7 @@ struct GpuBackend {
   StreamStats stream_stats;
   double kernel_seconds = 0, transfer_seconds = 0;
 
-  GpuBackend(const SceneView& device_view, size_t pixels)
+  GpuBackend(const SceneView& device_view, size_t pixels, std::optional<RayOrderFrame> order)
       : scene(device_view),
         even(pixels),
         odd(pixels),
@@ -124,7 +125,7 @@ struct GpuBackend {
         unconverged(pixels),
         keep_flags(pixels),
         counters(kCounterCount),
-        stream(device_view, stream_samples(device_view.settings, pixels)) {
+        stream(device_view, stream_samples(device_view.settings, pixels), order) {
     even.zero(), odd.zero(), counters.zero();
   }
 
@@ -196,7 +197,7 @@ GpuAdaptiveFilm render_adaptive_on_gpu(const SceneArrays& arrays, const SceneVie
 
   auto t = std::chrono::steady_clock::now();
   const DeviceScene device_scene(arrays, view, device_bvh_of(view), label);
-  GpuBackend backend(device_scene.view(), pixels);
+  GpuBackend backend(device_scene.view(), pixels, stream_order_frame(view));
   TRACER_CUDA_CHECK(cudaDeviceSynchronize());
   r.run.upload_seconds = seconds_since(t);
 

@@ -6,6 +6,7 @@
 #include "device_scene.h"
 #include "gpu_film.h"
 #include "gpu_stream.h"
+#include "render/stream_order_frame.h"
 #include "kernel/integrator/render_pixel.h"
 
 namespace tracer {
@@ -140,7 +141,7 @@ GpuFilm render_film_on_gpu(const SceneArrays& arrays, const SceneView& view, Sam
   counters.zero();
   if (stream) {
     film.zero();
-    GpuStream states(device_scene.view(), samples);
+    GpuStream states(device_scene.view(), samples, stream_order_frame(view));
     TRACER_CUDA_CHECK(cudaDeviceSynchronize());
     r.run.upload_seconds = seconds_since(t);
     const StreamTarget target = {nullptr, pixels, range.begin, range.end, film.get(), nullptr, nullptr};

@@ -164,6 +164,7 @@ struct CudaStream {
   DeviceBuffer<uint32_t>* queues;
   unsigned long long* counters;
   uint32_t* split_sizes;  // 3 on the device
+  GpuRaySorter* sorter;   // null without render.stream_order sorted
 
   uint32_t* queue(StreamQueue q) { return queues[static_cast<uint32_t>(q)].get(); }
 
@@ -199,6 +200,15 @@ struct CudaStream {
 
   // Only a Whitted vertex resumes; other integrators have no resume queue and set no such bit.
   uint32_t* resume_queue() { return queues[static_cast<uint32_t>(StreamQueue::Resume)].get(); }
+
+  // Sorted into the sorter's buffer, then copied back: the queue keeps its place among the four.
+  void sort(StreamQueue q, size_t size, const RayOrderFrame& frame) {
+    if (size == 0) return;
+    const bool shadow = q == StreamQueue::Shadow;
+    const uint32_t* sorted = sorter->sort(frame, shadow ? states.shadow_origin : states.origin,
+                                          shadow ? states.shadow_dir : states.dir, queue(q), size);
+    TRACER_CUDA_CHECK(cudaMemcpyAsync(queue(q), sorted, size * sizeof(uint32_t), cudaMemcpyDeviceToDevice));
+  }
 
   void swap(StreamQueue a, StreamQueue b) {
     std::swap(queues[static_cast<uint32_t>(a)], queues[static_cast<uint32_t>(b)]);
@@ -258,12 +268,13 @@ size_t GpuStream::device_bytes(const SceneView& view, uint64_t total) {
   return stream_bytes_per_state(view) * stream_width_for(view.settings, total);
 }
 
-GpuStream::GpuStream(const SceneView& device_view, uint64_t total)
-    : scene_(device_view), width_(stream_width_for(device_view.settings, total)) {
+GpuStream::GpuStream(const SceneView& device_view, uint64_t total, std::optional<RayOrderFrame> order)
+    : scene_(device_view), width_(stream_width_for(device_view.settings, total)), order_(order) {
   if (width_ == 0) return;
   states_ = allocate_stream_states(scene_, width_, DeviceArrays{blocks_});
   for (uint32_t q = 0; q < stream_queue_count(scene_.settings); ++q) queues_[q] = DeviceBuffer<uint32_t>(width_);
   split_sizes_ = DeviceBuffer<uint32_t>(3);
+  if (order_) sorter_.emplace(width_);
 }
 
 double GpuStream::render(const StreamTarget& target, unsigned long long* counters, StreamStats& stats) {
@@ -271,10 +282,10 @@ double GpuStream::render(const StreamTarget& target, unsigned long long* counter
   stats.bytes_per_state = stream_bytes_per_state(scene_);
   stats.state_bytes = stats.bytes_per_state * width_;
   if (total == 0) return 0.0;
-  CudaStream backend{scene_, target, states_, queues_, counters, split_sizes_.get()};
+  CudaStream backend{scene_, target, states_, queues_, counters, split_sizes_.get(), sorter_ ? &*sorter_ : nullptr};
   const CudaEvent start, stop;
   TRACER_CUDA_CHECK(cudaEventRecord(start.event));
-  schedule_stream(total, width_, backend, stats);
+  schedule_stream(total, width_, backend, stats, order_);
   TRACER_CUDA_CHECK(cudaEventRecord(stop.event));
   return seconds_between(start, stop);
 }

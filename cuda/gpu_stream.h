@@ -6,7 +6,10 @@
 // `--device cuda` and the runner, for whole renders (gpu_film.cu) and adaptive passes
 // (gpu_adaptive.cu). CUDA header: included by .cu files only.
 #pragma once
+#include <optional>
+
 #include "device_buffer.h"
+#include "ray_order_gpu.h"
 #include "render/stream_schedule.h"
 #include "render/stream_states.h"
 
@@ -23,8 +26,9 @@ class GpuStream {
   // Device bytes of the states and queues for at most `total` samples in flight at a time.
   static size_t device_bytes(const SceneView& view, uint64_t total);
 
-  // Ray states and queues on the device for min(stream_width, total) samples.
-  GpuStream(const SceneView& device_view, uint64_t total);
+  // Ray states and queues on the device for min(stream_width, total) samples; `order` is the
+  // host view's stream_order_frame (render/stream_order_frame.h).
+  GpuStream(const SceneView& device_view, uint64_t total, std::optional<RayOrderFrame> order);
 
   // `target` holds device pointers; ray counts are added to counters[0..2] (camera,
   // secondary, shadow) on the device. Returns the seconds between the first and last
@@ -38,6 +42,8 @@ class GpuStream {
   StreamStates states_{};
   DeviceBuffer<uint32_t> queues_[4];
   DeviceBuffer<uint32_t> split_sizes_;
+  std::optional<RayOrderFrame> order_;
+  std::optional<GpuRaySorter> sorter_;  // with an order
 };
 
 }  // namespace tracer

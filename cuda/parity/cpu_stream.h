@@ -3,12 +3,15 @@
 // pack's stream rows and the stream parity case run without a GPU and give the film (and
 // each sample) the tracer's OpenMP backend and the GPU's give, bit for bit.
 #pragma once
+#include <algorithm>
 #include <atomic>
+#include <utility>
 #include <vector>
 
 #include "io/input_error.h"
 #include "parity/parallel_for.h"
 #include "render/stream_memory.h"
+#include "render/stream_order_frame.h"
 #include "render/stream_schedule.h"
 #include "render/stream_states.h"
 
@@ -57,6 +60,18 @@ inline void render_stream_on_cpu(const SceneView& view, const StreamTarget& targ
       }
       return {queue(StreamQueue::Trace).size(), queue(StreamQueue::Shadow).size(), queue(StreamQueue::Resume).size()};
     }
+    void sort(StreamQueue q, size_t size, const RayOrderFrame& frame) {
+      const bool shadow = q == StreamQueue::Shadow;
+      const Vec3* origin = shadow ? states.shadow_origin : states.origin;
+      const Vec3* dir = shadow ? states.shadow_dir : states.dir;
+      std::vector<std::pair<uint32_t, uint32_t>> keyed(size);  // (key, state)
+      for (size_t k = 0; k < size; ++k) {
+        const uint32_t i = queue(q)[k];
+        keyed[k] = {ray_order_key(frame, origin[i], dir[i]), i};
+      }
+      std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (size_t k = 0; k < size; ++k) queue(q)[k] = keyed[k].second;
+    }
     void swap(StreamQueue a, StreamQueue b) { queue(a).swap(queue(b)); }
     void end_batch(uint64_t first, size_t count) {
       const uint64_t samples = target.end - target.begin;
@@ -72,7 +87,7 @@ inline void render_stream_on_cpu(const SceneView& view, const StreamTarget& targ
   if (width == 0) return;
   HostStreamArrays arrays;
   Backend backend{view, target, threads, allocate_stream_states(view, width, arrays), {}, {}, {}, {}};
-  schedule_stream(total, width, backend, stats);
+  schedule_stream(total, width, backend, stats, stream_order_frame(view));
   rays.camera += backend.camera, rays.secondary += backend.secondary, rays.shadow += backend.shadow;
 }
 

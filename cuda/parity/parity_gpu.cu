@@ -2,6 +2,7 @@
 #include "device_buffer.h"
 #include "device_scene.h"
 #include "gpu_stream.h"
+#include "render/stream_order_frame.h"
 #include "parity_gpu.h"
 
 namespace tracer::parity {
@@ -127,7 +128,7 @@ std::vector<Vec3> gpu_stream_samples(const SceneArrays& arrays, const SceneView&
   DeviceBuffer<Vec3> out(items);
   DeviceBuffer<unsigned long long> counters(3);
   counters.zero();
-  GpuStream stream(device_scene.view(), items);
+  GpuStream stream(device_scene.view(), items, stream_order_frame(view));
   StreamTarget target = {
       nullptr, static_cast<size_t>(view.settings.width) * view.settings.height, 0u, view.settings.spp, nullptr, nullptr,
       nullptr};

@@ -36,7 +36,7 @@ namespace {
 
 const char* kUsage =
     "usage: tracer-gpu render BUNDLE [--device cuda|cpu] [--threads N] [--repeat N] [--expect sha1:HASH] [-o FILM]\n"
-    "                                [--schedule megakernel|stream] [--stream-width N]\n"
+    "                                [--schedule megakernel|stream] [--stream-width N] [--stream-order queue|sorted]\n"
     "       tracer-gpu parity CASE [--device cuda|cpu] [--threads N]\n"
     "       tracer-gpu pack DIR [--device cuda|cpu] [--threads N] [--repeat N]\n"
     "       tracer-gpu bench DIR [--device cuda|cpu] [--threads N] [--repeat N]\n"
@@ -48,6 +48,7 @@ struct Options {
   std::string command, input, device = "cuda", expect, output;
   std::optional<Schedule> schedule;  // the bundle's when unset
   uint32_t stream_width = 0;         // the bundle's when 0
+  std::optional<StreamOrder> stream_order;  // the bundle's when unset
   unsigned threads = 0;
   uint32_t repeat = 1;
 };
@@ -66,13 +67,21 @@ Schedule parse_schedule(const std::string& text) {
   throw InputError("--schedule " + text + ": expected megakernel or stream");
 }
 
-// A pack or bench row's schedule field: "megakernel", or "stream:WIDTH".
+StreamOrder parse_stream_order(const std::string& text) {
+  if (text == "queue") return StreamOrder::Queue;
+  if (text == "sorted") return StreamOrder::Sorted;
+  throw InputError("--stream-order " + text + ": expected queue or sorted");
+}
+
+// A pack or bench row's schedule field: "megakernel", "stream:WIDTH" or "stream:WIDTH:ORDER".
 Options with_schedule(Options o, const std::string& field, const std::string& where) {
-  const size_t colon = field.find(':');
+  const size_t colon = field.find(':'), second = colon == std::string::npos ? colon : field.find(':', colon + 1);
   try {
     o.schedule = parse_schedule(field.substr(0, colon));
     if (colon != std::string::npos)
-      o.stream_width = parse_count("--stream-width", field.substr(colon + 1), kMaxStreamWidth);
+      o.stream_width =
+          parse_count("--stream-width", field.substr(colon + 1, second - colon - 1), kMaxStreamWidth);
+    if (second != std::string::npos) o.stream_order = parse_stream_order(field.substr(second + 1));
   } catch (const InputError& e) {
     throw InputError(where + ": " + e.what());
   }
@@ -84,6 +93,7 @@ SceneView view_for(const SceneBundle& b, const Options& o) {
   SceneView view = b.view();
   if (o.schedule) view.settings.schedule = *o.schedule;
   if (o.stream_width != 0) view.settings.stream_width = o.stream_width;
+  if (o.stream_order) view.settings.stream_order = *o.stream_order;
   return view;
 }
 
@@ -107,6 +117,8 @@ Options parse(int argc, char** argv) {
       o.schedule = parse_schedule(value());
     else if (a == "--stream-width")
       o.stream_width = parse_count(a, value(), kMaxStreamWidth);
+    else if (a == "--stream-order")
+      o.stream_order = parse_stream_order(value());
     else if (a == "--expect")
       o.expect = value();
     else if (a == "-o" || a == "--output")
@@ -277,7 +289,8 @@ int run_parity(const Options& o) {
 
 // DIR/pack.tsv: one line per entry, "golden NAME FILE sha1:HASH [SCHEDULE]" (the image's
 // hash), "sample-map NAME FILE sha1:HASH [SCHEDULE]" (an adaptive render's sample map) or
-// "parity NAME FILE -". SCHEDULE: "megakernel" or "stream:WIDTH"; the bundle's when absent.
+// "parity NAME FILE -". SCHEDULE: "megakernel", "stream:WIDTH" or "stream:WIDTH:ORDER" (queue or
+// sorted); the bundle's when absent.
 int run_pack(const Options& o) {
   const std::string dir = o.input + "/";
   std::istringstream list(read_text_file(dir + "pack.tsv", "pack list", 1u << 20));

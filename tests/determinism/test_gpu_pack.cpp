@@ -47,7 +47,7 @@ TEST(GpuPack, RunnerOnTheCpuReproducesEveryGoldenHashAndParityAnswer) {
   for (const GoldenEntry& e : manifest.entries) {
     std::ostringstream row;
     row << std::left << std::setw(10) << (e.image == GoldenImage::SampleMap ? "sample-map" : "golden") << " " << e.name;
-    for (const char* schedule : {" ", "@stream "}) {  // the stream schedule's row: the same hash
+    for (const char* schedule : {" ", "@stream ", "@sorted "}) {  // the stream schedule's rows: the same hash
       const size_t at = out.find(row.str() + schedule);
       ASSERT_NE(at, std::string::npos) << e.name << schedule << " has no row:\n" << out;
       EXPECT_NE(out.substr(at, 60).find("PASS"), std::string::npos) << out.substr(at, 200);
@@ -126,6 +126,7 @@ TEST(GpuPack, BenchRowsCoverTheDeviceTablesAndTheRunnerTimesThem) {
                           "effects all-2spp-stochastic ", "resolution 1920x1080-4spp-grid ", "mesh sphere-",
                           "schedule cornell-box-path-16spp-megakernel ",
                           "schedule cornell-box-path-16spp-stream:4194304 ", "schedule sphere-4spp-grid-stream:262144 ",
+                          "schedule cornell-box-path-16spp-stream:4194304:sorted ",
                           "rays sphere-", "rays terrain-1m bench/rays-terrain-1m.bundle mesh:terrain:1000000"})
     EXPECT_NE(list.find(row), std::string::npos) << row << " missing:\n" << list;
   const fs::path dir = test::temp_dir("gpu-pack-bench");

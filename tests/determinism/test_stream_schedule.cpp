@@ -26,10 +26,11 @@ namespace {
 using test::variants_for;
 
 Scene stream_scene(const GoldenManifest& manifest, const GoldenEntry& entry, uint32_t width,
-                   std::optional<AccelKind> accel = {}) {
+                   std::optional<AccelKind> accel = {}, StreamOrder order = StreamOrder::Queue) {
   RenderOverrides overrides{entry.options};
   overrides.schedule = Schedule::Stream;
   overrides.stream_width = width;
+  overrides.stream_order = order;
   if (accel) overrides.accel = *accel;
   return load_scene(manifest.scene_path(entry), overrides);
 }
@@ -79,6 +80,22 @@ TEST(StreamSchedule, EveryAcceleratorRendersTheRepresentativeGoldens) {
   EXPECT_EQ(goldens, test::representative_goldens().size()) << "a representative golden is not in the manifest";
 }
 
+// render.stream_order sorted puts the trace and shadow queues in their rays' key order before
+// each wave traces them: every golden renders to its hash, on one thread and with batches that
+// split pixels on two. A sort that lost, doubled or swapped a queue's entries would leave a
+// state untraced or traced twice and change pixels.
+TEST(StreamSchedule, SortedQueuesRenderEveryGolden) {
+  const GoldenManifest manifest = read_manifest(TRACER_SOURCE_DIR);
+  for (const GoldenEntry& entry : manifest.entries) {
+    const Scene scene = stream_scene(manifest, entry, 1000, {}, StreamOrder::Sorted);
+    RenderStats stats;
+    EXPECT_EQ(pixel_hash(render_golden_image(scene, entry, 1, stats)), entry.hash) << entry.name;
+    if (entry.name != "cornell-box" && entry.name != "cornell-box-path") continue;
+    const Scene split = stream_scene(manifest, entry, 97, {}, StreamOrder::Sorted);
+    EXPECT_EQ(pixel_hash(render_golden_image(split, entry, 2, stats)), entry.hash) << entry.name << ", width 97";
+  }
+}
+
 // The tests above run one thread: the stream's stages meet at a barrier several times per wave,
 // and under ctest -j2 on 2 cores a second test's threads made those barriers cost 10-20x (105 s
 // for the accelerator test on a fresh machine). Here, thread counts and widths that split
@@ -115,6 +132,10 @@ TEST(StreamSchedule, ReportsItsQueuesAndMemory) {
   EXPECT_GT(stats.stream.waves, stats.stream.batches);  // a path takes more than one bounce
   EXPECT_EQ(stats.stream.shadow_rays, stats.rays.shadow);
   EXPECT_EQ(stats.stream.state_bytes, stats.stream.bytes_per_state * 4096u);
+  overrides.stream_order = StreamOrder::Sorted;  // the sort's keys and entries, double-buffered
+  RenderStats sorted;
+  render_cpu(load_scene(std::string(TRACER_SOURCE_DIR) + "/scenes/cornell-box-path.json", overrides), 2, sorted);
+  EXPECT_EQ(sorted.stream.bytes_per_state, stats.stream.bytes_per_state + 4 * sizeof(uint32_t));
 }
 
 }  // namespace
@@ -134,6 +155,8 @@ TEST(StreamSchedule, RefusesBadWidthsAndWritesNothing) {
       {"--schedule stream --stream-width 16777217", "expected 1 to 16777216"},
       {"--schedule stream --stream-width 1e3", "--stream-width"},
       {"--schedule streams", "megakernel or stream"},
+      {"--stream-order sorted", "needs schedule stream"},
+      {"--schedule stream --stream-order random", "unknown stream order"},
   };
   for (const auto& [flags, message] : cases) {
     std::string output;
@@ -158,6 +181,7 @@ TEST(StreamSchedule, StatsReportTheStream) {
   std::ifstream in(dir / "s.json");
   const nlohmann::json stats = nlohmann::json::parse(in);
   EXPECT_EQ(stats["stream"]["width"], 500);
+  EXPECT_EQ(stats["stream"]["order"], "queue");
   EXPECT_EQ(stats["stream"]["batches"], (200 * stats["spp"].get<int>() + 499) / 500);
   EXPECT_GT(stats["stream"]["bytes_per_state"].get<int>(), 100);
   std::filesystem::remove_all(dir);

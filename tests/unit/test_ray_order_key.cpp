@@ -2,7 +2,7 @@
 // the key's 30 bits read from the most significant as a string, position p holding bit
 // 4 - p / 6 of cell coordinate p % 6 (origin x, y, z, direction x, y, z); the cells at their
 // edges, for NaN and outside the box; and the CPU's radix sort by the key
-// (bench/ray_order_sort.h) against std::stable_sort.
+// (render/ray_order_sort.h) against std::stable_sort.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "bench/ray_order_sort.h"
+#include "render/ray_order_sort.h"
 
 #include "kernel/base/philox.h"
 #include "kernel/geom/ray_order_key.h"
@@ -82,7 +82,7 @@ TEST(RayOrderKey, AFlatBoxPutsEveryOriginInTheFirstCellOfItsFlatAxis) {
         << y;
 }
 
-TEST(CpuRaySorter, GivesTheStableSortByKeyForAnyThreadCount) {
+TEST(CpuRaySorter, GivesTheStableSortByKeyForAnyThreadCountOfASetOrAQueue) {
   const Vec3 lo = {-2.0f, 0.0f, 1.0f}, hi = {3.0f, 0.5f, 9.0f};
   const RayOrderFrame frame = ray_order_frame(lo, hi);
   std::vector<Ray> rays;
@@ -105,4 +105,20 @@ TEST(CpuRaySorter, GivesTheStableSortByKeyForAnyThreadCount) {
   EXPECT_TRUE(sorter.sort(none, frame, 2).empty());
   EXPECT_EQ(sorter.sort(one, frame, 2), std::vector<uint32_t>{0u});
   EXPECT_THROW(CpuRaySorter(3).sort(rays, frame, 1), std::length_error);
+
+  // A stream queue: state indices, some states absent, in no order. Sorting it gives the
+  // queue's entries stably sorted by their states' keys.
+  std::vector<Vec3> origin, dir;
+  for (const Ray& ray : rays) origin.push_back(ray.origin), dir.push_back(ray.dir);
+  std::vector<uint32_t> queue;
+  for (uint32_t k = 0; k < rays.size(); k += 3) queue.push_back((k * 7919u) % static_cast<uint32_t>(rays.size()));
+  std::vector<uint32_t> sorted_queue = queue;
+  std::stable_sort(sorted_queue.begin(), sorted_queue.end(), [&](uint32_t a, uint32_t b) {
+    return ray_order_key(frame, origin[a], dir[a]) < ray_order_key(frame, origin[b], dir[b]);
+  });
+  for (const int threads : {1, 2, 3}) {
+    std::vector<uint32_t> q = queue;
+    sorter.sort_queue(q.data(), q.size(), origin.data(), dir.data(), frame, threads);
+    EXPECT_EQ(q, sorted_queue) << threads;
+  }
 }

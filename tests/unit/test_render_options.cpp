@@ -46,7 +46,8 @@ nlohmann::json changed_options() {
           {"min_spp", 2},
           {"target_error", 0.5},
           {"schedule", "stream"},
-          {"stream_width", 1000}};
+          {"stream_width", 1000},
+          {"stream_order", "sorted"}};
 }
 
 TEST(RenderOptions, EveryOptionIsCoveredByThisTest) {
@@ -121,8 +122,9 @@ TEST(RenderOptions, RecordedWhenTheyDecideThePixels) {
   EXPECT_TRUE(recorded_options(path, BackgroundKind::Cubemap).sky_sampling);
   path.schedule = Schedule::Stream;  // how the pixels are computed, not what they are
   path.stream_width = 7;
+  path.stream_order = StreamOrder::Sorted;
   const RenderOptions s = recorded_options(path, BackgroundKind::Constant);
-  EXPECT_FALSE(s.schedule || s.stream_width);
+  EXPECT_FALSE(s.schedule || s.stream_width || s.stream_order);
 }
 
 // Command-line numbers are decimal digits that fit; anything else names the flag.

@@ -18,7 +18,7 @@ namespace tracer {
 // 6: SceneView's environment cells by columns and rows; Background's equirectangular map.
 // 7: Material gained its cut-out (alpha_mode, alpha, alpha_cutoff, alpha_map).
 // 8: Texture gained times and plus (a use's factor, applied after filtering).
-constexpr uint32_t kBundleVersion = 8;
+constexpr uint32_t kBundleVersion = 9;
 constexpr uint64_t kBundleMaxBytes = 1ull << 30;  // what a reader accepts
 
 struct BundleSection {

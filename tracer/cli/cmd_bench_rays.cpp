@@ -26,7 +26,7 @@
 #include "bench/bench_common.h"
 #include "bench/embree_bench.h"
 #include "bench/mesh_generators.h"
-#include "bench/ray_order_sort.h"
+#include "render/ray_order_sort.h"
 #include "bench/ray_sets.h"
 #include "cli/command_registry.h"
 #include "cli/commands.h"
@@ -103,7 +103,7 @@ double throughput(size_t n, int threads, uint32_t repeats, const std::function<v
   });
 }
 
-// Mrays/s of tracing `set` in the order of its rays' keys: the sort (bench/ray_order_sort.h), a
+// Mrays/s of tracing `set` in the order of its rays' keys: the sort (render/ray_order_sort.h), a
 // sorted copy of the rays, the trace in chunks on all threads (trace(rays, their indices in the
 // set, count, answers)) and the answers put back in the set's order, all timed (the buffers are
 // allocated before); the median of `repeats` runs.
@@ -225,7 +225,7 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
     print_rates(label, rates, sum);
   };
   // The row "bvh sorted": bvh's kernel with each set sorted by its rays' keys in `frame` first
-  // (bench/ray_order_sort.h), the sort and the copies timed with the trace.
+  // (render/ray_order_sort.h), the sort and the copies timed with the trace.
   const auto measure_sorted = [&](const SceneView& view, const CpuKernelVariant& kernel, const RayOrderFrame& frame) {
     const std::vector<float> no_limit(kChunk, kInfinity);
     const auto closest = [&](const Ray* r, const uint32_t*, size_t n, Hit* hits) {

@@ -1,8 +1,9 @@
 // `tracer bench schedule [SCENE ...]`: the megakernel against the stream schedule on the CPU
 // (docs/path.md, "The stream schedule"). For each scene and thread count: the megakernel's
-// Mrays/s, then per stream width the stream's Mrays/s and its ratio to the megakernel, the
-// bytes of ray state per sample in flight and in all, the largest closest-hit queue, the waves
-// and the shadow rays per wave. Medians of --repeats runs; every image must hash alike.
+// Mrays/s, then per stream width and queue order (render.stream_order: queue, or sorted by the
+// rays' keys before each wave's traces) the stream's Mrays/s and its ratio to the megakernel,
+// the bytes of ray state per sample in flight and in all, the largest closest-hit queue, the
+// waves and the shadow rays per wave. Medians of --repeats runs; every image must hash alike.
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -14,6 +15,7 @@
 #include "cli/number_checks.h"
 #include "image/pixel_hash.h"
 #include "io/input_error.h"
+#include "options/enum_names.h"
 #include "render/render_cpu.h"
 #include "render/stream_memory.h"
 #include "scene/scene_loader.h"
@@ -25,7 +27,20 @@ struct BenchScheduleCommand {
   uint32_t spp = 4, size = 128, repeats = 3;
   std::string threads = "1,2";
   std::string widths = "4096,65536,262144";
+  std::string orders = "queue,sorted";
 };
+
+// The comma-separated names of render.stream_order's values in --orders.
+static std::vector<StreamOrder> parse_orders(const std::string& list) {
+  std::vector<StreamOrder> orders;
+  size_t start = 0;
+  while (true) {
+    const size_t comma = list.find(',', start);
+    orders.push_back(parse_enum<StreamOrder>(list.substr(start, comma - start), "--orders " + list));
+    if (comma == std::string::npos) return orders;
+    start = comma + 1;
+  }
+}
 
 static int run_bench_schedule(const BenchScheduleCommand& cmd) {
   std::vector<std::string> scenes = cmd.scenes;
@@ -44,6 +59,7 @@ static int run_bench_schedule(const BenchScheduleCommand& cmd) {
   for (const uint32_t w : widths)
     if (w == 0 || w > kMaxStreamWidth)
       throw InputError("--widths " + cmd.widths + ": widths are 1 to " + std::to_string(kMaxStreamWidth));
+  const std::vector<StreamOrder> orders = parse_orders(cmd.orders);
   // Every scene loads and every width fits in memory before the first row is measured.
   for (const std::string& path : scenes) {
     RenderOverrides ov;
@@ -52,6 +68,7 @@ static int run_bench_schedule(const BenchScheduleCommand& cmd) {
     const Scene scene = load_scene(path, ov);
     SceneView view = scene.view();
     view.settings.schedule = Schedule::Stream;
+    view.settings.stream_order = StreamOrder::Sorted;  // the larger of the orders' states
     for (const uint32_t w : widths) {
       view.settings.stream_width = w;
       if (const auto why =
@@ -67,13 +84,16 @@ static int run_bench_schedule(const BenchScheduleCommand& cmd) {
     for (const int threads : thread_counts) {
       double megakernel_rate = 0.0;
       std::string megakernel_hash;
-      for (size_t run = 0; run <= widths.size(); ++run) {
+      for (size_t run = 0; run <= widths.size() * orders.size(); ++run) {
         RenderOverrides ov;
         ov.width = ov.height = cmd.size;
         ov.spp = cmd.spp;
+        const uint32_t width = run > 0 ? widths[(run - 1) / orders.size()] : 0;
+        const StreamOrder order = run > 0 ? orders[(run - 1) % orders.size()] : StreamOrder::Queue;
         if (run > 0) {
           ov.schedule = Schedule::Stream;
-          ov.stream_width = widths[run - 1];
+          ov.stream_width = width;
+          ov.stream_order = order;
         }
         const Scene scene = load_scene(path, ov);
         RenderStats stats;
@@ -94,15 +114,17 @@ static int run_bench_schedule(const BenchScheduleCommand& cmd) {
         if (pixel_hash(image) != megakernel_hash)
           throw std::runtime_error(path + ": the stream schedule's image differs from the megakernel's");
         const StreamStats& s = stats.stream;
-        std::printf("%-16s %7d %-10s %8u %10.2f %7.2f %9zu %9.1f %9llu %7llu %12.0f\n", name.c_str(), threads, "stream",
-                    widths[run - 1], rate, rate / megakernel_rate, s.bytes_per_state,
+        std::printf("%-16s %7d %-10s %8u %10.2f %7.2f %9zu %9.1f %9llu %7llu %12.0f\n", name.c_str(), threads,
+                    order == StreamOrder::Sorted ? "sorted" : "stream", width, rate, rate / megakernel_rate, s.bytes_per_state,
                     static_cast<double>(s.state_bytes) / 1e6, static_cast<unsigned long long>(s.largest_queue),
                     static_cast<unsigned long long>(s.waves),
                     s.waves ? static_cast<double>(s.shadow_rays) / static_cast<double>(s.waves) : 0.0);
       }
     }
   }
-  std::printf("ratio: stream Mrays/s over the megakernel's; B/state: ray-state bytes per sample in flight\n");
+  std::printf(
+      "ratio: stream Mrays/s over the megakernel's; sorted: the stream with --stream-order sorted; B/state: "
+      "ray-state bytes per sample in flight\n");
   return 0;
 }
 
@@ -119,6 +141,7 @@ const RegisterCommand kBenchScheduleCommand(
            ->check(count_in(1, 100));
        app.add_option("--threads", cmd->threads, "comma-separated thread counts (default 1,2)");
        app.add_option("--widths", cmd->widths, "comma-separated stream widths (default 4096,65536,262144)");
+       app.add_option("--orders", cmd->orders, "comma-separated stream orders, queue and sorted (default both)");
        return [cmd] { return run_bench_schedule(*cmd); };
      }});
 

@@ -233,7 +233,8 @@ std::string write_bench(const fs::path& root, const fs::path& out) {
                                  {"sphere-4spp-grid", sphere_4spp},
                                  {"cornell-box-path-16spp", "bench/schedule-cornell-box-path-16spp.bundle"}};
   for (const auto& [label, file] : rows)
-    for (const char* schedule : {"megakernel", "stream:262144", "stream:4194304"})
+    for (const char* schedule :
+         {"megakernel", "stream:262144", "stream:4194304", "stream:262144:sorted", "stream:4194304:sorted"})
       list += std::string("schedule ") + label + "-" + (schedule[0] == 'm' ? "megakernel" : schedule) + " " + file +
               " " + schedule + "\n";
   return list;
@@ -322,8 +323,10 @@ void write_pack(const GpuPackCommand& cmd, const std::string& runner, const fs::
     write_scene_bundle(scene, e.scene, out / file);
     const std::string kind = e.image == GoldenImage::SampleMap ? "sample-map " : "golden ";
     list += kind + e.name + " " + file + " " + e.hash + " megakernel\n";
-    // The stream schedule at a width that splits pixels between batches: the same image.
+    // The stream schedule at a width that splits pixels between batches, with its queues in
+    // their own order and sorted by their rays' keys: the same image.
     list += kind + e.name + "@stream " + file + " " + e.hash + " stream:4099\n";
+    list += kind + e.name + "@sorted " + file + " " + e.hash + " stream:4099:sorted\n";
     const int v = bundle_trace_variant(scene, false);
     if (v >= 0) traced[v] = true;
     if (e.image == GoldenImage::Render) renders.push_back({&e, scene.features, scene.settings});

@@ -217,6 +217,7 @@ static int run_render(const RenderCommand& cmd) {
     j["mrays_per_second"] = mrays;
     if (rs.schedule == Schedule::Stream)
       j["stream"] = {{"width", rs.stream_width},
+                     {"order", enum_name(rs.stream_order)},
                      {"batches", stats.stream.batches},
                      {"waves", stats.stream.waves},
                      {"largest_queue", stats.stream.largest_queue},

@@ -50,6 +50,11 @@ struct EnumNames<Schedule> {
   static constexpr const char* names[] = {"megakernel", "stream"};
 };
 template <>
+struct EnumNames<StreamOrder> {
+  static constexpr const char* kind = "stream order";
+  static constexpr const char* names[] = {"queue", "sorted"};
+};
+template <>
 struct EnumNames<BackgroundKind> {
   static constexpr const char* kind = "background";
 #define TRACER_BACKGROUND_NAME(Kind, type) type,

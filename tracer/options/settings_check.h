@@ -35,6 +35,7 @@ inline std::optional<WorkLimitViolation> settings_violation(const RenderSettings
                         beyond("mirror_images", rs.mirror_images, Switch::On),
                         beyond("triangle_test", rs.triangle_test, TriangleTest::MollerTrumbore),
                         beyond("effects", rs.effects, kEffectAll), beyond("schedule", rs.schedule, Schedule::Stream),
+                        beyond("stream_order", rs.stream_order, StreamOrder::Sorted),
                         beyond("grid_resolution", rs.grid_resolution, 1024u)})
     if (v) return v;
   // grid_n is derived: the least n with n^2 >= spp (the grid and stratified samplers divide by it).

@@ -6,12 +6,15 @@
 #include <cstddef>
 #include <memory>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "io/input_error.h"
+#include "render/ray_order_sort.h"
 #include "render/stream_memory.h"
+#include "render/stream_order_frame.h"
 #include "render/stream_schedule.h"
 #include "render/stream_states.h"
 
@@ -78,6 +81,7 @@ struct OpenMpStream {
   RayCounts& counts;
   StreamStates states;
   std::vector<uint32_t> queues[kStreamQueueCount];
+  std::optional<CpuRaySorter> sorter;  // with render.stream_order sorted
 
   std::vector<uint32_t>& queue(StreamQueue q) { return queues[static_cast<uint32_t>(q)]; }
 
@@ -111,6 +115,12 @@ struct OpenMpStream {
     return {out[0]->size(), out[1]->size(), whitted ? out[2]->size() : 0};
   }
 
+  void sort(StreamQueue q, size_t size, const RayOrderFrame& frame) {
+    const bool shadow = q == StreamQueue::Shadow;
+    sorter->sort_queue(queue(q).data(), size, shadow ? states.shadow_origin : states.origin,
+                       shadow ? states.shadow_dir : states.dir, frame, threads);
+  }
+
   void swap(StreamQueue a, StreamQueue b) { queue(a).swap(queue(b)); }
 
   // Into the film in pixel-sample order, a pixel per thread.
@@ -137,16 +147,18 @@ void render_stream(const SceneView& view, const CpuKernelVariant& variant, const
   if (const auto why = stream_memory_refusal(view, total)) throw InputError(*why);
   const auto refuse = [&] { return InputError(stream_width_refusal(view, total, "cannot be allocated")); };
   HostStreamArrays arrays;
-  OpenMpStream backend{view, variant, target, threads, counts, {}, {}};
+  OpenMpStream backend{view, variant, target, threads, counts, {}, {}, {}};
+  const std::optional<RayOrderFrame> order = stream_order_frame(view);
   try {
     backend.states = allocate_stream_states(view, width, arrays);
     for (uint32_t q = 0; q < stream_queue_count(view.settings); ++q) backend.queues[q].reserve(width);
+    if (order) backend.sorter.emplace(width);
   } catch (const std::bad_alloc&) {
     throw refuse();
   } catch (const std::length_error&) {
     throw refuse();
   }
-  schedule_stream(total, width, backend, stats, progress);
+  schedule_stream(total, width, backend, stats, order, progress);
 }
 
 }  // namespace tracer

@@ -18,13 +18,19 @@
 //                                                    Shadow and Resume by their next[] bits
 //                                                    (kStreamTrace, kStreamShadow, kStreamResume);
 //                                                    the order within a queue is the backend's
+//   void sort(StreamQueue, size_t size, const RayOrderFrame&)  the queue's first `size` entries
+//                                                    ordered by their rays' keys (Trace: origin
+//                                                    and dir; Shadow: shadow_origin and shadow_dir),
+//                                                    equal keys in the queue's order
 //   void swap(StreamQueue, StreamQueue)
 //   void end_batch(uint64_t first, size_t count)     the batch's radiance into the film
 #pragma once
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <optional>
 
+#include "kernel/geom/ray_order_key.h"
 #include "kernel/integrator/stream_stage.h"
 #include "kernel/integrator/stream_target.h"
 #include "kernel/scene/render_settings.h"
@@ -54,8 +60,11 @@ struct StreamSplit {
   size_t trace, shadow, resume;
 };
 
+// `order`: the frame of the keys the trace and shadow queues are sorted by before each wave
+// traces them (render.stream_order sorted), or none to trace them in the queues' order.
 template <class Backend>
 void schedule_stream(uint64_t total, size_t width, Backend& backend, StreamStats& stats,
+                     const std::optional<RayOrderFrame>& order,
                      const std::function<void(uint64_t done, uint64_t total)>& progress = {}) {
   for (uint64_t first = 0; first < total; first += width) {
     const size_t count = static_cast<size_t>(std::min<uint64_t>(width, total - first));
@@ -70,6 +79,10 @@ void schedule_stream(uint64_t total, size_t width, Backend& backend, StreamStats
       backend.run(StreamStage::Shade, StreamQueue::Work, work);
       const StreamSplit split = backend.split(work);  // the shadow stage changes no next[] bit
       stats.shadow_rays += split.shadow;
+      if (order) {
+        backend.sort(StreamQueue::Shadow, split.shadow, *order);
+        backend.sort(StreamQueue::Trace, split.trace, *order);
+      }
       backend.run(StreamStage::Shadow, StreamQueue::Shadow, split.shadow);
       resume = split.resume, work = split.trace;
       backend.swap(StreamQueue::Work, StreamQueue::Trace);

@@ -62,9 +62,11 @@ struct HostStreamArrays {
   }
 };
 
-// Bytes per sample in flight: the state arrays and the queue entries.
+// Bytes per sample in flight: the state arrays and the queue entries, and with
+// render.stream_order sorted the sort's keys and entries, each in two buffers.
 inline size_t stream_bytes_per_state(const SceneView& view) {
   size_t bytes = stream_queue_count(view.settings) * sizeof(uint32_t);
+  if (view.settings.stream_order == StreamOrder::Sorted) bytes += 4 * sizeof(uint32_t);
   allocate_stream_states(view, 1, [&](auto* type, size_t count) {
     bytes += count * sizeof(*type);
     return type;

@@ -54,6 +54,8 @@ RenderSettings read_settings(const Json* render, const Json& film, const std::st
       throw InputError(where("stream_width") + ": expected 1 to " + std::to_string(kMaxStreamWidth) +
                        " samples in flight, got " + std::to_string(rs.stream_width));
   }
+  if ((overrides.has("stream_order") || from_file.has("stream_order")) && rs.schedule != Schedule::Stream)
+    throw InputError(where("stream_order") + ": stream_order is the stream schedule's; it needs schedule stream");
   const bool adaptive = rs.noise_threshold > 0.0f || rs.target_error > 0.0f;
   if (!adaptive && (overrides.has("min_spp") || from_file.has("min_spp")))
     throw InputError(where("min_spp") +

@@ -24,6 +24,10 @@ enum class LightSampling : uint32_t { Area, SolidAngle };
 // How the CPU or GPU walks the samples (the same image either way): one call per pixel
 // sample (render_pixel.h), or ray states in queues, one stage at a time (stream.h).
 enum class Schedule : uint32_t { Megakernel, Stream };
+// The order the stream schedule traces each wave's secondary and shadow rays in (the same
+// image either way): the queues' own, or sorted by their rays' origin and direction cells
+// (kernel/geom/ray_order_key.h), so that rays traced side by side walk the same nodes.
+enum class StreamOrder : uint32_t { Queue, Sorted };
 constexpr uint32_t kMaxStreamWidth = 1u << 24;  // samples in flight (about 2 to 4 GB of ray states)
 
 // Whitted effects that can be switched off to measure their cost (`--effects`, `tracer
@@ -73,7 +77,10 @@ enum Effects : uint32_t {
   X(schedule, Schedule, Schedule::Megakernel, render, Never,                                                        \
     "megakernel (default: a pixel sample per call) or stream (ray states in queues, a stage at a time); the same "  \
     "image")                                                                                                        \
-  X(stream_width, uint32_t, 1u << 18, render, Never, "stream: the pixel samples in flight (default 262144)")
+  X(stream_width, uint32_t, 1u << 18, render, Never, "stream: the pixel samples in flight (default 262144)")     \
+  X(stream_order, StreamOrder, StreamOrder::Queue, render, Never,                                                   \
+    "stream: trace each wave's secondary and shadow rays in queue order (default) or sorted by origin and "         \
+    "direction; the same image")
 
 struct RenderSettings {
 #define TRACER_SETTING_FIELD(name, Type, default_value, ...) Type name = default_value;

@@ -1,4 +1,4 @@
-#include "bench/ray_order_sort.h"
+#include "render/ray_order_sort.h"
 
 #include <omp.h>
 
@@ -28,17 +28,17 @@ CpuRaySorter::CpuRaySorter(size_t capacity)
       next_key_(capacity),
       next_order_(capacity) {}
 
-const std::vector<uint32_t>& CpuRaySorter::sort(const std::vector<Ray>& rays, const RayOrderFrame& frame, int threads) {
-  const size_t n = rays.size();
-  if (n > capacity_) throw std::length_error("CpuRaySorter::sort: a set larger than the sorter's capacity");
+template <class KeyOf, class ValueOf>
+void CpuRaySorter::sort_by(size_t n, KeyOf key_of, ValueOf value_of, int threads) {
+  if (n > capacity_) throw std::length_error("CpuRaySorter: a set larger than the sorter's capacity");
   key_.resize(n), order_.resize(n), next_key_.resize(n), next_order_.resize(n);  // never beyond the capacity
 #pragma omp parallel num_threads(threads)
   {
     const size_t t = static_cast<size_t>(omp_get_thread_num()), team = static_cast<size_t>(omp_get_num_threads());
     const size_t begin = n * t / team, end = n * (t + 1) / team;  // this thread's slice
     for (size_t i = begin; i < end; ++i) {
-      key_[i] = ray_order_key(frame, rays[i].origin, rays[i].dir);
-      order_[i] = static_cast<uint32_t>(i);
+      key_[i] = key_of(i);
+      order_[i] = value_of(i);
     }
 #pragma omp single
     counts_.assign(team * kDigits, 0);
@@ -63,7 +63,21 @@ const std::vector<uint32_t>& CpuRaySorter::sort(const std::vector<Ray>& rays, co
       key_.swap(next_key_), order_.swap(next_order_);
     }
   }
+}
+
+const std::vector<uint32_t>& CpuRaySorter::sort(const std::vector<Ray>& rays, const RayOrderFrame& frame, int threads) {
+  sort_by(
+      rays.size(), [&](size_t i) { return ray_order_key(frame, rays[i].origin, rays[i].dir); },
+      [](size_t i) { return static_cast<uint32_t>(i); }, threads);
   return order_;
+}
+
+void CpuRaySorter::sort_queue(uint32_t* queue, size_t n, const Vec3* origin, const Vec3* dir,
+                              const RayOrderFrame& frame, int threads) {
+  sort_by(
+      n, [&](size_t i) { return ray_order_key(frame, origin[queue[i]], dir[queue[i]]); },
+      [&](size_t i) { return queue[i]; }, threads);
+  std::copy(order_.begin(), order_.end(), queue);
 }
 
 }  // namespace tracer
