@@ -39,4 +39,10 @@ Bounds primitive_bounds(const Primitive& p) {
   return b;
 }
 
+Bounds bounds_of_primitives(const Primitive* prims, size_t count) {
+  Bounds box;
+  for (size_t i = 0; i < count; ++i) box.grow(primitive_bounds(prims[i]));
+  return box;
+}
+
 }  // namespace tracer

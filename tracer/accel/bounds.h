@@ -24,6 +24,10 @@ struct Bounds {
 // point its intersection test can report. Planes are unbounded: an empty box.
 Bounds primitive_bounds(const Primitive& p);
 
+// The box of prims[0, count), each as primitive_bounds gives it (planes add nothing): empty
+// (lo > hi) when none is bounded.
+Bounds bounds_of_primitives(const Primitive* prims, size_t count);
+
 // A bounded primitive as the builders see it.
 struct BuildItem {
   Bounds bounds;

@@ -68,8 +68,7 @@ Scene load_probe_mesh(const std::string& obj_path, TriangleTest triangle_test) {
 }
 
 std::vector<Vec3> inside_points(const Scene& mesh) {
-  Bounds b;
-  for (const Primitive& p : mesh.primitives) b.grow(primitive_bounds(p));
+  const Bounds b = bounds_of_primitives(mesh.primitives.data(), mesh.primitives.size());
   const Vec3 centre = (b.lo + b.hi) * 0.5f, step = (b.hi - b.lo) * 0.125f;
   std::vector<Vec3> inside;
   for (int dz = -1; dz <= 1; ++dz)

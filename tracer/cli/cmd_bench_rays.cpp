@@ -66,8 +66,7 @@ Scene load_bench_scene(const std::string& path, AccelKind accel, uint32_t grid_r
     "shapes": [{"type": "mesh", "file": )" +
                            Json(p.filename().string()).dump() + R"(, "material": "m"}]})";
   Scene scene = load_scene_text(json, (p.parent_path() / "bench-rays.json").string(), ov);
-  Bounds b;
-  for (const Primitive& prim : scene.primitives) b.grow(primitive_bounds(prim));
+  const Bounds b = bounds_of_primitives(scene.primitives.data(), scene.primitives.size());
   CameraSpec spec;
   spec.to = (b.lo + b.hi) * 0.5f;
   spec.from = mesh_bench_eye(b.lo, b.hi);
@@ -80,9 +79,7 @@ Scene load_bench_scene(const std::string& path, AccelKind accel, uint32_t grid_r
 }
 
 RaySets make_rays(const Scene& scene, uint32_t incoherent) {
-  Bounds b;
-  for (const Primitive& p : scene.primitives)
-    if (p.kind != ShapeKind::Plane) b.grow(primitive_bounds(p));
+  const Bounds b = bounds_of_primitives(scene.primitives.data(), scene.primitives.size());
   return make_primary_and_incoherent_rays(scene.camera, kCamera, kCamera, b.lo, b.hi, incoherent);
 }
 

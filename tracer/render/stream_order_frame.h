@@ -14,8 +14,7 @@ namespace tracer {
 // None when the stream traces its queues in their own order. `host_view` holds host pointers.
 inline std::optional<RayOrderFrame> stream_order_frame(const SceneView& host_view) {
   if (host_view.settings.stream_order != StreamOrder::Sorted) return std::nullopt;
-  Bounds box;  // planes are unbounded and add nothing
-  for (uint32_t i = 0; i < host_view.primitive_count; ++i) box.grow(primitive_bounds(host_view.primitives[i]));
+  Bounds box = bounds_of_primitives(host_view.primitives, host_view.primitive_count);
   if (!(box.lo.x <= box.hi.x)) box.lo = box.hi = Vec3{0.0f, 0.0f, 0.0f};  // no bounded primitive: one origin cell
   return ray_order_frame(box.lo, box.hi);
 }

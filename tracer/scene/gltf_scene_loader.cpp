@@ -47,8 +47,7 @@ const GltfCamera& chosen_camera(const GltfContents& contents, const std::string&
 // a exists for every pair of vertices once D >= (max(x / T - z) + max(-x / T - z)) / 2, and
 // the middle of the interval then centres the model. Likewise vertically.
 CameraSpec framing_camera(const Scene& scene, double aspect) {
-  Bounds b;
-  for (const Primitive& p : scene.primitives) b.grow(primitive_bounds(p));
+  const Bounds b = bounds_of_primitives(scene.primitives.data(), scene.primitives.size());
   const Vec3 centre = (b.lo + b.hi) * 0.5f;
   const float elevation = kFramingElevation * (kPi / 180.0f);
   const Vec3 forward = {0.0f, -det_sin(elevation), -det_cos(elevation)}, up_axis = {0.0f, 1.0f, 0.0f};

@@ -15,9 +15,7 @@ namespace {
 // Radius of a sphere around every bounded primitive: the environment's and the suns' light
 // reaches the scene through its cross-section.
 double scene_radius(const Scene& scene) {
-  Bounds all;
-  for (const Primitive& p : scene.primitives)
-    if (p.kind != ShapeKind::Plane) all.grow(primitive_bounds(p));
+  const Bounds all = bounds_of_primitives(scene.primitives.data(), scene.primitives.size());
   if (!(all.lo.x <= all.hi.x)) return 1.0;
   return 0.5 * length(all.hi - all.lo);
 }

@@ -48,8 +48,7 @@ ViewSession::ViewSession(ViewOptions options) : options_(std::move(options)) {
   frame_.target_spp = scene_.settings.spp;
   frame_.camera = scene_.camera_spec;
   frame_.integrator = enum_name(scene_.settings.integrator);
-  Bounds bounds;
-  for (const Primitive& p : scene_.primitives) bounds.grow(primitive_bounds(p));  // planes add nothing
+  const Bounds bounds = bounds_of_primitives(scene_.primitives.data(), scene_.primitives.size());
   frame_.scene_size = bounds.lo.x <= bounds.hi.x ? length(bounds.hi - bounds.lo) : 0.0f;
 }
 
