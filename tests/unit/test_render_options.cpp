@@ -171,5 +171,16 @@ TEST(EnumNames, ParseWhatIsPrinted) {
   EXPECT_THROW(parse_enum<SamplerKind>("jitter", "t"), InputError);
 }
 
+// A comma-separated list of names (the bench commands' --accel, --samplers, --orders): each
+// name in order, none for an empty text, and an empty name anywhere refused.
+TEST(EnumNames, ParseACommaSeparatedList) {
+  EXPECT_EQ(parse_enum_list<AccelKind>("grid,bvh,grid", "t"),
+            (std::vector<AccelKind>{AccelKind::Grid, AccelKind::Bvh, AccelKind::Grid}));
+  EXPECT_EQ(parse_enum_list<StreamOrder>("sorted", "t"), std::vector<StreamOrder>{StreamOrder::Sorted});
+  EXPECT_TRUE(parse_enum_list<StreamOrder>("", "t").empty());
+  for (const char* bad : {",", "queue,", ",queue", "queue,,sorted", "queue,random"})
+    EXPECT_THROW(parse_enum_list<StreamOrder>(bad, "t"), InputError) << bad;
+}
+
 }  // namespace
 }  // namespace tracer

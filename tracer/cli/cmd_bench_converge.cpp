@@ -129,10 +129,7 @@ static int run_bench_converge(const BenchConvergeCommand& cmd) {
   const std::vector<uint32_t> spps = parse_spp_list("--spp", cmd.spp);
   if (cmd.nee != "scene" && cmd.nee != "on" && cmd.nee != "off" && cmd.nee != "both")
     throw InputError("--nee " + cmd.nee + ": expected scene, on, off or both");
-  std::vector<SamplerKind> samplers;
-  std::stringstream sampler_names(cmd.samplers);
-  for (std::string name; std::getline(sampler_names, name, ',');)
-    samplers.push_back(parse_enum<SamplerKind>(name, "--samplers"));
+  const std::vector<SamplerKind> samplers = parse_enum_list<SamplerKind>(cmd.samplers, "--samplers");
   if (!samplers.empty() && cmd.nee == "both")
     throw InputError("--samplers: compares samplers with one estimator; give --nee scene, on or off with it");
   if (samplers.size() == 1) throw InputError("--samplers: give two or more samplers to compare");

@@ -18,7 +18,6 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
-#include <sstream>
 
 #include "accel/acceleration.h"
 #include "accel/bounds.h"
@@ -153,8 +152,7 @@ static int run_bench_rays(const BenchRaysCommand& cmd) {
   if (cmd.accel.empty()) {
     accels = {AccelKind::Bvh, AccelKind::Lbvh, AccelKind::Kdtree, AccelKind::KdtreeMedian, AccelKind::Grid};
   } else {
-    std::stringstream list(cmd.accel);
-    for (std::string a; std::getline(list, a, ',');) accels.push_back(parse_enum<AccelKind>(a, "--accel " + cmd.accel));
+    accels = parse_enum_list<AccelKind>(cmd.accel, "--accel " + cmd.accel);
   }
   // A GPU that is missing is said before any work (DeviceUnavailable, exit 2).
   const std::string gpu = cmd.device == "cuda" ? "; GPU " + cuda_device_description() : "";

@@ -30,18 +30,6 @@ struct BenchScheduleCommand {
   std::string orders = "queue,sorted";
 };
 
-// The comma-separated names of render.stream_order's values in --orders.
-static std::vector<StreamOrder> parse_orders(const std::string& list) {
-  std::vector<StreamOrder> orders;
-  size_t start = 0;
-  while (true) {
-    const size_t comma = list.find(',', start);
-    orders.push_back(parse_enum<StreamOrder>(list.substr(start, comma - start), "--orders " + list));
-    if (comma == std::string::npos) return orders;
-    start = comma + 1;
-  }
-}
-
 static int run_bench_schedule(const BenchScheduleCommand& cmd) {
   std::vector<std::string> scenes = cmd.scenes;
   if (scenes.empty()) {
@@ -59,7 +47,8 @@ static int run_bench_schedule(const BenchScheduleCommand& cmd) {
   for (const uint32_t w : widths)
     if (w == 0 || w > kMaxStreamWidth)
       throw InputError("--widths " + cmd.widths + ": widths are 1 to " + std::to_string(kMaxStreamWidth));
-  const std::vector<StreamOrder> orders = parse_orders(cmd.orders);
+  const std::vector<StreamOrder> orders = parse_enum_list<StreamOrder>(cmd.orders, "--orders " + cmd.orders);
+  if (orders.empty()) throw InputError("--orders: expected queue, sorted or both");
   // Every scene loads and every width fits in memory before the first row is measured.
   for (const std::string& path : scenes) {
     RenderOverrides ov;

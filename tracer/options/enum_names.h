@@ -2,9 +2,11 @@
 // the names in the enum's order, used both to parse and to print. A name's enum value is
 // its index (the enums number their values from 0 without gaps).
 #pragma once
+#include <algorithm>
 #include <iterator>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "io/input_error.h"
 #include "kernel/scene/scene_view.h"
@@ -112,6 +114,19 @@ E parse_enum(const std::string& name, const std::string& where) {
   if (const std::optional<E> value = find_enum<E>(name)) return *value;
   throw InputError(where + ": unknown " + EnumNames<E>::kind + " \"" + name + "\" (expected " +
                    name_list(EnumNames<E>::names) + ")");
+}
+
+// The comma-separated names of `text` ("bvh,grid"), each read by parse_enum: none for an empty
+// text; an empty name (",,", a comma at either end) is an unknown one.
+template <class E>
+std::vector<E> parse_enum_list(const std::string& text, const std::string& where) {
+  std::vector<E> values;
+  for (size_t start = 0; !text.empty() && start <= text.size();) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    values.push_back(parse_enum<E>(text.substr(start, comma - start), where));
+    start = comma + 1;
+  }
+  return values;
 }
 
 }  // namespace tracer
